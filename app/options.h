@@ -1,0 +1,35 @@
+// Flags shared by the subcommands (DESIGN.md §5) and how they become Settings.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "core/settings.h"
+
+namespace vct::app {
+
+struct CommonOptions {
+  std::string out;     // --out DIR
+  std::string config;  // --config FILE.json
+  int threads = 0;     // --threads N
+  std::optional<int> width, height, grid, spp;
+};
+
+/// --out, --config, --threads.
+void add_common_flags(CLI::App* cmd, CommonOptions& o);
+/// --width, --height (image size for VCT and the path tracer).
+void add_image_flags(CLI::App* cmd, CommonOptions& o);
+/// --grid N.
+void add_grid_flag(CLI::App* cmd, CommonOptions& o);
+/// --spp N.
+void add_spp_flag(CLI::App* cmd, CommonOptions& o);
+
+/// Defaults <- --config file <- flags; validated (InputError on a bad value); threads applied.
+Settings resolve_settings(const CommonOptions& o);
+
+/// Default run directory when --out is not given: runs/<command>-<scene stem>.
+std::string default_out_dir(const std::string& command, const std::string& scene_path);
+
+}  // namespace vct::app

@@ -1,0 +1,23 @@
+# Every dependency is a Debian package; nothing is downloaded at configure time.
+find_package(PkgConfig REQUIRED)
+find_package(OpenMP REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(fmt REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(embree 3 REQUIRED)
+# OpenImageIO 2.4's CMake config drags in /usr/include/opencv4; pkg-config does not.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+# tinygltf includes <stb_image.h>, which Debian keeps in /usr/include/stb.
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+if(VCT_BUILD_GL)
+  find_package(OpenGL REQUIRED COMPONENTS EGL OpenGL)
+endif()
+if(VCT_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(VCT_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,98 @@
+// Every knob of the VCT pipelines (ref and gl read the same struct) and of the path tracer.
+// Defaults follow the seed design unless docs/pipeline.md says why they differ.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace vct {
+
+enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
+enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
+enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
+enum class Reduction { ExactMean, FixedPoint, CasRgba8 };  // how fragments in a voxel combine
+enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
+
+struct VctSettings {
+  // Images and shadow maps.
+  int width = 512;
+  int height = 512;
+  int shadow_map_size = 2048;
+  int pcf_kernel = 3;            // PCF taps per side (seed report: 3x3)
+  float shadow_bias = 0.0005f;   // constant depth bias in NDC-depth [0,1] units
+  LightModel light_model = LightModel::Gltf;
+
+  // Voxelization.
+  int grid = 128;
+  Voxelizer voxelizer = Voxelizer::Conservative;
+  int msaa_samples = 8;  // 1, 4 or 8 (GL standard sample positions)
+  VoxelStorage storage = VoxelStorage::Rgba16f;
+  Reduction reduction = Reduction::ExactMean;
+  bool anisotropic = false;
+
+  // Cone tracing.
+  bool diffuse_cones = true;
+  bool specular_cones = true;
+  bool soft_shadows = false;      // cone-traced shadow instead of PCF
+  float diffuse_aperture_deg = 30.0f;
+  DiffuseWeighting diffuse_weighting = DiffuseWeighting::Cosine;
+  bool random_rotation = false;
+  float cone_quality = 0.5f;      // step = diameter * quality  (smaller = more steps)
+  float cone_offset_voxels = 1.5f;  // start offset, in voxels of level 0
+  float max_distance = 1.7320508f;  // in voxel-texture units ([0,1]^3 cube diagonal)
+  float soft_shadow_aperture_deg = 10.0f;
+
+  // Temporal multibounce.
+  int bounces = 1;                 // frames of multibounce; 1 = direct light in voxels only
+  float restitution = 0.5f;        // the seed's attenuation factor
+  float convergence_tolerance = 0.0f;  // >0: stop when relative energy change falls below
+
+  // Particles and time.
+  float time = 1.0f;
+  int frame = 0;                   // frame index for the random cone rotation hash
+  bool particles = true;
+
+  // Occlusion culling (GL only; the image must not change).
+  bool depth_prepass = true;
+};
+
+struct PtSettings {
+  int width = 512;
+  int height = 512;
+  int spp = 64;
+  int max_depth = 8;
+  int rr_start_depth = 3;
+  uint32_t seed = 0;
+  int checkpoint_seconds = 30;
+  LightModel light_model = LightModel::Gltf;
+};
+
+struct Settings {
+  VctSettings vct;
+  PtSettings pt;
+  int threads = 0;  // 0 = all cores
+};
+
+// JSON round-trip (--config FILE.json and run.json). Unknown keys are an InputError.
+void to_json(nlohmann::json& j, const VctSettings& s);
+void from_json(const nlohmann::json& j, VctSettings& s);
+void to_json(nlohmann::json& j, const PtSettings& s);
+void from_json(const nlohmann::json& j, PtSettings& s);
+void to_json(nlohmann::json& j, const Settings& s);
+void from_json(const nlohmann::json& j, Settings& s);
+
+/// Loads a --config file on top of `base`; throws InputError naming the file on any problem.
+Settings load_settings_file(const std::string& path, const Settings& base);
+
+/// Checks ranges (grid 16..512, sizes > 0, samples in {1,4,8}, ...); throws InputError.
+void validate_settings(const Settings& s);
+
+std::string to_string(LightModel m);
+std::string to_string(Voxelizer v);
+std::string to_string(VoxelStorage v);
+std::string to_string(Reduction r);
+std::string to_string(DiffuseWeighting w);
+
+}  // namespace vct

@@ -1,0 +1,108 @@
+#include "io/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+
+namespace vct {
+
+float srgb_to_linear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+float linear_to_srgb(float c) {
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+namespace {
+
+void write_with_oiio(const std::string& tmp, const OIIO::ImageSpec& spec, const void* pixels,
+                     const std::string& final_path) {
+  auto out = OIIO::ImageOutput::create(tmp);
+  if (!out) throw std::runtime_error(final_path + ": no image writer: " + OIIO::geterror());
+  if (!out->open(tmp, spec) || !out->write_image(spec.format, pixels) || !out->close())
+    throw std::runtime_error(final_path + ": cannot write image: " + out->geterror());
+}
+
+float tone_map(float v, ToneMap tm) {
+  v = std::max(v, 0.0f);
+  switch (tm) {
+    case ToneMap::Clamp:
+      return std::min(v, 1.0f);
+    case ToneMap::Reinhard:
+      return v / (1.0f + v);
+    case ToneMap::Aces: {
+      // Narkowicz's fit of the ACES filmic curve.
+      const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
+      return std::clamp((v * (a * v + b)) / (v * (c * v + d) + e), 0.0f, 1.0f);
+    }
+  }
+  return v;
+}
+
+uint8_t to_byte(float unit) { return uint8_t(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f)); }
+
+void write_bytes_png(const std::string& path, int w, int h, int c, const std::vector<uint8_t>& bytes) {
+  write_atomically(path, [&](const std::string& tmp) {
+    OIIO::ImageSpec spec(w, h, c, OIIO::TypeDesc::UINT8);
+    write_with_oiio(tmp, spec, bytes.data(), path);
+  });
+}
+
+}  // namespace
+
+void write_exr(const std::string& path, const Image& img) {
+  write_atomically(path, [&](const std::string& tmp) {
+    OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::FLOAT);
+    if (int(img.channel_names.size()) == img.channels) spec.channelnames = img.channel_names;
+    spec.attribute("compression", "zip");
+    write_with_oiio(tmp, spec, img.data.data(), path);
+  });
+}
+
+void write_png(const std::string& path, const Image& img, float exposure, ToneMap tm) {
+  const int out_c = img.channels >= 3 ? 3 : 1;
+  std::vector<uint8_t> bytes(size_t(img.width) * size_t(img.height) * size_t(out_c));
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < out_c; ++c) {
+        float v = img.at(x, y, c) * exposure;
+        if (!std::isfinite(v)) v = 0.0f;
+        bytes[(size_t(y) * size_t(img.width) + size_t(x)) * size_t(out_c) + size_t(c)] =
+            to_byte(linear_to_srgb(tone_map(v, tm)));
+      }
+  write_bytes_png(path, img.width, img.height, out_c, bytes);
+}
+
+void write_png_linear(const std::string& path, const Image& img, float lo, float hi) {
+  const int out_c = img.channels >= 3 ? 3 : 1;
+  const float scale = hi > lo ? 1.0f / (hi - lo) : 1.0f;
+  std::vector<uint8_t> bytes(size_t(img.width) * size_t(img.height) * size_t(out_c));
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < out_c; ++c) {
+        const float v = img.at(x, y, c);
+        bytes[(size_t(y) * size_t(img.width) + size_t(x)) * size_t(out_c) + size_t(c)] =
+            to_byte(std::isfinite(v) ? (v - lo) * scale : 0.0f);
+      }
+  write_bytes_png(path, img.width, img.height, out_c, bytes);
+}
+
+Image read_image(const std::string& path) {
+  read_file(path);  // uniform "missing / directory" errors
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw InputError(path, "not a readable image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  Image img(spec.width, spec.height, spec.nchannels);
+  img.channel_names = spec.channelnames;
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data()))
+    throw InputError(path, "cannot decode image: " + in->geterror());
+  return img;
+}
+
+}  // namespace vct

@@ -1,0 +1,29 @@
+// Images on disk through OpenImageIO: EXR (linear float data) and PNG (tone-mapped sRGB preview).
+#pragma once
+
+#include <string>
+
+#include "core/image.h"
+
+namespace vct {
+
+/// Linear float EXR (32-bit channels, so comparisons see exactly what was computed).
+void write_exr(const std::string& path, const Image& img);
+
+/// 8-bit sRGB PNG preview: exposure scale, then the chosen tone map, then the sRGB curve.
+/// One-channel images are written grey; alpha (4th channel) is dropped.
+enum class ToneMap { Clamp, Reinhard, Aces };
+void write_png(const std::string& path, const Image& img, float exposure = 1.0f, ToneMap tm = ToneMap::Aces);
+
+/// Writes a data image as PNG with values mapped linearly from [lo, hi] to [0, 255], no sRGB
+/// (depth maps, masks, normals remapped by the caller).
+void write_png_linear(const std::string& path, const Image& img, float lo, float hi);
+
+/// Reads any image OpenImageIO can read into float channels; throws InputError on failure.
+Image read_image(const std::string& path);
+
+/// sRGB transfer functions (IEC 61966-2-1), shared by textures and previews.
+float srgb_to_linear(float c);
+float linear_to_srgb(float c);
+
+}  // namespace vct

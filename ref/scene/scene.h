@@ -1,0 +1,147 @@
+// The scene every engine reads: flattened to world space, immutable after loading.
+// Conventions (units, light models, volume placement, particle schema): docs/scenes.md.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace vct {
+
+/// KHR_texture_transform: uv' = T * R * S * uv (glTF order), applied before sampling.
+struct TextureTransform {
+  vec2 offset{0.0f};
+  float rotation = 0.0f;
+  vec2 scale{1.0f};
+  bool is_identity() const { return offset == vec2(0.0f) && rotation == 0.0f && scale == vec2(1.0f); }
+  vec2 apply(const vec2& uv) const;
+};
+
+enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class Filter { Nearest, Linear };
+
+/// A decoded 8-bit texture (RGBA, 4 bytes per texel, row 0 = first row of the file = v=0).
+struct Texture {
+  std::string name;
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba8;
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Filter mag_filter = Filter::Linear;
+};
+
+/// A material slot's texture: which texture, which UV set, which transform. texture < 0: none.
+struct TextureRef {
+  int texture = -1;
+  int texcoord = 0;
+  TextureTransform transform;
+  bool present() const { return texture >= 0; }
+};
+
+/// glTF metallic-roughness material with the extensions we support.
+struct Material {
+  std::string name;
+  vec4 base_color_factor{1.0f};
+  TextureRef base_color_texture;      // sRGB-encoded
+  float metallic_factor = 1.0f;
+  float roughness_factor = 1.0f;
+  TextureRef metallic_roughness_texture;  // G = roughness, B = metallic (linear)
+  TextureRef normal_texture;          // tangent space, linear
+  float normal_scale = 1.0f;
+  bool normal_two_channel = false;    // RG only, z reconstructed (the seed's compressed form)
+  vec3 emissive_factor{0.0f};
+  TextureRef emissive_texture;        // sRGB-encoded
+  float emissive_strength = 1.0f;     // KHR_materials_emissive_strength
+  float specular_factor = 1.0f;       // KHR_materials_specular (0 = pure Lambertian)
+  vec3 specular_color_factor{1.0f};
+  bool double_sided = false;
+  vec3 emission() const { return emissive_factor * emissive_strength; }
+  bool is_emissive() const { return emission() != vec3(0.0f); }
+};
+
+/// KHR_lights_punctual spot light in world space. Intensity in candela (glTF model) or a
+/// unitless scale (seed model); see docs/scenes.md.
+struct SpotLight {
+  std::string name;
+  vec3 position{0.0f};
+  vec3 direction{0.0f, 0.0f, -1.0f};  // unit, where the cone points
+  vec3 color{1.0f};
+  float intensity = 1.0f;
+  float inner_cone_angle = 0.0f;       // radians
+  float outer_cone_angle = 0.7853982f; // radians, <= pi/2
+  float range = 0.0f;                  // 0 = infinite
+};
+
+struct Camera {
+  vec3 position{0.0f};
+  vec3 forward{0.0f, 0.0f, -1.0f};
+  vec3 up{0.0f, 1.0f, 0.0f};
+  float yfov = 0.8f;  // radians
+  float znear = 0.01f;
+  float zfar = 100.0f;
+  bool from_file = false;
+  mat4 view() const;
+  mat4 projection(float aspect) const;  // GL clip space, depth in [-1,1]
+};
+
+/// Fire emitter from a node's extras.vct_particles (schema: docs/scenes.md).
+struct ParticleEmitter {
+  std::string name;
+  vec3 origin{0.0f};         // world space
+  int count = 256;
+  float lifetime = 1.0f;     // seconds; particle i is born at i/count*lifetime (mod lifetime)
+  vec3 spawn_extent{0.1f};   // half-size of the spawn box
+  vec3 velocity_min{0.0f, 0.5f, 0.0f}, velocity_max{0.0f, 1.0f, 0.0f};
+  vec3 acceleration{0.0f, 0.5f, 0.0f};
+  vec3 color_start{4.0f, 2.0f, 0.5f}, color_end{1.0f, 0.1f, 0.0f};  // linear radiance
+  float size_start = 0.05f, size_end = 0.01f;  // world-space radius
+};
+
+/// The voxel volume: a cube [origin, origin+size]^3 mapped to texture coordinates [0,1]^3.
+struct VoxelVolume {
+  vec3 origin{0.0f};
+  float size = 1.0f;
+  bool overridden = false;
+  vec3 to_texture(const vec3& world) const { return (world - origin) / size; }
+  vec3 to_world(const vec3& tex) const { return origin + tex * size; }
+};
+
+struct LoadStats {
+  int64_t degenerate_triangles_dropped = 0;
+  int64_t non_triangle_primitives_skipped = 0;
+  std::vector<std::string> warnings;
+};
+
+struct Scene {
+  std::string source;  // file path or "builtin:default"
+
+  // Vertex attributes, one entry per vertex, world space.
+  std::vector<vec3> positions;
+  std::vector<vec3> normals;   // unit
+  std::vector<vec4> tangents;  // xyz unit, w = handedness (+1/-1)
+  std::vector<vec2> uv0, uv1;  // uv1 empty if no primitive has TEXCOORD_1
+  // Triangles: three vertex indices and a material index each.
+  std::vector<uvec3> triangles;
+  std::vector<uint32_t> triangle_material;
+
+  std::vector<Material> materials;  // always at least one (the glTF default material)
+  std::vector<Texture> textures;
+  std::vector<SpotLight> spot_lights;
+  std::vector<ParticleEmitter> emitters;
+  Camera camera;
+  VoxelVolume volume;
+  Bounds3 bounds;
+  LoadStats stats;
+
+  size_t triangle_count() const { return triangles.size(); }
+};
+
+/// Fits the default voxel cube around `bounds`: the largest extent plus a margin of 2 % and
+/// at least one voxel of the coarsest grid, centred (docs/scenes.md).
+VoxelVolume fit_volume(const Bounds3& bounds);
+
+/// A camera framing `bounds` from +z, used when the file has none.
+Camera default_camera(const Bounds3& bounds);
+
+}  // namespace vct

@@ -1,0 +1,201 @@
+// Definitions shared by the CPU reference and the GLSL shaders (DESIGN.md §3): the BRDF, the spot
+// falloff of both light models, the cone set, the hash and the parameter block layout.
+// This file compiles as C++17 (with GLM, inside namespace vct::sh) and as GLSL 4.50 (the GL
+// backend prepends "#version 450" and "#define VCT_GLSL 1"). Keep to the common subset:
+// no references or out-parameters, no templates, float literals with an 'f' suffix,
+// unsigned literals with 'u', structs of vec4/mat4 only for blocks (std140 == C++ layout).
+// Mechanisms (rasterization, filtering, marching loops) do NOT belong here: they are written
+// twice, independently, on purpose.
+#ifndef VCT_SHARED_H
+#define VCT_SHARED_H
+
+#ifdef VCT_GLSL
+#define VCT_FN
+#define VCT_CONST const
+#else
+#include "core/math.h"
+namespace vct {
+namespace sh {
+using namespace glm;
+using uint = glm::uint;
+#define VCT_FN inline
+#define VCT_CONST constexpr
+#endif
+
+VCT_CONST float SH_PI = 3.14159265358979323846f;
+VCT_CONST float SH_INV_PI = 0.31830988618379067154f;
+VCT_CONST int LIGHT_MODEL_GLTF = 0;
+VCT_CONST int LIGHT_MODEL_SEED = 1;
+VCT_CONST int MAX_DIFFUSE_CONES = 5;
+
+// ---------------------------------------------------------------------------------------------
+// Cook–Torrance as the seed defines it: GGX/Trowbridge-Reitz D with alpha = roughness^2,
+// Schlick Fresnel, Schlick-GGX G with k = (roughness+1)^2/8 (the Disney/UE4 remapping).
+
+VCT_FN float ggx_distribution(float n_dot_h, float roughness) {
+  float a = roughness * roughness;
+  float a2 = a * a;
+  float d = n_dot_h * n_dot_h * (a2 - 1.0f) + 1.0f;
+  return a2 / max(SH_PI * d * d, 1e-12f);
+}
+
+VCT_FN float schlick_ggx_g1(float n_dot_x, float roughness) {
+  float r1 = roughness + 1.0f;
+  float k = r1 * r1 / 8.0f;
+  return n_dot_x / (n_dot_x * (1.0f - k) + k);
+}
+
+// Schlick with an explicit F90: KHR_materials_specular scales both ends by specular_factor,
+// so specular_factor = 0 gives F = 0 exactly (a pure Lambertian surface).
+VCT_FN vec3 fresnel_schlick(vec3 f0, float f90, float cos_theta) {
+  float m = clamp(1.0f - cos_theta, 0.0f, 1.0f);
+  float m5 = m * m * m * m * m;
+  return f0 + (vec3(f90) - f0) * m5;
+}
+
+// Surface parameters after texturing, as both the G-buffer and the BRDF see them.
+struct SurfacePbr {
+  vec3 albedo;       // linear base colour
+  float metallic;
+  float roughness;   // perceptual, clamped to >= MIN_ROUGHNESS by surface_pbr()
+  vec3 f0;           // normal-incidence reflectance
+  float f90;         // grazing reflectance (1, or KHR_materials_specular's factor for dielectrics)
+};
+
+VCT_CONST float MIN_ROUGHNESS = 0.03f;  // keeps D finite for mirror-like surfaces
+
+VCT_FN SurfacePbr surface_pbr(vec3 albedo, float metallic, float roughness, float specular_factor,
+                              vec3 specular_color) {
+  SurfacePbr s;
+  s.albedo = albedo;
+  s.metallic = clamp(metallic, 0.0f, 1.0f);
+  s.roughness = clamp(roughness, MIN_ROUGHNESS, 1.0f);
+  vec3 dielectric_f0 = min(vec3(0.04f) * specular_color, vec3(1.0f)) * specular_factor;
+  s.f0 = mix(dielectric_f0, albedo, s.metallic);
+  s.f90 = mix(specular_factor, 1.0f, s.metallic);
+  return s;
+}
+
+// The diffuse weight kd = (1 - F)(1 - metallic): metals have no diffuse lobe.
+VCT_FN vec3 diffuse_weight(SurfacePbr s, vec3 fresnel) { return (vec3(1.0f) - fresnel) * (1.0f - s.metallic); }
+
+// BRDF value f(l, v) (without the n.l cosine). n, v, l unit; v and l point away from the surface.
+VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
+  float n_dot_l = dot(n, l);
+  float n_dot_v = dot(n, v);
+  if (n_dot_l <= 0.0f || n_dot_v <= 0.0f) return vec3(0.0f);
+  vec3 h = normalize(v + l);
+  vec3 f = fresnel_schlick(s.f0, s.f90, max(dot(h, v), 0.0f));
+  float d = ggx_distribution(max(dot(n, h), 0.0f), s.roughness);
+  float g = schlick_ggx_g1(n_dot_l, s.roughness) * schlick_ggx_g1(n_dot_v, s.roughness);
+  vec3 specular = f * (d * g / (4.0f * n_dot_l * n_dot_v));
+  return diffuse_weight(s, f) * s.albedo * SH_INV_PI + specular;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Spot lights. Both models return the irradiance on a surface facing the light (before n.l and
+// before shadowing), given the light-to-point distance and the cosine between the spot axis and
+// the light-to-point direction.
+//  glTF (KHR_lights_punctual): intensity in candela, inverse square law, the extension's
+//   reference cone attenuation (a squared linear ramp in cos between outer and inner), and the
+//   recommended range window when range > 0.
+//  seed: smoothstep(cos outer, cos inner, cos) / (1 + d), intensity unitless.
+
+VCT_FN float spot_cone_gltf(float cos_axis, float cos_inner, float cos_outer) {
+  float scale = 1.0f / max(0.001f, cos_inner - cos_outer);
+  float t = clamp((cos_axis - cos_outer) * scale, 0.0f, 1.0f);
+  return t * t;
+}
+
+VCT_FN float range_window(float dist, float range) {
+  if (range <= 0.0f) return 1.0f;
+  float r = dist / range;
+  return clamp(1.0f - r * r * r * r, 0.0f, 1.0f);
+}
+
+VCT_FN vec3 spot_irradiance(int model, vec3 color, float intensity, float dist, float cos_axis,
+                            float cos_inner, float cos_outer, float range) {
+  if (model == LIGHT_MODEL_SEED) {
+    return color * intensity * smoothstep(cos_outer, cos_inner, cos_axis) / (1.0f + dist);
+  }
+  return color * intensity * spot_cone_gltf(cos_axis, cos_inner, cos_outer) * range_window(dist, range) /
+         max(dist * dist, 1e-8f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hash (PCG-style integer permutation) for random cone rotation and particles: the same bits on
+// the CPU and on the GPU for the same key.
+
+VCT_FN uint pcg_hash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+VCT_FN uint hash_combine(uint a, uint b) { return pcg_hash(a ^ (b * 0x9E3779B9u + 0x7F4A7C15u)); }
+
+// Uniform float in [0, 1) from the top 24 bits: exact in binary32 on both sides.
+VCT_FN float hash_to_unit(uint h) { return float(h >> 8u) * (1.0f / 16777216.0f); }
+
+// ---------------------------------------------------------------------------------------------
+// Diffuse cone set (the seed's): one cone along the normal and four tilted by 45 degrees,
+// spaced 90 degrees apart in azimuth, starting at azimuth `rotation` (radians).
+// Directions are in the tangent frame (z = normal).
+
+VCT_FN vec3 diffuse_cone_direction(int i, float rotation) {
+  if (i == 0) return vec3(0.0f, 0.0f, 1.0f);
+  float phi = rotation + float(i - 1) * (0.5f * SH_PI);
+  float s = 0.70710678118654752f;  // sin 45 = cos 45
+  return vec3(s * cos(phi), s * sin(phi), s);
+}
+
+// Weight of cone i. Cosine mode: cos(theta_i) / sum_j cos(theta_j), so the weighted sum of cone
+// radiances estimates the cosine-weighted mean incident radiance (E / pi); the diffuse term is
+// then kd * albedo * that. Seed mode: every cone weighs 1 (the seed's plain sum).
+VCT_FN float diffuse_cone_weight(int i, bool cosine_weighted) {
+  if (!cosine_weighted) return 1.0f;
+  float c = 0.70710678118654752f;
+  float total = 1.0f + 4.0f * c;
+  return (i == 0 ? 1.0f : c) / total;
+}
+
+// Per-pixel, per-frame rotation of the diffuse cone set about the normal.
+VCT_FN float diffuse_cone_rotation(uint pixel_x, uint pixel_y, uint frame) {
+  uint h = hash_combine(hash_combine(pixel_x, pixel_y), frame);
+  return hash_to_unit(h) * (0.5f * SH_PI);  // the set repeats every 90 degrees
+}
+
+// Specular cone aperture (full angle, radians) from perceptual roughness. We use the width of the
+// GGX lobe around the mirror direction, 2*atan(alpha) doubled for the reflection (the half vector
+// spreads by atan(alpha); reflecting doubles angles), clamped to [MIN_SPECULAR_APERTURE, pi/2].
+VCT_CONST float MIN_SPECULAR_APERTURE = 0.0174533f;  // 1 degree
+VCT_FN float specular_cone_aperture(float roughness) {
+  float a = roughness * roughness;
+  return clamp(2.0f * atan(a), MIN_SPECULAR_APERTURE, 0.5f * SH_PI);
+}
+
+// Tangent frame with n as z (Frisvad-style branchless basis from Duff et al. 2017): the same frame
+// on both sides so rotated cones coincide.
+struct Frame {
+  vec3 t;
+  vec3 b;
+  vec3 n;
+};
+VCT_FN Frame frame_from_normal(vec3 n) {
+  float sign_z = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (sign_z + n.z);
+  float b = n.x * n.y * a;
+  Frame f;
+  f.t = vec3(1.0f + sign_z * n.x * n.x * a, sign_z * b, -sign_z * n.x);
+  f.b = vec3(b, sign_z + n.y * n.y * a, -n.y);
+  f.n = n;
+  return f;
+}
+VCT_FN vec3 frame_to_world(Frame f, vec3 local) { return f.t * local.x + f.b * local.y + f.n * local.z; }
+
+#ifndef VCT_GLSL
+}  // namespace sh
+}  // namespace vct
+#endif
+
+#endif  // VCT_SHARED_H

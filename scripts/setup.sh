@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# One-step set-up on a fresh Debian 12 machine: installs missing Debian packages, makes the
+# Python venv the report tooling uses, configures and builds. Idempotent; quick when all is there.
+#   scripts/setup.sh            Release build in build/
+#   BUILD_DIR=build-asan CMAKE_ARGS="-DVCT_SANITIZE=ON" scripts/setup.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${BUILD_DIR:-build}
+BUILD_TYPE=${BUILD_TYPE:-Release}
+
+APT_PACKAGES=(
+  build-essential cmake ninja-build pkg-config git python3 python3-venv
+  libembree-dev libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libglm-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  chromium
+)
+
+missing=()
+for p in "${APT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+# Python venv for the report and image metrics (FLIP). Rebuilt only when requirements change.
+if [ ! -f .venv/.requirements-done ] || ! cmp -s report/requirements.txt .venv/.requirements-done; then
+  echo "setup: making .venv"
+  python3 -m venv .venv
+  .venv/bin/pip install -q --disable-pip-version-check -r report/requirements.txt
+  cp report/requirements.txt .venv/.requirements-done
+fi
+
+if [ ! -f "$BUILD_DIR/build.ninja" ]; then
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" ${CMAKE_ARGS:-}
+fi
+cmake --build "$BUILD_DIR" -j "$(nproc)"
+echo "setup: built $BUILD_DIR/bin/vct"

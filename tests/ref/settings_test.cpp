@@ -1,0 +1,48 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/settings.h"
+
+namespace vct {
+
+TEST(Settings, JsonRoundTripKeepsEveryField) {
+  Settings s;
+  s.vct.grid = 64;
+  s.vct.light_model = LightModel::Seed;
+  s.vct.reduction = Reduction::CasRgba8;
+  s.pt.spp = 17;
+  const nlohmann::json j = s;
+  const Settings back = j.get<Settings>();
+  EXPECT_EQ(back.vct.grid, 64);
+  EXPECT_EQ(back.vct.light_model, LightModel::Seed);
+  EXPECT_EQ(back.vct.reduction, Reduction::CasRgba8);
+  EXPECT_EQ(back.pt.spp, 17);
+  EXPECT_EQ(nlohmann::json(back), j);
+}
+
+TEST(Settings, UnknownKeyIsRefused) {
+  nlohmann::json j = {{"vct", {{"gird", 64}}}};
+  EXPECT_THROW(j.get<Settings>(), InputError);
+}
+
+TEST(Settings, BadEnumNamesTheAllowedValues) {
+  nlohmann::json j = {{"vct", {{"light_model", "sun"}}}};
+  try {
+    (void)j.get<Settings>();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gltf|seed"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Settings, ValidationRejectsNonPowerOfTwoGrid) {
+  Settings s;
+  s.vct.grid = 100;
+  EXPECT_THROW(validate_settings(s), InputError);
+  s.vct.grid = 128;
+  EXPECT_NO_THROW(validate_settings(s));
+}
+
+}  // namespace vct
