@@ -1,0 +1,90 @@
+// What each VCT stage computes, shared by the CPU reference (ref/) and the GL build (gl/), so that
+// both backends hand the same types to the dump writer and to compare/.
+// Coordinates: images row 0 = top; volumes x fastest; voxel (i,j,k) covers texture coordinates
+// [i/N,(i+1)/N) x ... of the scene's VoxelVolume (docs/pipeline.md).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/math.h"
+#include "core/volume.h"
+
+namespace vct {
+
+/// One spot light's depth map. depth: 1 channel, GL window depth in [0,1] (depth range 0..1,
+/// cleared to 1), row 0 = top = +y of the light's NDC.
+struct ShadowMap {
+  Image depth;
+  mat4 view_proj{1.0f};  // world -> light clip space
+};
+
+/// Camera G-buffer, one value per pixel centre, row 0 = top. Pixels no triangle covers have
+/// coverage 0 and zeros elsewhere.
+struct GBuffer {
+  Image position;   // 3: world position
+  Image normal;     // 3: unit shading normal after normal mapping, facing the camera
+  Image albedo;     // 3: linear base colour (factor x texture)
+  Image material;   // 4: metallic, roughness, specular_factor, 0
+  Image specular_color;  // 3: KHR_materials_specular colour (linear)
+  Image emission;   // 3: emitted radiance (factor x texture x strength)
+  Image depth;      // 1: window depth [0,1]
+  Image coverage;   // 1: 1 where a triangle covers the pixel centre
+};
+
+/// Voxel occupancy and radiance at the base level (level 0, N^3).
+struct VoxelGrid {
+  int n = 0;
+  Volume radiance;   // 4: RGB outgoing radiance, A opacity (0 or 1 at level 0)
+  Volume fragments;  // 1: number of fragments (surface samples) that landed in each voxel
+  // CAS RGBA8 model only: per voxel the lowest and highest value a correct GPU may store for any
+  // fragment order (empty otherwise).
+  Volume cas_lo, cas_hi;
+};
+
+/// Axis directions of the anisotropic volumes, in this order: +x, -x, +y, -y, +z, -z.
+enum AnisoDir : int { kPosX = 0, kNegX, kPosY, kNegY, kPosZ, kNegZ };
+constexpr std::array<const char*, 6> kAnisoDirNames = {"posx", "negx", "posy", "negy", "posz", "negz"};
+
+/// Mip pyramids built from VoxelGrid::radiance. iso[0] is the base level itself.
+/// aniso[d][0] is level 1 of direction d (the base level is shared with iso[0]: 1.5x memory).
+struct VoxelMips {
+  std::vector<Volume> iso;
+  std::array<std::vector<Volume>, 6> aniso;
+  bool anisotropic() const { return !aniso[0].empty(); }
+};
+
+/// The final frame and its components (all linear radiance, 3 channels, row 0 = top).
+/// final = direct + kd*albedo*indirect_diffuse + F*indirect_specular + emission (+ particles).
+struct FrameImages {
+  Image direct;            // Cook–Torrance from spot lights with shadow-map (or cone) visibility
+  Image indirect_diffuse;  // cosine-weighted mean incident radiance from the diffuse cones
+  Image indirect_specular; // incident radiance from the specular cone
+  Image diffuse_term;      // kd * albedo * indirect_diffuse (what final adds)
+  Image specular_term;     // F * indirect_specular (what final adds)
+  Image emission;
+  Image particles;         // additive particle layer
+  Image soft_shadow;       // 1: cone-traced visibility (if enabled)
+  Image final_image;
+};
+
+/// Everything one VCT frame computed; either backend fills what it ran.
+struct FrameResult {
+  std::string backend;  // "ref" or "gl"
+  std::vector<ShadowMap> shadow_maps;
+  GBuffer gbuffer;
+  VoxelGrid voxels;
+  Volume conservative_occupancy;  // 1: exact triangle-box voxelization (ref only)
+  Volume holes;                   // 1: voxels the conservative set has and the GPU rule misses
+  VoxelMips mips;
+  FrameImages images;
+  std::vector<double> multibounce_energy;  // total voxel radiance after each multibounce frame
+  std::map<std::string, double> timings_ms;  // stage name -> milliseconds
+  std::map<std::string, std::string> info;   // e.g. GL_RENDERER, counts
+};
+
+}  // namespace vct
