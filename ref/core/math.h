@@ -1,7 +1,6 @@
 // Math vocabulary shared by every module: GLM types under short names.
 #pragma once
 
-#define GLM_FORCE_XYZW_ONLY
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
