@@ -13,7 +13,7 @@ APT_PACKAGES=(
   libembree-dev libopenimageio-dev openimageio-tools libtinygltf-dev nlohmann-json3-dev libstb-dev
   libglm-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  chromium
+  chromium ccache
 )
 
 missing=()
@@ -37,7 +37,7 @@ if [ ! -f .venv/.requirements-done ] || ! cmp -s report/requirements.txt .venv/.
 fi
 
 if [ ! -f "$BUILD_DIR/build.ninja" ]; then
-  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" ${CMAKE_ARGS:-}
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ${CMAKE_ARGS:-}
 fi
 cmake --build "$BUILD_DIR" -j "$(nproc)"
 echo "setup: built $BUILD_DIR/bin/vct"
