@@ -193,6 +193,68 @@ VCT_FN Frame frame_from_normal(vec3 n) {
 }
 VCT_FN vec3 frame_to_world(Frame f, vec3 local) { return f.t * local.x + f.b * local.y + f.n * local.z; }
 
+
+// ---------------------------------------------------------------------------------------------
+// Fire particles (the seed's stateless particle system): nothing is stored; particle `id` of an
+// emitter at time `time` is a pure function of (emitter index, id, time) and the emitter block.
+// Particle id is born at id/count*lifetime and respawns every lifetime; each life (cycle) draws
+// fresh uniform randoms from the hash of (emitter, id, cycle). Position follows uniformly
+// accelerated motion from a random point of the spawn box with a random velocity in
+// [velocity_min, velocity_max]; colour and radius go linearly from start to end over the life.
+
+struct ParticleEmitterBlock {
+  vec4 origin_count;            // xyz world origin, w = particle count
+  vec4 spawn_extent_lifetime;   // xyz half-size of the spawn box, w = lifetime (seconds)
+  vec4 velocity_min;            // xyz
+  vec4 velocity_max;            // xyz
+  vec4 acceleration;            // xyz
+  vec4 color_size_start;        // rgb linear radiance, w = world radius
+  vec4 color_size_end;          // rgb, w = radius
+};
+
+struct ParticleState {
+  vec4 position_radius;  // xyz world position, w = world radius
+  vec4 color_age;        // rgb linear radiance, w = age / lifetime in [0, 1)
+};
+
+VCT_FN float particle_random(uint key, uint k) { return hash_to_unit(hash_combine(key, k)); }
+
+VCT_FN ParticleState particle_state(ParticleEmitterBlock e, uint emitter, uint id, float time) {
+  float lifetime = max(e.spawn_extent_lifetime.w, 1e-6f);
+  float count = max(e.origin_count.w, 1.0f);
+  float since_birth = time - float(id) / count * lifetime;
+  float cycle = floor(since_birth / lifetime);
+  float age = since_birth - cycle * lifetime;
+  // The cycle may be negative before the first birth: int -> uint keeps the bit pattern on both
+  // sides, so the key is the same.
+  uint key = hash_combine(hash_combine(emitter, id), uint(int(cycle)));
+  vec3 r_spawn = vec3(particle_random(key, 0u), particle_random(key, 1u), particle_random(key, 2u));
+  vec3 r_vel = vec3(particle_random(key, 3u), particle_random(key, 4u), particle_random(key, 5u));
+  vec3 spawn = vec3(e.origin_count) + (r_spawn * 2.0f - vec3(1.0f)) * vec3(e.spawn_extent_lifetime);
+  vec3 velocity = mix(vec3(e.velocity_min), vec3(e.velocity_max), r_vel);
+  vec3 position = spawn + velocity * age + vec3(e.acceleration) * (0.5f * age * age);
+  float u = clamp(age / lifetime, 0.0f, 1.0f);
+  ParticleState p;
+  p.position_radius = vec4(position, mix(e.color_size_start.w, e.color_size_end.w, u));
+  p.color_age = vec4(mix(vec3(e.color_size_start), vec3(e.color_size_end), u), u);
+  return p;
+}
+
+// Splat profile of a particle: a camera-facing disc of radius r whose emitted radiance falls off
+// as colour * (1 - (rho/r)^2) at distance rho from the centre in the disc plane.
+VCT_FN float particle_profile(float rho, float radius) {
+  float q = rho / max(radius, 1e-8f);
+  return max(1.0f - q * q, 0.0f);
+}
+
+// What one particle adds to the radiance of the voxel holding its centre (added, not averaged):
+// the disc's mean profile (1/2) times its area over a voxel face, so a cone looking through the
+// voxel sees the disc's power spread over the voxel's cross-section.
+VCT_FN vec3 particle_voxel_radiance(ParticleState p, float voxel_size) {
+  float r = p.position_radius.w;
+  return vec3(p.color_age) * (0.5f * SH_PI * r * r / (voxel_size * voxel_size));
+}
+
 #ifndef VCT_GLSL
 }  // namespace sh
 }  // namespace vct

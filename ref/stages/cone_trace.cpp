@@ -1,0 +1,49 @@
+#include "stages/cone_trace.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "stages/voxel_sampler.h"
+
+namespace vct {
+
+MarchParams MarchParams::from_settings(const VctSettings& s, int grid) {
+  MarchParams p;
+  p.start_offset = s.cone_offset_voxels / float(grid);
+  p.max_distance = s.max_distance;
+  p.quality = s.cone_quality;
+  return p;
+}
+
+namespace {
+bool inside_unit_cube(const vec3& p) {
+  return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= 1.0f && p.y <= 1.0f && p.z <= 1.0f;
+}
+}  // namespace
+
+vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& params,
+                std::vector<ConeSample>* record) {
+  if (mips.iso.empty() || mips.iso[0].nx == 0) return vec4(0.0f);
+  const float voxel = 1.0f / float(mips.iso[0].nx);
+  const float tan_half = std::tan(0.5f * cone.aperture);
+  vec3 color(0.0f);
+  float alpha = 0.0f;
+  float t = params.start_offset;
+  while (alpha < 1.0f && t < params.max_distance) {
+    const vec3 pos = cone.origin + cone.direction * t;
+    if (!inside_unit_cube(pos)) break;
+    const float diameter = std::max(voxel, 2.0f * t * tan_half);
+    const float lod = std::max(std::log2(diameter / voxel), params.min_lod);
+    const vec4 s = sample_voxels(mips, pos, lod, cone.direction);
+    const float transmit = 1.0f - alpha;
+    color += transmit * vec3(s);
+    alpha += transmit * s.a;
+    if (record) record->push_back({pos, t, diameter, lod, s, vec4(color, alpha)});
+    // A degenerate step (quality 0) would never end; the settings validator forbids it, but a
+    // hand-built MarchParams might not.
+    t += std::max(diameter * params.quality, 1e-6f);
+  }
+  return vec4(color, std::min(alpha, 1.0f));
+}
+
+}  // namespace vct

@@ -1,0 +1,44 @@
+// One cone marched through the voxel mips (docs/pipeline.md, "Cone marching"). All distances are
+// in voxel-texture units: the volume is [0,1]^3 and one base voxel is 1/N.
+#pragma once
+
+#include <vector>
+
+#include "core/math.h"
+#include "core/settings.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+struct Cone {
+  vec3 origin{0.0f};     // texture space
+  vec3 direction{0.0f, 0.0f, 1.0f};  // unit
+  float aperture = 0.5f;  // full opening angle, radians
+};
+
+/// How far and how finely to march; from_settings() fills it from VctSettings.
+struct MarchParams {
+  float start_offset = 0.0f;  // first sample distance (texture units)
+  float max_distance = 1.7320508f;
+  float quality = 0.5f;       // step = diameter * quality
+  float min_lod = 0.0f;       // multibounce traces start at level >= 1
+  static MarchParams from_settings(const VctSettings& s, int grid);
+};
+
+/// One sample of the march, for --explain.
+struct ConeSample {
+  vec3 position{0.0f};
+  float distance = 0.0f;
+  float diameter = 0.0f;
+  float lod = 0.0f;
+  vec4 sampled{0.0f};
+  vec4 accumulated{0.0f};  // after this sample
+};
+
+/// Front-to-back accumulation: rgb is premultiplied (radiance x opacity), so c += (1-a) s.rgb and
+/// a += (1-a) s.a. Returns (accumulated radiance, accumulated opacity). When `record` is given,
+/// every sample is appended to it.
+vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& params,
+                std::vector<ConeSample>* record = nullptr);
+
+}  // namespace vct

@@ -1,0 +1,41 @@
+#include "stages/indirect_pass.h"
+
+#include "core/parallel.h"
+
+namespace vct {
+
+vec3 view_vector(const Scene& scene, const vec3& p) { return glm::normalize(scene.camera.position - p); }
+
+IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s) {
+  const int w = g.coverage.width, h = g.coverage.height;
+  IndirectImages out;
+  out.diffuse = Image(w, h, 3);
+  out.specular = Image(w, h, 3);
+  for (auto& img : out.diffuse_cones) {
+    img = Image(w, h, 4);
+    img.channel_names = {"R", "G", "B", "A"};
+  }
+  parallel_rows(h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      if (g.coverage.at(x, y, 0) <= 0.0f) continue;
+      const vec3 p = g.position.rgb(x, y);
+      const vec3 n = g.normal.rgb(x, y);
+      if (s.diffuse_cones) {
+        const DiffuseConeSet set =
+            trace_diffuse_cones(mips, scene.volume, s, p, n, diffuse_rotation_for_pixel(s, x, y));
+        out.diffuse.set_rgb(x, y, set.radiance);
+        for (int i = 0; i < kDiffuseCones; ++i) {
+          float* px = out.diffuse_cones[size_t(i)].pixel(x, y);
+          for (int c = 0; c < 4; ++c) px[c] = set.cones[size_t(i)][c];
+        }
+      }
+      if (s.specular_cones) {
+        const float roughness = g.material.at(x, y, 1);
+        out.specular.set_rgb(x, y, vec3(trace_specular_cone(mips, scene.volume, s, p, n, view_vector(scene, p), roughness)));
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace vct

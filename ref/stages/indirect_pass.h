@@ -1,0 +1,28 @@
+// Indirect light for every covered G-buffer pixel: the diffuse cone set and the specular cone
+// (docs/pipeline.md, "Diffuse cones", "Specular cone"). One pixel is one independent work item.
+#pragma once
+
+#include <array>
+
+#include "core/image.h"
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/cone_sets.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+struct IndirectImages {
+  Image diffuse;   // 3: weighted diffuse cone radiance (cosine mode: E/pi estimate)
+  Image specular;  // 3: specular cone radiance
+  std::array<Image, kDiffuseCones> diffuse_cones;  // 4 each: every cone's (rgb, opacity)
+};
+
+/// Disabled cone sets (settings.diffuse_cones / specular_cones false) give zero images.
+IndirectImages trace_indirect(const Scene& scene, const GBuffer& gbuffer, const VoxelMips& mips,
+                              const VctSettings& s);
+
+/// The view vector (unit, surface -> eye) of a world point.
+vec3 view_vector(const Scene& scene, const vec3& p);
+
+}  // namespace vct

@@ -1,0 +1,27 @@
+// Cone-traced soft shadows (docs/pipeline.md, "Soft shadows"): with settings.soft_shadows the
+// direct light of each spot light is weighted by 1 - the opacity a cone toward the light gathers,
+// instead of the shadow map's PCF visibility.
+#pragma once
+
+#include "core/image.h"
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "scene/surface.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+/// Unshadowed radiance reflected toward v from one spot light (BRDF x irradiance x n.l), from the
+/// shared definitions in vct_shared.h.
+vec3 spot_light_radiance(const SpotLight& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
+                         const SurfaceMaterial& m);
+
+/// The material of a G-buffer pixel, as the BRDF sees it.
+SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
+
+/// Direct light of every covered pixel with cone visibility; `visibility` (1 channel) receives the
+/// mean visibility over the lights (1 where no light or no surface).
+Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s,
+                        Image* visibility);
+
+}  // namespace vct
