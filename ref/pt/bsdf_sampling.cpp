@@ -1,0 +1,126 @@
+#include "pt/bsdf_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vct::pt {
+
+vec3 sample_cosine_hemisphere(vec2 u) {
+  // Concentric map of the unit square to the disk (Shirley-Chiu), then project up.
+  const vec2 o = 2.0f * u - vec2(1.0f);
+  vec2 d(0.0f);
+  if (o.x != 0.0f || o.y != 0.0f) {
+    float r, phi;
+    if (std::abs(o.x) > std::abs(o.y)) {
+      r = o.x;
+      phi = 0.25f * kPi * (o.y / o.x);
+    } else {
+      r = o.y;
+      phi = 0.5f * kPi - 0.25f * kPi * (o.x / o.y);
+    }
+    d = r * vec2(std::cos(phi), std::sin(phi));
+  }
+  const float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+  return vec3(d.x, d.y, z);
+}
+
+float cosine_hemisphere_pdf(const vec3& l) { return l.z > 0.0f ? l.z * kInvPi : 0.0f; }
+
+float smith_g1_ggx(const vec3& v, float alpha) {
+  if (v.z <= 0.0f) return 0.0f;
+  const float z2 = v.z * v.z;
+  const float tan2 = std::max(0.0f, 1.0f - z2) / z2;
+  return 2.0f / (1.0f + std::sqrt(1.0f + alpha * alpha * tan2));
+}
+
+vec3 sample_ggx_vndf(const vec3& v, float alpha, vec2 u) {
+  // Heitz 2018, listing 1 (isotropic alpha): stretch, sample the projected hemisphere, unstretch.
+  const vec3 vh = glm::normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+  const float lensq = vh.x * vh.x + vh.y * vh.y;
+  const vec3 t1 = lensq > 0.0f ? vec3(-vh.y, vh.x, 0.0f) / std::sqrt(lensq) : vec3(1.0f, 0.0f, 0.0f);
+  const vec3 t2 = glm::cross(vh, t1);
+  const float r = std::sqrt(u.x);
+  const float phi = 2.0f * kPi * u.y;
+  const float p1 = r * std::cos(phi);
+  float p2 = r * std::sin(phi);
+  const float s = 0.5f * (1.0f + vh.z);
+  p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
+  const vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
+  return glm::normalize(vec3(alpha * nh.x, alpha * nh.y, std::max(0.0f, nh.z)));
+}
+
+float ggx_vndf_reflection_pdf(const vec3& v, const vec3& l, float roughness) {
+  if (v.z <= 0.0f || l.z <= 0.0f) return 0.0f;
+  const vec3 h = glm::normalize(v + l);
+  const float alpha = roughness * roughness;
+  return smith_g1_ggx(v, alpha) * sh::ggx_distribution(h.z, roughness) / (4.0f * v.z);
+}
+
+BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& ng, const vec3& v) {
+  BsdfPoint p;
+  p.pbr = pbr;
+  p.n = n;
+  p.ng = ng;
+  p.v = v;
+  p.frame = sh::frame_from_normal(n);
+  // Lobe choice by the lobes' expected weights at this view angle: Fresnel for the specular
+  // lobe, kd * albedo for the diffuse one. Both lobes keep >= 5 % when both can contribute, so
+  // neither mixture component's pdf can starve a direction the other lobe needs.
+  const float n_dot_v = std::max(glm::dot(n, v), 0.0f);
+  const float ws = luminance(sh::fresnel_schlick(pbr.f0, pbr.f90, n_dot_v));
+  const float wd = luminance(pbr.albedo) * (1.0f - pbr.metallic) * std::max(0.0f, 1.0f - ws);
+  if (ws <= 0.0f)
+    p.specular_probability = 0.0f;
+  else if (wd <= 0.0f)
+    p.specular_probability = 1.0f;
+  else
+    p.specular_probability = std::clamp(ws / (ws + wd), 0.05f, 0.95f);
+  return p;
+}
+
+BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l) {
+  BsdfValue out;
+  if (glm::dot(p.ng, l) <= 0.0f) return out;  // reflection only: never through the surface
+  const vec3 total = sh::cook_torrance(p.pbr, p.n, p.v, l);
+  if (total == vec3(0.0f)) return out;
+  // The diffuse lobe exactly as cook_torrance forms it: kd(h.v) * albedo / pi.
+  const vec3 h = glm::normalize(p.v + l);
+  const vec3 f = sh::fresnel_schlick(p.pbr.f0, p.pbr.f90, std::max(glm::dot(h, p.v), 0.0f));
+  out.diffuse = sh::diffuse_weight(p.pbr, f) * p.pbr.albedo * sh::SH_INV_PI;
+  out.specular = glm::max(total - out.diffuse, vec3(0.0f));
+  return out;
+}
+
+namespace {
+vec3 to_local(const sh::Frame& f, const vec3& w) { return vec3(glm::dot(w, f.t), glm::dot(w, f.b), glm::dot(w, f.n)); }
+}  // namespace
+
+float bsdf_pdf(const BsdfPoint& p, const vec3& l) {
+  const vec3 ll = to_local(p.frame, l), vl = to_local(p.frame, p.v);
+  if (ll.z <= 0.0f) return 0.0f;
+  float pdf = 0.0f;
+  if (p.specular_probability > 0.0f)
+    pdf += p.specular_probability * ggx_vndf_reflection_pdf(vl, ll, p.pbr.roughness);
+  if (p.specular_probability < 1.0f) pdf += (1.0f - p.specular_probability) * cosine_hemisphere_pdf(ll);
+  return pdf;
+}
+
+BsdfSample sample_bsdf(const BsdfPoint& p, float u_lobe, vec2 u) {
+  BsdfSample s;
+  const vec3 vl = to_local(p.frame, p.v);
+  if (vl.z <= 0.0f) return s;
+  vec3 ll;
+  if (u_lobe < p.specular_probability) {
+    const vec3 h = sample_ggx_vndf(vl, p.pbr.roughness * p.pbr.roughness, u);
+    ll = 2.0f * glm::dot(vl, h) * h - vl;
+  } else {
+    ll = sample_cosine_hemisphere(u);
+  }
+  if (ll.z <= 0.0f) return s;
+  s.l = glm::normalize(sh::frame_to_world(p.frame, ll));
+  s.pdf = bsdf_pdf(p, s.l);
+  s.valid = s.pdf > 0.0f;
+  return s;
+}
+
+}  // namespace vct::pt

@@ -1,0 +1,41 @@
+// Emissive triangles as area lights: Lambertian emitters (radiance independent of direction),
+// emitting from the front face (the winding's normal) only, or from both faces when the material
+// is double_sided (docs/pathtracer.md). Sampled by area x emission-factor luminance.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "scene/scene.h"
+#include "scene/surface.h"
+
+namespace vct::pt {
+
+/// Radiance a surface point emits toward w (unit, pointing away from the surface).
+vec3 emitted_radiance(const Scene& scene, const SurfacePoint& p, const SurfaceMaterial& m, const vec3& w);
+
+class EmissiveTriangles {
+ public:
+  explicit EmissiveTriangles(const Scene& scene);
+
+  bool empty() const { return triangles_.empty(); }
+  size_t size() const { return triangles_.size(); }
+
+  struct Sample {
+    uint32_t triangle = 0;
+    float b1 = 0.0f, b2 = 0.0f;
+    float pdf_area = 0.0f;  // selection probability / triangle area
+  };
+  /// Picks a triangle with u_select, then a uniform point on it with u.
+  Sample sample(float u_select, vec2 u) const;
+  /// Area density of sample() at any point of `triangle` (0 if it is not an emitter).
+  float pdf_area(uint32_t triangle) const { return pdf_area_[triangle]; }
+
+ private:
+  std::vector<uint32_t> triangles_;
+  std::vector<double> cdf_;       // inclusive prefix sums, normalised to end at 1
+  std::vector<float> pdf_area_;   // per scene triangle
+};
+
+}  // namespace vct::pt

@@ -1,0 +1,55 @@
+// One path sample of one pixel: next-event estimation to spot lights (delta lights, no MIS) and
+// to emissive triangles (area sampling, power-heuristic MIS with BSDF sampling), BSDF importance
+// sampling, Russian roulette. Returns the contribution split into the AOVs that mirror the VCT
+// components (docs/pathtracer.md defines each one).
+#pragma once
+
+#include <cstdint>
+
+#include "core/math.h"
+#include "core/settings.h"
+#include "pt/emissive_lights.h"
+#include "pt/embree_scene.h"
+#include "scene/scene.h"
+
+namespace vct::pt {
+
+/// AOVs in accumulator order.
+enum Aov : int { kFull = 0, kDirect, kEmission, kIndirectDiffuse, kIndirectSpecular, kAovCount };
+constexpr const char* kAovNames[kAovCount] = {"pt_full", "pt_direct", "pt_emission", "pt_indirect_diffuse",
+                                              "pt_indirect_specular"};
+
+struct PathSample {
+  vec3 aov[kAovCount] = {vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f)};
+};
+
+/// Ray counts (primary = camera rays, secondary = BSDF continuation rays, shadow = NEE rays).
+struct RayCounts {
+  uint64_t primary = 0, secondary = 0, shadow = 0;
+  uint64_t nonfinite_samples = 0;  // samples dropped because a value was NaN/inf (should stay 0)
+  void add(const RayCounts& o) {
+    primary += o.primary;
+    secondary += o.secondary;
+    shadow += o.shadow;
+    nonfinite_samples += o.nonfinite_samples;
+  }
+  uint64_t total() const { return primary + secondary + shadow; }
+};
+
+class Integrator {
+ public:
+  Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights, const PtSettings& s);
+
+  /// Sample `sample` of pixel (x, y); deterministic in (x, y, sample, settings.seed).
+  PathSample trace(int x, int y, uint32_t sample, RayCounts& counts) const;
+
+ private:
+  const Scene& scene_;
+  const EmbreeScene& rt_;
+  const EmissiveTriangles& lights_;
+  PtSettings settings_;
+  int light_model_;
+  float eps_;  // ray offset, scaled to the scene's size
+};
+
+}  // namespace vct::pt
