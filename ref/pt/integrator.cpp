@@ -98,11 +98,14 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     const sh::SurfacePbr pbr =
         sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
     const BsdfPoint bp = make_bsdf_point(pbr, ns, ng, wo);
-    const vec3 p = sp.position + ng * eps_;
+    // Light geometry is evaluated at the true surface point; only rays start from the point
+    // lifted off the surface (along ng, the side every accepted direction leaves on).
+    const vec3 pos = sp.position;
+    const vec3 p = pos + ng * eps_;
 
     // Next-event estimation: spot lights (delta, exact visibility by a shadow ray).
     for (const SpotLight& light : scene_.spot_lights) {
-      const vec3 to_light = light.position - p;
+      const vec3 to_light = light.position - pos;
       const float dist = glm::length(to_light);
       if (!(dist > 0.0f)) continue;
       const vec3 l = to_light / dist;
@@ -113,7 +116,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
                                          std::cos(light.outer_cone_angle), light.range);
       if (e == vec3(0.0f)) continue;
       ++counts.shadow;
-      if (rt_.occluded(p, l, 0.0f, dist)) continue;
+      if (rt_.occluded(p, light.position - p, 0.0f, 1.0f)) continue;
       const vec3 c = f.total() * e * glm::dot(ns, l);
       if (depth == 1) {
         out.aov[kDirect] += c;
@@ -133,7 +136,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
       const float u_sel = rng.next_float();
       const EmissiveTriangles::Sample ls = lights_.sample(u_sel, rng.next_2d());
       const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
-      const vec3 to_light = lp.position - p;
+      const vec3 to_light = lp.position - pos;
       const float dist2 = glm::dot(to_light, to_light);
       const float dist = std::sqrt(dist2);
       if (dist > 0.0f) {
@@ -144,7 +147,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
           const vec3 lle = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
           if (lle != vec3(0.0f)) {
             ++counts.shadow;
-            if (!rt_.occluded(p, l, 0.0f, dist - eps_)) {
+            if (!rt_.occluded(p, lp.position - p, 0.0f, 1.0f - eps_ / dist)) {
               const float pdf_light = ls.pdf_area * dist2 / cos_l;
               const float w = power_heuristic(pdf_light, bsdf_pdf(bp, l));
               const vec3 k = lle * (glm::dot(ns, l) * w / pdf_light);
