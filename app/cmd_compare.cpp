@@ -1,18 +1,94 @@
-// vct compare: not built yet (see the open issues); registered so --help lists it.
+// vct compare A B: A is the reference, B the test. Each is a stage-set directory (holding
+// vct-stages.json, ours or an external renderer's: docs/external_format.md), a validate run
+// directory (A's ref/ against B's gl/), an image (.exr .png .hdr ...) or a volume (.nrrd).
+// Exit: 0 pass or warn, 1 fail, 2 bad input.
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
+#include "compare/metrics.h"
+#include "compare/stage_compare.h"
+#include "compare/stage_set.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/image_io.h"
+#include "io/nrrd.h"
+#include "verdict_summary.h"
 
 namespace vct::app {
 
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CompareArgs {
+  std::string a, b, out, stage = "image.final";
+  double abs = 0.0, rel = 0.0;
+  size_t worst = 10;
+};
+
+// A run directory of `vct validate` holds ref/ and gl/; a stage directory holds the manifest.
+std::string stage_dir(const std::string& path, const char* side) {
+  if (fs::exists(fs::path(path) / "vct-stages.json") || fs::is_regular_file(path)) return path;
+  const fs::path sub = fs::path(path) / side;
+  if (fs::exists(sub / "vct-stages.json")) return sub.string();
+  throw InputError(path, std::string("no vct-stages.json here nor in ") + side + "/ (docs/external_format.md)");
+}
+
+bool is_volume(const std::string& p) { return fs::path(p).extension() == ".nrrd"; }
+
+int finish(const cmp::Report& rep, const CompareArgs& a, const std::string& title) {
+  print_verdicts(rep, title);
+  if (!a.out.empty()) {
+    nlohmann::json j = {{"reference", a.a}, {"test", a.b}, {"verdicts", cmp::to_json(rep)}};
+    write_text_atomically((fs::path(a.out) / "compare.json").string(), j.dump(2) + "\n");
+  }
+  return rep.overall() == cmp::Verdict::Fail ? kExitFailed : kExitOk;
+}
+
+int run(const CompareArgs& a) {
+  for (const auto& p : {a.a, a.b})
+    if (!fs::exists(p)) throw InputError(p, "no such file or directory");
+  if (!a.out.empty()) fs::create_directories(a.out);
+  const cmp::CompareOptions opt{a.worst, a.out.empty() ? "" : a.out + "/masks", "masks/"};
+  if (fs::is_directory(a.a) || fs::is_directory(a.b) || fs::path(a.a).extension() == ".json") {
+    const cmp::StageSet ref = cmp::read_stage_set(stage_dir(a.a, "ref"));
+    const cmp::StageSet test = cmp::read_stage_set(stage_dir(a.b, "gl"));
+    return finish(cmp::compare_stage_sets(ref, test, opt), a, test.backend + " vs " + ref.backend);
+  }
+  cmp::Report rep;
+  if (is_volume(a.a) != is_volume(a.b)) throw InputError(a.b, "cannot compare an image with a volume");
+  if (is_volume(a.a)) {
+    const Volume r = read_nrrd(a.a), t = read_nrrd(a.b);
+    rep.stages.push_back(cmp::compare_volume_plain("volume", r, t, a.abs, a.rel, opt));
+  } else {
+    const Image r = read_image(a.a), t = read_image(a.b);
+    if (r.width != t.width || r.height != t.height)
+      throw InputError(a.b, "size " + std::to_string(t.width) + "x" + std::to_string(t.height) + " differs from " +
+                                a.a + " (" + std::to_string(r.width) + "x" + std::to_string(r.height) + ")");
+    rep.stages.push_back(cmp::compare_image_stage(a.stage, r, t, nullptr, opt));
+    const cmp::ImageMetrics m = cmp::image_metrics(t, r);
+    std::printf("metrics (reference = %s): MSE %.4g  relMSE %.4g (eps %.2g)  mean bias %+.4g  max|d| %.4g  SSIM %.4f\n",
+                a.a.c_str(), m.mse, m.rel_mse, m.rel_mse_epsilon, m.mean_bias, m.max_abs, m.ssim);
+    rep.stages.back().extra["metrics"] = {{"mse", m.mse}, {"rel_mse", m.rel_mse}, {"rel_mse_epsilon", m.rel_mse_epsilon},
+                                          {"mean_bias", m.mean_bias}, {"max_abs", m.max_abs}, {"ssim", m.ssim}};
+  }
+  return finish(rep, a, "compare");
+}
+
+}  // namespace
+
 void register_compare(CLI::App& app, int& exit_code) {
-  CLI::App* cmd = app.add_subcommand("compare", "(not built yet)");
-  cmd->allow_extras();
-  cmd->callback([&exit_code]() {
-    std::fprintf(stderr, "vct compare: not built yet\n");
-    exit_code = kExitNoEnvironment;
-  });
+  auto a = std::make_shared<CompareArgs>();
+  CLI::App* cmd = app.add_subcommand("compare", "Stage-by-stage verdict: A = reference, B = test (run dirs, images, volumes)");
+  cmd->add_option("A", a->a, "Reference: stage dir / run dir / image / volume")->required();
+  cmd->add_option("B", a->b, "Test: stage dir / run dir / image / volume")->required();
+  cmd->add_option("--out", a->out, "Write compare.json and error masks here");
+  cmd->add_option("--stage", a->stage, "Tolerance model for two images (a stage name, default image.final)");
+  cmd->add_option("--abs", a->abs, "Two volumes: absolute bound (default 0 = exact)");
+  cmd->add_option("--rel", a->rel, "Two volumes: relative bound");
+  cmd->add_option("--worst", a->worst, "Offenders listed per stage")->check(CLI::Range(1, 1000));
+  cmd->callback([a, &exit_code]() { exit_code = run(*a); });
 }
 
 }  // namespace vct::app

@@ -1,18 +1,201 @@
-// vct validate [SCENE]: ref + gl + pt + comparisons + report. Grows as the engines land.
+// vct validate [SCENE]: ref + gl + pt, every comparison, run directory, report (docs/compare.md).
+// Exit: 0 when every GPU stage passes (warnings included), 1 when one fails or the GL frame
+// errors, 2 bad input, 3 only with --require-gl and no GL context; without --require-gl a
+// missing GL context is reported ("gl: unavailable") and the ref/pt parts still run.
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
+#include "compare/bias.h"
+#include "compare/stage_compare.h"
+#include "compare/stage_set.h"
 #include "core/error.h"
+#include "core/parallel.h"
+#include "io/image_io.h"
+#include "io/run_dir.h"
+#include "options.h"
+#include "scene/gltf_loader.h"
+#include "validate_run.h"
+#include "verdict_summary.h"
 
 namespace vct::app {
 
+namespace {
+
+struct ValidateOptions {
+  std::string scene;
+  CommonOptions common;
+  std::vector<std::string> sweeps;
+  bool require_gl = false;
+  bool no_report = false;
+};
+
+Settings resolve(const CommonOptions& o) {
+  Settings s = validate_defaults();
+  if (!o.config.empty()) s = load_settings_file(o.config, s);
+  if (o.width) s.vct.width = s.pt.width = *o.width;
+  if (o.height) s.vct.height = s.pt.height = *o.height;
+  if (o.grid) s.vct.grid = *o.grid;
+  if (o.spp) s.pt.spp = *o.spp;
+  if (o.threads) s.threads = o.threads;
+  s.pt.width = s.vct.width;  // bias needs the same pixels on both sides
+  s.pt.height = s.vct.height;
+  validate_settings(s);
+  set_thread_count(s.threads);
+  return s;
+}
+
+void record_frame(RunDir& run, const BackendRun& b, const std::string& name) {
+  run.json()["backends"][name] = {{"status", b.status}, {"ms", b.ms}};
+  if (!b.ok()) return;
+  for (const auto& [stage, ms] : b.frame->timings_ms) run.add_timing(name, stage, ms);
+  for (const auto& [k, v] : b.frame->info) run.json()["backends"][name]["info"][k] = v;
+  if (!b.frame->multibounce_energy.empty()) run.json()["multibounce_energy"][name] = b.frame->multibounce_energy;
+}
+
+void write_pt(RunDir& run, const PtRun& pt) {
+  const std::string dir = run.file("pt");
+  RunDir pd(dir);
+  for (const auto& [name, img] : pt.aovs) {
+    if (name.size() > 4 && name.substr(name.size() - 4) == "_var") write_exr(pd.file(name + ".exr"), img);
+    else pd.write_color(name, img);
+  }
+}
+
+nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& b : bias) j.push_back(cmp::to_json(b));
+  return j;
+}
+
+// One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
+nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
+                         bool gl_available) {
+  const auto [key, values] = parse_sweep(spec);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::string& value : values) {
+    const Settings s = apply_sweep_value(base, key, value);
+    std::printf("  sweep %s=%s ...\n", key.c_str(), value.c_str());
+    std::fflush(stdout);
+    nlohmann::json row = {{"key", key}, {"value", value}};
+    const BackendRun ref = run_ref_backend(scene, s);
+    row["ref_status"] = ref.status;
+    row["ref_ms"] = ref.ms;
+    if (ref.ok()) row["ref_timings_ms"] = ref.frame->timings_ms;
+    PtRun pt_here;
+    const PtRun* p = &pt;
+    if (key == "light_model" && s.pt.light_model != base.pt.light_model) p = &(pt_here = run_pt_backend(scene, s));
+    if (ref.ok() && p->ok()) {
+      const auto bias = cmp::measure_bias(cmp::stage_set_from_frame(*ref.frame, s.vct), p->aovs);
+      row["bias"] = bias_json(bias);
+    }
+    if (gl_available) {
+      const BackendRun gl = run_gl_backend(scene, s);
+      row["gl_status"] = gl.status;
+      row["gl_ms"] = gl.ms;
+      if (gl.ok()) {
+        row["gl_timings_ms"] = gl.frame->timings_ms;
+        if (ref.ok()) {
+          const cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(*ref.frame, s.vct),
+                                                          cmp::stage_set_from_frame(*gl.frame, s.vct));
+          row["gl_verdict"] = cmp::to_string(rep.overall());
+          row["gl_first_failing"] = rep.first_failing();
+        }
+      }
+    }
+    rows.push_back(row);
+  }
+  return {{"key", key}, {"values", values}, {"rows", rows}};
+}
+
+int run(const ValidateOptions& o) {
+  const Settings s = resolve(o.common);
+  const Scene scene = load_scene(o.scene);
+  const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
+  for (const auto& sw : o.sweeps) parse_sweep(sw);  // bad specs fail before any rendering
+  RunDir run(out);
+  run.json()["command"] = "validate";
+  run.json()["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()},
+                         {"lights", scene.spot_lights.size()}};
+  run.json()["settings"] = s;
+  run.json()["environment"] = environment_info();
+  std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  -> %s\n", scene.source.c_str(), s.vct.width,
+              s.vct.height, s.vct.grid, s.pt.spp, thread_count(), out.c_str());
+  std::fflush(stdout);
+
+  const BackendRun ref = run_ref_backend(scene, s);
+  record_frame(run, ref, "ref");
+  std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
+  std::fflush(stdout);
+  const BackendRun gl = run_gl_backend(scene, s);
+  record_frame(run, gl, "gl");
+  std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
+              gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
+  std::fflush(stdout);
+  const PtRun pt = run_pt_backend(scene, s);
+  run.json()["backends"]["pt"] = {{"status", pt.status}, {"ms", pt.ms}, {"spp", pt.spp}};
+  std::printf("  pt   %-12s %8.1f s  %d spp\n", pt.status.c_str(), pt.ms / 1000, pt.spp);
+  run.save();
+
+  cmp::StageSet ref_set, gl_set;
+  if (ref.ok()) write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
+  if (gl.ok()) write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
+  if (pt.ok()) write_pt(run, pt);
+
+  int exit_code = kExitOk;
+  if (ref.ok() && gl.ok()) {
+    const cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+    run.json()["verdicts"] = cmp::to_json(rep);
+    print_verdicts(rep, "GPU (gl) vs CPU reference");
+    if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;
+  } else {
+    const std::string why = !gl.ok() ? "gl " + gl.status : "ref " + ref.status;
+    run.json()["verdicts"] = {{"overall", "missing"}, {"first_failing", ""}, {"note", why}, {"stages", nlohmann::json::array()}};
+    std::printf("GPU vs CPU: not compared (%s)\n", why.c_str());
+    if (gl.status.rfind("error", 0) == 0) exit_code = kExitFailed;
+  }
+  std::vector<cmp::BiasComponent> bias;
+  if (ref.ok() && pt.ok()) {
+    bias = cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"});
+    run.json()["bias"] = {{"ref", bias_json(bias)}};
+    if (gl.ok()) run.json()["bias"]["gl"] = bias_json(cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}));
+    print_bias(bias);
+  }
+  run.save();
+  if (!o.sweeps.empty()) {
+    nlohmann::json sweeps = nlohmann::json::array();
+    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok()));
+    run.json()["sweeps"] = sweeps;
+    run.save();
+  }
+  if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
+  run.json()["exit_code"] = exit_code;
+  run.save();
+  if (!o.no_report) {
+    std::string why;
+    const std::string index = make_report(out, why);
+    if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
+    else std::printf("%s\n", index.c_str());
+  }
+  return exit_code;
+}
+
+}  // namespace
+
 void register_validate(CLI::App& app, int& exit_code) {
-  CLI::App* cmd = app.add_subcommand("validate", "(not built yet)");
-  cmd->allow_extras();
-  cmd->callback([&exit_code]() {
-    std::fprintf(stderr, "vct validate: not built yet\n");
-    exit_code = kExitNoEnvironment;
-  });
+  auto o = std::make_shared<ValidateOptions>();
+  CLI::App* cmd = app.add_subcommand("validate", "ref + gl + pt, every comparison, run directory and HTML report");
+  cmd->add_option("scene", o->scene, "glTF scene (default: the built-in Cornell box)");
+  add_common_flags(cmd, o->common);
+  add_image_flags(cmd, o->common);
+  add_grid_flag(cmd, o->common);
+  add_spp_flag(cmd, o->common);
+  cmd->add_option("--sweep", o->sweeps,
+                  "KEY=V1,V2,... re-render per value, bias and time per setting (grid, cones, aperture, quality, "
+                  "bounces, light_model or any vct.* key); repeatable");
+  cmd->add_flag("--require-gl", o->require_gl, "Exit 3 when no GL context is available (default: report and go on)");
+  cmd->add_flag("--no-report", o->no_report, "Skip the HTML report");
+  cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
 
 }  // namespace vct::app

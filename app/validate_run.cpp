@@ -1,0 +1,184 @@
+#include "validate_run.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/error.h"
+#include "io/run_dir.h"
+
+#if __has_include("stages/pipeline.h")
+#include "stages/pipeline.h"
+#define VCT_HAVE_REF_PIPELINE 1
+#endif
+#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
+#include "gl/gl_pipeline.h"
+#define VCT_HAVE_GL_PIPELINE 1
+#endif
+#if __has_include("pt/path_tracer.h")
+#include "pt/path_tracer.h"
+#define VCT_HAVE_PT 1
+#endif
+
+namespace vct::app {
+
+namespace fs = std::filesystem;
+
+Settings validate_defaults() {
+  Settings s;
+  s.vct.width = s.pt.width = 256;
+  s.vct.height = s.pt.height = 256;
+  s.vct.grid = 64;
+  s.vct.shadow_map_size = 1024;
+  s.pt.spp = 64;
+  return s;
+}
+
+BackendRun run_ref_backend(const Scene& scene, const Settings& s) {
+  BackendRun r;
+#ifdef VCT_HAVE_REF_PIPELINE
+  Stopwatch sw;
+  r.frame = render_ref_frame(scene, s);
+  r.ms = sw.ms();
+  r.status = "ok";
+#else
+  (void)scene, (void)s;
+#endif
+  return r;
+}
+
+BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
+  BackendRun r;
+#ifdef VCT_HAVE_GL_PIPELINE
+  try {
+    Stopwatch sw;
+    r.frame = gl::render_gl_frame(scene, s);
+    r.ms = sw.ms();
+    r.status = "ok";
+  } catch (const EnvironmentError& e) {
+    r.status = std::string("unavailable: ") + e.what();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // A shader or GL error is a GPU-side failure to report, not a reason to lose ref and pt.
+    r.status = std::string("error: ") + e.what();
+  }
+#else
+  (void)scene, (void)s;
+#endif
+  return r;
+}
+
+PtRun run_pt_backend(const Scene& scene, const Settings& s) {
+  PtRun r;
+#ifdef VCT_HAVE_PT
+  Stopwatch sw;
+  pt::PathTracer tracer(scene, s.pt);
+  pt::Accumulator acc(s.pt.width, s.pt.height);
+  tracer.render(acc, uint32_t(s.pt.spp));
+  for (int a = 0; a < pt::kAovCount; ++a) {
+    const std::string name = pt::kAovNames[a];
+    r.aovs[name] = acc.mean(pt::Aov(a));
+    r.aovs[name + "_var"] = acc.variance(pt::Aov(a));
+  }
+  r.spp = int(acc.samples());
+  r.ms = sw.ms();
+  r.status = "ok";
+#else
+  (void)scene, (void)s;
+#endif
+  return r;
+}
+
+std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& spec) {
+  const size_t eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 >= spec.size())
+    throw InputError("--sweep", "expected KEY=V1,V2,... (e.g. grid=64,128,256), got '" + spec + "'");
+  std::vector<std::string> values;
+  std::string rest = spec.substr(eq + 1);
+  size_t pos = 0;
+  while (pos <= rest.size()) {
+    const size_t comma = rest.find(',', pos);
+    const std::string v = rest.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    if (v.empty()) throw InputError("--sweep", "empty value in '" + spec + "'");
+    values.push_back(v);
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return {spec.substr(0, eq), values};
+}
+
+Settings apply_sweep_value(const Settings& s, const std::string& key_in, const std::string& value) {
+  static const std::map<std::string, std::string> kAliases = {
+      {"aperture", "diffuse_aperture_deg"}, {"quality", "cone_quality"}, {"cones", "diffuse_cones"},
+      {"storage", "storage"}, {"grid", "grid"}};
+  auto a = kAliases.find(key_in);
+  const std::string key = a != kAliases.end() ? a->second : key_in;
+  nlohmann::json j = s;
+  if (!j["vct"].contains(key)) throw InputError("--sweep", "unknown settings key '" + key_in + "'");
+  nlohmann::json v;
+  try {
+    v = nlohmann::json::parse(value);
+  } catch (const std::exception&) {
+    v = value;  // enum names: light_model=gltf,seed
+  }
+  if (key == "diffuse_cones" && v.is_number()) v = v.get<double>() != 0.0;  // cones=0,5
+  j["vct"][key] = v;
+  if (key == "light_model") j["pt"]["light_model"] = v;
+  Settings out;
+  from_json(j, out);
+  validate_settings(out);
+  return out;
+}
+
+namespace {
+std::string exe_dir() {
+  char buf[4096];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return ".";
+  buf[n] = 0;
+  return fs::path(buf).parent_path().string();
+}
+
+// The source tree: $VCT_SOURCE_DIR, else the nearest ancestor of the executable (or of the
+// working directory) holding report/make_report.py.
+std::string find_source_root() {
+  if (const char* env = std::getenv("VCT_SOURCE_DIR")) return env;
+  for (fs::path p : {fs::path(exe_dir()), fs::current_path()}) {
+    for (; !p.empty(); p = p.parent_path()) {
+      if (fs::exists(p / "report" / "make_report.py")) return p.string();
+      if (p == p.parent_path()) break;
+    }
+  }
+  return "";
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+}  // namespace
+
+std::string make_report(const std::string& run_dir, std::string& why) {
+  const std::string root = find_source_root();
+  if (root.empty()) {
+    why = "report/make_report.py not found (set VCT_SOURCE_DIR)";
+    return "";
+  }
+  std::string py = root + "/.venv/bin/python";
+  if (!fs::exists(py)) py = "python3";
+  const std::string cmd = shell_quote(py) + " " + shell_quote(root + "/report/make_report.py") + " " +
+                          shell_quote(run_dir) + " > " + shell_quote(run_dir + "/report.log") + " 2>&1";
+  const int rc = std::system(cmd.c_str());
+  const std::string index = (fs::path(run_dir) / "report" / "index.html").string();
+  if (rc != 0 || !fs::exists(index)) {
+    why = "report generator failed (see " + run_dir + "/report.log)";
+    return "";
+  }
+  return fs::absolute(index).string();
+}
+
+}  // namespace vct::app

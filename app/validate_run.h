@@ -1,0 +1,54 @@
+// vct validate's engine: render ref, gl and pt on one scene, compare GPU vs CPU stage by stage and
+// VCT vs PT per component, optional parameter sweeps, run directory + run.json, then the report.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/stage_types.h"
+
+namespace vct::app {
+
+/// What one backend produced: status "ok", "unavailable: ..." (no GL context), "not built yet",
+/// "error: ...".
+struct BackendRun {
+  std::string status = "not built yet";
+  std::optional<FrameResult> frame;
+  double ms = 0.0;
+  bool ok() const { return frame.has_value(); }
+};
+
+struct PtRun {
+  std::string status = "not built yet";
+  std::map<std::string, Image> aovs;  // pt_full, pt_full_var, ...
+  double ms = 0.0;
+  int spp = 0;
+  bool ok() const { return !aovs.empty(); }
+};
+
+BackendRun run_ref_backend(const Scene& scene, const Settings& s);
+BackendRun run_gl_backend(const Scene& scene, const Settings& s);
+PtRun run_pt_backend(const Scene& scene, const Settings& s);
+
+/// Settings validate starts from (before --config and flags): small enough that the default
+/// job (ref + gl + pt + report) finishes in a few minutes on 2 cores (docs/compare.md).
+Settings validate_defaults();
+
+/// Applies one sweep value ("grid", "64") to a copy of `s` through the JSON form, so every
+/// vct.* key works; aliases: aperture, quality, cones. Throws InputError on an unknown key.
+Settings apply_sweep_value(const Settings& s, const std::string& key, const std::string& value);
+
+/// Parses "key=v1,v2,..."; throws InputError.
+std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& spec);
+
+/// Finds report/make_report.py and the venv Python next to the executable's source tree;
+/// runs it on `run_dir`. Returns the index.html path, or "" with `why` filled.
+std::string make_report(const std::string& run_dir, std::string& why);
+
+}  // namespace vct::app

@@ -1,0 +1,68 @@
+#include "verdict_summary.h"
+
+#include <cstdio>
+#include <map>
+
+namespace vct::app {
+
+namespace {
+int severity(cmp::Verdict v) {
+  switch (v) {
+    case cmp::Verdict::Fail: return 3;
+    case cmp::Verdict::Warn: return 2;
+    case cmp::Verdict::Pass: return 1;
+    case cmp::Verdict::Missing: return 0;
+  }
+  return 0;
+}
+std::string family(const std::string& stage) {
+  if (stage.rfind("mip.", 0) != 0) return stage;
+  return stage.substr(0, stage.rfind('.')) + ".*";
+}
+}  // namespace
+
+void print_verdicts(const cmp::Report& report, const std::string& title) {
+  std::printf("%s: %s", title.c_str(), cmp::to_string(report.overall()).c_str());
+  const std::string first = report.first_failing();
+  if (!first.empty()) std::printf("  (first failing stage: %s)", first.c_str());
+  std::printf("\n");
+  // Fold mips: keep the worst level of each pyramid.
+  std::vector<std::string> order;
+  std::map<std::string, const cmp::StageVerdict*> worst;
+  for (const auto& s : report.stages) {
+    const std::string f = family(s.stage);
+    auto it = worst.find(f);
+    if (it == worst.end()) order.push_back(f), worst[f] = &s;
+    else if (severity(s.verdict) > severity(it->second->verdict)) it->second = &s;
+  }
+  for (const auto& f : order) {
+    const cmp::StageVerdict& s = *worst[f];
+    const char* mark = s.verdict == cmp::Verdict::Fail ? "FAIL" : s.verdict == cmp::Verdict::Warn ? "warn"
+                       : s.verdict == cmp::Verdict::Pass ? "pass" : "  - ";
+    std::printf("  %-4s %-26s %s\n", mark, (f == s.stage ? f : f + " (" + s.stage.substr(s.stage.rfind('.') + 1) + ")").c_str(),
+                s.note.substr(0, 90).c_str());
+    if (s.verdict == cmp::Verdict::Fail && !s.worst.empty()) {
+      const cmp::Offender& o = s.worst.front();
+      std::printf("       worst at (%d,%d%s): ref", o.at[0], o.at[1], o.at[2] >= 0 ? (", " + std::to_string(o.at[2])).c_str() : "");
+      for (float v : o.reference) std::printf(" %.5g", double(v));
+      std::printf("  test");
+      for (float v : o.test) std::printf(" %.5g", double(v));
+      std::printf("  (bound %.3g)\n", double(o.bound));
+    }
+  }
+}
+
+void print_bias(const std::vector<cmp::BiasComponent>& bias) {
+  std::printf("VCT vs path tracer (reference = PT, relMSE eps = %.2g):\n", cmp::kRelMseEpsilon);
+  std::printf("  %-20s %10s %11s %7s  %s\n", "component", "relMSE", "rel. bias", "SSIM", "noise-aware judgement");
+  for (const auto& b : bias) {
+    if (!b.available) {
+      std::printf("  %-20s %s\n", b.component.c_str(), b.note.c_str());
+      continue;
+    }
+    std::printf("  %-20s %10.4g %+10.2f%% %7.3f  %s\n", b.component.c_str(), b.metrics.rel_mse, 100 * b.metrics.relative_bias,
+                b.metrics.ssim, b.note.substr(0, 80).c_str());
+  }
+}
+
+}  // namespace vct::app

@@ -1,0 +1,435 @@
+#include "stage_compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "compare/tolerance.h"
+#include "io/image_io.h"
+#include "io/nrrd.h"
+
+namespace vct::cmp {
+
+namespace {
+
+std::string mask_stem(const std::string& stage) {
+  std::string s = stage;
+  std::replace(s.begin(), s.end(), '.', '_');
+  return s + "_mask";
+}
+
+// Pixels where rasterisation may legitimately differ: a depth/coverage discontinuity in the
+// 3x3 neighbourhood of the hint (G-buffer depth), or strong local contrast in the reference
+// itself (shadow edges, silhouettes of external images without a G-buffer).
+std::vector<uint8_t> edge_map(const Image& ref, const Image* hint) {
+  const int w = ref.width, h = ref.height;
+  std::vector<uint8_t> edge(size_t(w) * size_t(h), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      float lo = 1e30f, hi = -1e30f, dlo = 1e30f, dhi = -1e30f;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xx = std::clamp(x + dx, 0, w - 1), yy = std::clamp(y + dy, 0, h - 1);
+          float v = 0;
+          for (int c = 0; c < std::min(ref.channels, 3); ++c) v = std::max(v, std::abs(ref.at(xx, yy, c)));
+          lo = std::min(lo, v), hi = std::max(hi, v);
+          if (hint && hint->width == w && hint->height == h) {
+            const float d = hint->at(xx, yy, 0);
+            dlo = std::min(dlo, d), dhi = std::max(dhi, d);
+          }
+        }
+      const bool contrast = hi - lo > 0.25f * hi && hi > 0.0f;
+      const bool depth_step = dhi - dlo > 1e-3f;
+      edge[size_t(y) * size_t(w) + size_t(x)] = (contrast || depth_step) ? 1 : 0;
+    }
+  return edge;
+}
+
+Offender pixel_offender(const Image& ref, const Image& test, int x, int y, float err, float bound) {
+  Offender o;
+  o.at = {x, y, -1};
+  for (int c = 0; c < ref.channels; ++c) o.reference.push_back(ref.at(x, y, c));
+  for (int c = 0; c < test.channels; ++c) o.test.push_back(test.at(x, y, c));
+  o.error = err;
+  o.bound = bound;
+  return o;
+}
+
+Offender voxel_offender(const Volume& ref, const Volume& test, int x, int y, int z, float err, float bound) {
+  Offender o;
+  o.at = {x, y, z};
+  for (int c = 0; c < ref.channels; ++c) o.reference.push_back(ref.voxel(x, y, z)[c]);
+  for (int c = 0; c < test.channels; ++c) o.test.push_back(test.voxel(x, y, z)[c]);
+  o.error = err;
+  o.bound = bound;
+  return o;
+}
+
+void write_image_mask(const CompareOptions& opt, StageVerdict& v, const Image& ref, const std::vector<uint8_t>& state) {
+  if (opt.mask_dir.empty()) return;
+  // Grey context (reference luminance, dimmed), yellow = tolerated edge tie, red = beyond bound.
+  Image m(ref.width, ref.height, 3);
+  float peak = 1e-6f;
+  for (int y = 0; y < ref.height; ++y)
+    for (int x = 0; x < ref.width; ++x) peak = std::max(peak, std::abs(ref.at(x, y, 0)));
+  for (int y = 0; y < ref.height; ++y)
+    for (int x = 0; x < ref.width; ++x) {
+      const uint8_t s = state[size_t(y) * size_t(ref.width) + size_t(x)];
+      const float g = 0.35f * std::min(1.0f, std::abs(ref.at(x, y, 0)) / peak);
+      m.set_rgb(x, y, s == 2 ? vec3(1, 0, 0) : s == 1 ? vec3(1, 0.85f, 0) : vec3(g));
+    }
+  std::filesystem::create_directories(opt.mask_dir);
+  write_png_linear((std::filesystem::path(opt.mask_dir) / (mask_stem(v.stage) + ".png")).string(), m, 0.0f, 1.0f);
+  v.mask = opt.mask_prefix + mask_stem(v.stage) + ".png";
+}
+
+void write_volume_mask(const CompareOptions& opt, StageVerdict& v, const Volume& mask) {
+  if (opt.mask_dir.empty() || v.out_of_bound == 0) return;
+  std::filesystem::create_directories(opt.mask_dir);
+  write_volume_montage((std::filesystem::path(opt.mask_dir) / (mask_stem(v.stage) + ".png")).string(), mask, 64, 1.0f);
+  v.mask = opt.mask_prefix + mask_stem(v.stage) + ".png";
+}
+
+StageVerdict missing(const std::string& stage, const std::string& why) {
+  StageVerdict v;
+  v.stage = stage;
+  v.verdict = Verdict::Missing;
+  v.note = why;
+  return v;
+}
+
+bool same_size(const Volume& a, const Volume& b) { return a.nx == b.nx && a.ny == b.ny && a.nz == b.nz; }
+
+float alpha_of(const Volume& v, size_t i) {
+  return v.channels >= 4 ? v.data[i * size_t(v.channels) + 3] : v.data[i * size_t(v.channels)];
+}
+
+// Occupancy = alpha > 0 (or the single channel > 0).
+std::vector<uint8_t> occupancy(const Volume& v) {
+  std::vector<uint8_t> occ(v.voxel_count());
+  for (size_t i = 0; i < occ.size(); ++i) occ[i] = alpha_of(v, i) > 0.0f ? 1 : 0;
+  return occ;
+}
+
+void xyz_of(const Volume& v, size_t i, int& x, int& y, int& z) {
+  x = int(i % size_t(v.nx));
+  y = int((i / size_t(v.nx)) % size_t(v.ny));
+  z = int(i / (size_t(v.nx) * size_t(v.ny)));
+}
+
+}  // namespace
+
+StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
+                                 const CompareOptions& opt) {
+  StageVerdict v;
+  v.stage = stage;
+  if (ref.width != test.width || ref.height != test.height) {
+    v.verdict = Verdict::Fail;
+    v.note = "size differs: reference " + std::to_string(ref.width) + "x" + std::to_string(ref.height) + ", test " +
+             std::to_string(test.width) + "x" + std::to_string(test.height);
+    return v;
+  }
+  const ImageModel m = image_model(stage);
+  v.model = m.name;
+  v.bound = m.bound_text;
+  const int ch = std::min(ref.channels, test.channels);
+  double mean_abs = 0;
+  for (float x : ref.data) mean_abs += double(std::abs(x));
+  mean_abs /= std::max<size_t>(1, ref.data.size());
+  const std::vector<uint8_t> edge = edge_map(ref, edge_hint);
+  std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
+  std::vector<Offender> offenders;
+  double se = 0;
+  size_t interior_bad = 0, edge_bad = 0;
+  for (int y = 0; y < ref.height; ++y)
+    for (int x = 0; x < ref.width; ++x) {
+      double worst_ratio = 0;
+      float worst_err = 0, worst_bound = 0;
+      for (int c = 0; c < ch; ++c) {
+        const double r = ref.at(x, y, c), t = test.at(x, y, c), d = std::abs(t - r);
+        const double bound = m.abs + m.rel * std::abs(r) + m.abs_of_mean * mean_abs;
+        se += d * d;
+        v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
+        const double ratio = std::isfinite(d) ? d / std::max(bound, 1e-30) : 1e30;
+        if (ratio > worst_ratio) worst_ratio = ratio, worst_err = float(d), worst_bound = float(bound);
+      }
+      ++v.checked;
+      if (worst_ratio <= 1.0) continue;
+      const size_t i = size_t(y) * size_t(ref.width) + size_t(x);
+      ++v.out_of_bound;
+      if (edge[i]) ++edge_bad, state[i] = 1;
+      else ++interior_bad, state[i] = 2;
+      offenders.push_back(pixel_offender(ref, test, x, y, worst_err, worst_bound));
+    }
+  v.allowed = edge_bad;
+  v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
+  const double n = double(std::max<size_t>(1, v.checked));
+  const double fe = double(edge_bad) / n, fi = double(interior_bad) / n;
+  if (fi > m.interior_fraction || fe > m.edge_fraction) v.verdict = Verdict::Fail;
+  else if (v.out_of_bound > 0) v.verdict = Verdict::Warn;
+  else v.verdict = Verdict::Pass;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%.3f%% at edges, %.3f%% interior)", v.out_of_bound,
+                v.checked, 100 * fe, 100 * fi);
+  v.note = buf;
+  v.extra = {{"edge_fraction", fe}, {"interior_fraction", fi}, {"mean_abs_reference", mean_abs}};
+  keep_worst(offenders, opt.worst_n);
+  v.worst = std::move(offenders);
+  write_image_mask(opt, v, ref, state);
+  return v;
+}
+
+StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
+                                  const CompareOptions& opt) {
+  StageVerdict v;
+  v.stage = stage;
+  v.model = "volume-abs-rel";
+  char b[120];
+  std::snprintf(b, sizeof b, "|d| <= %.3g + %.3g |ref|", abs, rel);
+  v.bound = b;
+  if (!same_size(ref, test)) {
+    v.verdict = Verdict::Fail;
+    v.note = "volume sizes differ";
+    return v;
+  }
+  Volume mask(ref.nx, ref.ny, ref.nz, 1);
+  std::vector<Offender> offenders;
+  const int ch = std::min(ref.channels, test.channels);
+  double se = 0;
+  for (size_t i = 0; i < ref.voxel_count(); ++i) {
+    double worst_ratio = 0;
+    float we = 0, wb = 0;
+    for (int c = 0; c < ch; ++c) {
+      const double r = ref.data[i * size_t(ref.channels) + size_t(c)], t = test.data[i * size_t(test.channels) + size_t(c)];
+      const double d = std::abs(t - r), bound = abs + rel * std::abs(r);
+      se += d * d;
+      v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
+      const double ratio = std::isfinite(d) ? d / std::max(bound, 1e-30) : 1e30;
+      if (ratio > worst_ratio) worst_ratio = ratio, we = float(d), wb = float(bound);
+    }
+    ++v.checked;
+    if (worst_ratio <= 1.0) continue;
+    ++v.out_of_bound;
+    mask.data[i] = 1.0f;
+    int x, y, z;
+    xyz_of(ref, i, x, y, z);
+    offenders.push_back(voxel_offender(ref, test, x, y, z, we, wb));
+  }
+  v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
+  v.verdict = v.out_of_bound ? Verdict::Fail : Verdict::Pass;
+  v.note = std::to_string(v.out_of_bound) + " of " + std::to_string(v.checked) + " voxels beyond the bound";
+  keep_worst(offenders, opt.worst_n);
+  v.worst = std::move(offenders);
+  write_volume_mask(opt, v, mask);
+  return v;
+}
+
+namespace {
+
+StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
+  const Volume& ref = rs.volumes.at("voxel.radiance");
+  const Volume& test = ts.volumes.at("voxel.radiance");
+  StageVerdict v;
+  v.stage = "voxel.occupancy";
+  if (!same_size(ref, test)) {
+    v.verdict = Verdict::Fail;
+    v.note = "grid sizes differ: " + std::to_string(ref.nx) + " vs " + std::to_string(test.nx);
+    return v;
+  }
+  // If the reference voxelized conservatively, the GPU's sample rule must give a SUBSET of it
+  // (every covered sample lies on the triangle inside its voxel); missing voxels are holes.
+  const bool conservative_ref = rs.settings.is_object() && rs.settings.value("voxelizer", "") == "conservative";
+  v.model = conservative_ref ? "subset-of-conservative" : "gpu-rule-exact";
+  v.bound = conservative_ref ? "no voxel outside the conservative set; missing voxels are holes (warn)"
+                             : "exact: any missing or extra voxel fails";
+  const auto ro = occupancy(ref), to = occupancy(test);
+  Volume mask(ref.nx, ref.ny, ref.nz, 1);
+  std::vector<Offender> offenders;
+  size_t missing_n = 0, extra_n = 0, occupied = 0;
+  for (size_t i = 0; i < ro.size(); ++i) {
+    occupied += ro[i];
+    if (ro[i] == to[i]) continue;
+    int x, y, z;
+    xyz_of(ref, i, x, y, z);
+    (ro[i] ? missing_n : extra_n)++;
+    mask.data[i] = ro[i] ? 1.0f : 0.5f;  // white = missing in test, grey = extra in test
+    offenders.push_back(voxel_offender(ref, test, x, y, z, 1.0f, 0.0f));
+  }
+  v.checked = ro.size();
+  v.out_of_bound = missing_n + extra_n;
+  v.max_abs = v.out_of_bound ? 1.0 : 0.0;
+  if (conservative_ref) {
+    v.allowed = missing_n;
+    v.verdict = extra_n ? Verdict::Fail : missing_n ? Verdict::Warn : Verdict::Pass;
+  } else {
+    v.verdict = v.out_of_bound ? Verdict::Fail : Verdict::Pass;
+  }
+  v.note = std::to_string(occupied) + " occupied in the reference; " + std::to_string(missing_n) + " missing, " +
+           std::to_string(extra_n) + " extra in " + ts.backend;
+  v.extra = {{"occupied_reference", occupied}, {"missing", missing_n}, {"extra", extra_n}};
+  keep_worst(offenders, opt.worst_n);
+  v.worst = std::move(offenders);
+  write_volume_mask(opt, v, mask);
+  return v;
+}
+
+StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
+  StageVerdict v;
+  v.stage = "voxel.holes";
+  v.model = "conservative-holes-reported";
+  v.bound = "reported, never failed: holes are a property of sample-based voxelization";
+  const Volume* cons = rs.volumes.count("voxel.conservative") ? &rs.volumes.at("voxel.conservative") : nullptr;
+  if (!cons) cons = ts.volumes.count("voxel.conservative") ? &ts.volumes.at("voxel.conservative") : nullptr;
+  if (!cons || !ts.volumes.count("voxel.radiance")) return missing(v.stage, "no conservative occupancy or no test voxels");
+  const Volume& test = ts.volumes.at("voxel.radiance");
+  if (!same_size(*cons, test)) return missing(v.stage, "conservative and test grids differ in size");
+  const auto to = occupancy(test);
+  Volume mask(test.nx, test.ny, test.nz, 1);
+  size_t holes = 0, cons_n = 0;
+  for (size_t i = 0; i < to.size(); ++i) {
+    const bool c = cons->data[i * size_t(cons->channels)] > 0.0f;
+    cons_n += c;
+    if (c && !to[i]) ++holes, mask.data[i] = 1.0f;
+  }
+  v.checked = cons_n;
+  v.out_of_bound = holes;
+  v.allowed = holes;
+  v.verdict = Verdict::Pass;
+  char b[160];
+  std::snprintf(b, sizeof b, "%zu holes: %.2f%% of the %zu conservatively covered voxels are not occupied in %s", holes,
+                cons_n ? 100.0 * double(holes) / double(cons_n) : 0.0, cons_n, ts.backend.c_str());
+  v.note = b;
+  v.extra = {{"holes", holes}, {"conservative_voxels", cons_n}};
+  write_volume_mask(opt, v, mask);
+  return v;
+}
+
+StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
+  const Volume& ref = rs.volumes.at("voxel.radiance");
+  const Volume& test = ts.volumes.at("voxel.radiance");
+  StageVerdict v;
+  v.stage = "voxel.radiance";
+  if (!same_size(ref, test)) {
+    v.verdict = Verdict::Fail;
+    v.note = "grid sizes differ";
+    return v;
+  }
+  const VoxelModel m = voxel_model(ts.storage, ts.reduction);
+  v.model = m.name;
+  v.bound = m.bound_text;
+  const Volume* lo = rs.volumes.count("voxel.cas_lo") ? &rs.volumes.at("voxel.cas_lo") : nullptr;
+  const Volume* hi = rs.volumes.count("voxel.cas_hi") ? &rs.volumes.at("voxel.cas_hi") : nullptr;
+  const bool interval = m.cas_interval && lo && hi && same_size(*lo, ref) && same_size(*hi, ref);
+  if (m.cas_interval && !interval) v.note = "no cas_lo/cas_hi in the reference: judged with +-1/255 only; ";
+  const Volume* frags = rs.volumes.count("voxel.fragments") ? &rs.volumes.at("voxel.fragments") : nullptr;
+  const auto ro = occupancy(ref), to = occupancy(test);
+  Volume mask(ref.nx, ref.ny, ref.nz, 1);
+  std::vector<Offender> offenders;
+  const int ch = std::min(ref.channels, test.channels);
+  double se = 0;
+  for (size_t i = 0; i < ro.size(); ++i) {
+    if (!ro[i] || !to[i]) continue;  // occupancy is judged in its own stage
+    const double n = frags ? std::max(1.0, double(frags->data[i * size_t(frags->channels)])) : 8.0;
+    double worst_ratio = 0;
+    float we = 0, wb = 0;
+    for (int c = 0; c < ch; ++c) {
+      const size_t k = i * size_t(ref.channels) + size_t(c);
+      const double r = ref.data[k], t = test.data[i * size_t(test.channels) + size_t(c)];
+      double d = std::abs(t - r), bound = m.abs + m.rel * std::abs(r) + n * m.per_fragment_rel * std::abs(r);
+      if (interval) {
+        const double l = double(lo->data[k]) - m.abs, h = double(hi->data[k]) + m.abs;
+        d = t < l ? l - t : t > h ? t - h : 0.0;
+        bound = m.abs;
+      } else if (m.name == "rgba16f-ulp") {
+        bound = 2.0 * half_ulp(r) + n * m.per_fragment_rel * std::abs(r);
+      }
+      se += (t - r) * (t - r);
+      v.max_abs = std::max(v.max_abs, std::abs(t - r));
+      const double ratio = !std::isfinite(d) ? 1e30 : bound > 0 ? d / bound : (d > 0 ? 1e30 : 0.0);
+      if (ratio > worst_ratio) worst_ratio = ratio, we = float(std::abs(t - r)), wb = float(bound);
+    }
+    ++v.checked;
+    if (worst_ratio <= 1.0) continue;
+    ++v.out_of_bound;
+    mask.data[i] = 1.0f;
+    int x, y, z;
+    xyz_of(ref, i, x, y, z);
+    offenders.push_back(voxel_offender(ref, test, x, y, z, we, wb));
+  }
+  v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
+  v.verdict = v.out_of_bound ? Verdict::Fail : Verdict::Pass;
+  v.note += std::to_string(v.out_of_bound) + " of " + std::to_string(v.checked) + " voxels (occupied in both) beyond the bound";
+  keep_worst(offenders, opt.worst_n);
+  v.worst = std::move(offenders);
+  write_volume_mask(opt, v, mask);
+  return v;
+}
+
+StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
+  // stage = mip.<dir>.<level>
+  const size_t dot = stage.rfind('.');
+  const int level = std::atoi(stage.c_str() + dot + 1);
+  const bool aniso = stage.rfind("mip.iso.", 0) != 0;
+  const VoxelModel base = voxel_model(ts.storage, ts.reduction);
+  double cas_width = 0.0;
+  if (base.cas_interval && rs.volumes.count("voxel.cas_lo") && rs.volumes.count("voxel.cas_hi")) {
+    const auto& lo = rs.volumes.at("voxel.cas_lo").data;
+    const auto& hi = rs.volumes.at("voxel.cas_hi").data;
+    for (size_t i = 0; i < lo.size() && i < hi.size(); ++i) cas_width = std::max(cas_width, double(hi[i] - lo[i]));
+  }
+  const MipBound b = mip_bound(base, ts.storage, level, aniso, cas_width);
+  StageVerdict v = compare_volume_plain(stage, rs.volumes.at(stage), ts.volumes.at(stage), b.abs, b.rel, opt);
+  v.model = std::string(aniso ? "aniso" : "iso") + "-mip-propagated(" + base.name + ")";
+  // Opacity is a coverage fraction: outside [0, 1] is wrong whatever the reference says.
+  const Volume& t = ts.volumes.at(stage);
+  size_t bad_alpha = 0;
+  if (t.channels >= 4)
+    for (size_t i = 0; i < t.voxel_count(); ++i) {
+      const float a = t.data[i * size_t(t.channels) + 3];
+      if (a > 1.0f + 1e-3f || a < -1e-3f) ++bad_alpha;
+    }
+  if (bad_alpha) {
+    v.verdict = Verdict::Fail;
+    v.note += "; " + std::to_string(bad_alpha) + " voxels with opacity outside [0,1] (alpha not clamped?)";
+  }
+  v.extra["alpha_out_of_range"] = bad_alpha;
+  v.extra["level"] = level;
+  return v;
+}
+
+}  // namespace
+
+Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
+  Report rep;
+  const Image* depth_hint = rs.images.count("gbuffer.depth") ? &rs.images.at("gbuffer.depth") : nullptr;
+  for (const std::string& stage : pipeline_order(rs, ts)) {
+    const bool r_has = rs.has(stage), t_has = ts.has(stage);
+    if (stage == "voxel.occupancy" || stage == "voxel.radiance") {
+      if (!rs.volumes.count("voxel.radiance") || !ts.volumes.count("voxel.radiance"))
+        rep.stages.push_back(missing(stage, "voxel radiance missing on one side"));
+      else
+        rep.stages.push_back(stage == "voxel.occupancy" ? compare_occupancy(rs, ts, opt) : compare_radiance(rs, ts, opt));
+      continue;
+    }
+    if (stage == "voxel.holes") {
+      rep.stages.push_back(compare_holes(rs, ts, opt));
+      continue;
+    }
+    if (!r_has || !t_has) {
+      rep.stages.push_back(missing(stage, std::string("not produced by ") + (r_has ? ts.backend : rs.backend)));
+      continue;
+    }
+    if (rs.images.count(stage)) {
+      const bool shadow = stage.rfind("shadow_map", 0) == 0;
+      rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
+                                               shadow ? nullptr : depth_hint, opt));
+    } else if (stage.rfind("mip.", 0) == 0) {
+      rep.stages.push_back(compare_mip(stage, rs, ts, opt));
+    } else {
+      rep.stages.push_back(compare_volume_plain(stage, rs.volumes.at(stage), ts.volumes.at(stage), 1e-6, 1e-5, opt));
+    }
+  }
+  return rep;
+}
+
+}  // namespace vct::cmp

@@ -1,0 +1,28 @@
+// GPU (or external) stage outputs against the CPU reference, stage by stage, with the tolerance
+// models of tolerance.h; error masks written beside the run (docs/compare.md).
+#pragma once
+
+#include <string>
+
+#include "compare/stage_set.h"
+#include "compare/verdict.h"
+
+namespace vct::cmp {
+
+struct CompareOptions {
+  size_t worst_n = 10;
+  std::string mask_dir;     // absolute/relative directory for mask PNGs ("" = no masks)
+  std::string mask_prefix;  // how masks are named in the verdicts (relative to the run dir)
+};
+
+Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});
+
+/// One image stage (also used for two bare images): `stage` selects the model.
+StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
+                                 const Image* edge_hint, const CompareOptions& opt);
+
+/// Two bare volumes, element-wise with abs/rel bound (vct compare A.nrrd B.nrrd).
+StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs,
+                                  double rel, const CompareOptions& opt);
+
+}  // namespace vct::cmp

@@ -1,0 +1,51 @@
+// A set of named stage outputs (images and volumes) from one renderer: ours (built from a
+// FrameResult) or anyone's (read from a vct-stages.json manifest, docs/external_format.md).
+// Comparisons work on stage sets only, so an external GPU run is judged exactly like our GL run.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/image.h"
+#include "core/settings.h"
+#include "core/volume.h"
+#include "stages/stage_types.h"
+
+namespace vct::cmp {
+
+struct StageSet {
+  std::string backend;                  // "ref", "gl", or whatever the manifest says
+  std::map<std::string, Image> images;  // "shadow_map.0", "gbuffer.normal", "image.final", ...
+  std::map<std::string, Volume> volumes;  // "voxel.radiance", "mip.iso.1", "mip.posx.1", ...
+  // How the voxels were stored and reduced (selects the voxel radiance tolerance model):
+  // storage "rgba8" | "rgba16f" | "rgba32f"; reduction "exact_mean" | "fixed_point" | "cas_rgba8".
+  std::string storage = "rgba32f", reduction = "exact_mean";
+  nlohmann::json settings = nlohmann::json::object();  // free-form, copied from the manifest
+  nlohmann::json info = nlohmann::json::object();      // e.g. GL_RENDERER
+  std::string root;  // directory the files live in (empty when built in memory)
+  std::map<std::string, std::string> files;  // stage -> file relative to root (PNG preview beside)
+
+  bool has(const std::string& stage) const { return images.count(stage) || volumes.count(stage); }
+};
+
+/// Every stage of one frame under its canonical name (docs/external_format.md lists them).
+StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s);
+
+/// Writes every stage (EXR / NRRD + PNG previews) and `dir`/vct-stages.json; fills set.root/files.
+void write_stage_set(const std::string& dir, StageSet& set);
+
+/// Reads a directory holding vct-stages.json (or the manifest file itself). Throws InputError
+/// naming the file and the problem.
+StageSet read_stage_set(const std::string& path);
+
+/// Canonical pipeline order of stage names present in either set (first failing stage = first
+/// in this order).
+std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b);
+
+std::string storage_name(VoxelStorage s);
+std::string reduction_name(Reduction r);
+
+}  // namespace vct::cmp

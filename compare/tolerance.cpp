@@ -1,0 +1,83 @@
+#include "tolerance.h"
+
+#include <cmath>
+
+namespace vct::cmp {
+
+double half_ulp(double v) {
+  v = std::abs(v);
+  if (v < std::ldexp(1.0, -14)) return std::ldexp(1.0, -24);
+  return std::ldexp(1.0, int(std::floor(std::log2(v))) - 10);
+}
+
+ImageModel image_model(const std::string& stage) {
+  ImageModel m;
+  if (stage.rfind("shadow_map", 0) == 0 || stage == "gbuffer.depth") {
+    // D32F: both sides interpolate window z in float; the spec does not fix the barycentric
+    // arithmetic, so allow 2^-16 (1.5e-5), 1/32 of the default constant shadow bias (5e-4): a
+    // difference inside the bound cannot flip a shadow test except at exact ties.
+    m = {"d32f-depth", std::ldexp(1.0, -16), 0.0, 0.0, 0.005, 0.0,
+         "|dz| <= 2^-16; edge texels (coverage ties, top-left rule) up to 0.5% -> warn"};
+  } else if (stage == "gbuffer.coverage") {
+    m = {"coverage-exact", 0.0, 0.0, 0.0, 0.005, 0.0, "exact; edge pixels (fill-rule ties) up to 0.5% -> warn"};
+  } else if (stage == "gbuffer.position") {
+    m = {"interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, 0.005, 0.0,
+         "|d| <= 1e-4 + 2^-12 |ref| (perspective-correct interpolation in float); edges up to 0.5%"};
+  } else if (stage.rfind("gbuffer.", 0) == 0) {
+    // Textured attributes: bilinear/trilinear weights with 8 sub-texel bits (D3D11 7.18.16.1,
+    // dEQP LookupPrecision) and an 8-bit mip blend: |d| <= (2+1)*2^-9*range + 8-bit texel step.
+    m = {"texture-8bit-weights", std::ldexp(1.0, -7), std::ldexp(1.0, -7), 0.0, 0.005, 0.0,
+         "|d| <= 2^-7 + 2^-7 |ref| (8-bit sub-texel + LOD weights); edges up to 0.5%"};
+  } else if (stage == "image.direct" || stage == "image.emission") {
+    // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
+    // ties flip at shadow edges.
+    m = {"shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), 0.01, 0.001,
+         "|d| <= 2^-6 |ref| + 2^-10 mean|ref| (G-buffer bound through the BRDF); shadow/silhouette edges up to 1%"};
+  } else if (stage == "image.soft_shadow") {
+    m = {"cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, 0.01, 0.001,
+         "|d| <= 2^-5 (8-bit weights over the cone's samples); edges up to 1%"};
+  } else {
+    // Cone-traced images: each fetch has weights with 8 sub-texel bits per axis plus an 8-bit
+    // LOD fraction: per fetch error <= 4 * 2^-9 = 2^-7 of the local texel maximum; the front-to-
+    // back sum weights fetches by (1-a) <= 1, so with a local max/mean contrast up to 4 the
+    // image bound is 2^-5 |ref|, plus 2^-8 of the image mean for near-black pixels.
+    m = {"filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), 0.01, 0.001,
+         "|d| <= 2^-5 |ref| + 2^-8 mean|ref| (8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1); edges up to 1%"};
+  }
+  return m;
+}
+
+VoxelModel voxel_model(const std::string& storage, const std::string& reduction) {
+  VoxelModel m;
+  if (reduction == "fixed_point") {
+    m = {"fixed-point-exact", 0.0, 0.0, 0.0, false,
+         "exact: integer sums are order-independent and both sides convert with the same rounding"};
+  } else if (reduction == "cas_rgba8") {
+    m = {"cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, true,
+         "within the reference's [cas_lo, cas_hi] (any fragment order) +- 1/255"};
+  } else if (storage == "rgba8") {
+    m = {"rgba8-quantised", 1.0 / 255.0, 0.0, 0.0, false, "|d| <= 1/255 (8-bit UNORM: rounding vs truncation)"};
+  } else if (storage == "rgba16f") {
+    m = {"rgba16f-ulp", 0.0, std::ldexp(1.0, -9), std::ldexp(1.0, -23), false,
+         "|d| <= 2 half-ulp(ref) + n_frag * 2^-23 |ref| (float atomics sum in any order, stored as binary16)"};
+  } else {
+    m = {"rgba32f-sum", 1e-7, 0.0, std::ldexp(1.0, -23), false, "|d| <= n_frag * 2^-23 |ref| (float sum order)"};
+  }
+  return m;
+}
+
+MipBound mip_bound(const VoxelModel& base, const std::string& storage, int level, bool anisotropic, double cas_width) {
+  MipBound b{base.abs + cas_width, base.rel + 2.0 * base.per_fragment_rel * 8.0};
+  double q_abs = 0.0, q_rel = 0.0;  // one storage rounding per level (any rounding mode)
+  if (storage == "rgba8") q_abs = 1.0 / 255.0;
+  else if (storage == "rgba16f") q_rel = std::ldexp(1.0, -10), q_abs = std::ldexp(1.0, -24);
+  else q_rel = std::ldexp(1.0, -22);
+  for (int l = 1; l <= level; ++l) {
+    const double grow = anisotropic ? 2.0 : 1.0;
+    b.abs = grow * b.abs + q_abs;
+    b.rel = grow * b.rel + q_rel;
+  }
+  return b;
+}
+
+}  // namespace vct::cmp

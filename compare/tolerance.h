@@ -1,0 +1,49 @@
+// Tolerance models per stage (docs/compare.md gives each bound with its source). A model is a
+// per-element bound |test - ref| <= abs + rel * |ref| plus the rule for rasterisation ties.
+#pragma once
+
+#include <string>
+
+#include "compare/stage_set.h"
+
+namespace vct::cmp {
+
+struct ImageModel {
+  std::string name;     // e.g. "d32f-depth"
+  double abs = 0.0;     // absolute part of the bound
+  double rel = 0.0;     // relative part (times |reference|)
+  double abs_of_mean = 0.0;  // extra absolute part, times mean |reference| (scale of the image)
+  // Pixels beyond the bound are tolerated where rasterisation may legitimately differ (coverage
+  // and shadow-test ties at edges): at most this fraction of all pixels -> warn, more -> fail.
+  double edge_fraction = 0.0;
+  // Beyond-bound pixels away from edges: up to this fraction -> warn, more -> fail.
+  double interior_fraction = 0.0;
+  std::string bound_text;  // for run.json / the report
+};
+
+ImageModel image_model(const std::string& stage);
+
+/// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.
+struct VoxelModel {
+  std::string name;  // "fixed-point-exact", "cas-rgba8-interval", "rgba8-quantised", "rgba16f-ulp", "rgba32f-sum"
+  double abs = 0.0, rel = 0.0;
+  double per_fragment_rel = 0.0;  // float summation order: n * 2^-23 * |ref|
+  bool cas_interval = false;      // use the reference's [cas_lo, cas_hi] +- abs
+  std::string bound_text;
+};
+
+VoxelModel voxel_model(const std::string& storage, const std::string& reduction);
+
+/// Bound for mip level `level` (>= 1), propagated from the base model: the box filter is an
+/// average of non-negative values, so an abs+rel bound passes through unchanged and each level
+/// adds one storage rounding; anisotropic compositing can at most double the bound per level.
+struct MipBound {
+  double abs = 0.0, rel = 0.0;
+};
+MipBound mip_bound(const VoxelModel& base, const std::string& storage, int level, bool anisotropic,
+                   double cas_width = 0.0);
+
+/// Half-float spacing at |v| (ulp of IEEE binary16; subnormal spacing 2^-24 below 2^-14).
+double half_ulp(double v);
+
+}  // namespace vct::cmp
