@@ -1,0 +1,28 @@
+// Direct lighting from the spot lights: Cook–Torrance and the spot falloff from the shared header
+// (vct::sh), visibility from the PCF shadow maps.
+#pragma once
+
+#include <vector>
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "scene/surface.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+/// Radiance leaving `p` toward `view_dir` (unit, from p toward the viewer) from all spot lights:
+/// sum over lights of f(l, v) * E(light) * max(n.l, 0) * shadow_visibility.
+vec3 direct_radiance(const Scene& scene, const std::vector<ShadowMap>& maps, const VctSettings& settings, const vec3& p,
+                     const vec3& n, const vec3& view_dir, const SurfaceMaterial& m);
+
+/// Lambertian outgoing radiance albedo * E / pi with E the shadowed irradiance (n.l included):
+/// what voxel injection stores (the seed injects diffuse light only).
+vec3 diffuse_outgoing_radiance(const Scene& scene, const std::vector<ShadowMap>& maps, const VctSettings& settings,
+                               const vec3& p, const vec3& n, const vec3& albedo);
+
+/// direct_radiance at every covered G-buffer pixel (0 elsewhere); emission is not included.
+Image shade_direct(const Scene& scene, const GBuffer& g, const std::vector<ShadowMap>& maps,
+                   const VctSettings& settings);
+
+}  // namespace vct

@@ -1,0 +1,60 @@
+#include "stages/gbuffer.h"
+
+#include "core/parallel.h"
+#include "scene/surface.h"
+#include "stages/raster.h"
+
+namespace vct {
+
+namespace {
+GBuffer make_gbuffer(int w, int h) {
+  GBuffer g;
+  g.position = Image(w, h, 3);
+  g.position.channel_names = {"X", "Y", "Z"};
+  g.normal = Image(w, h, 3);
+  g.normal.channel_names = {"X", "Y", "Z"};
+  g.albedo = Image(w, h, 3);
+  g.albedo.channel_names = {"R", "G", "B"};
+  g.material = Image(w, h, 4);
+  g.material.channel_names = {"metallic", "roughness", "specular", "unused"};
+  g.specular_color = Image(w, h, 3);
+  g.specular_color.channel_names = {"R", "G", "B"};
+  g.emission = Image(w, h, 3);
+  g.emission.channel_names = {"R", "G", "B"};
+  g.depth = Image(w, h, 1, 1.0f);
+  g.depth.channel_names = {"Z"};
+  g.coverage = Image(w, h, 1);
+  g.coverage.channel_names = {"Y"};
+  return g;
+}
+}  // namespace
+
+GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
+  const int w = settings.width, h = settings.height;
+  const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
+  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  GBuffer g = make_gbuffer(w, h);
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = vb.index(x, row);
+      if (vb.triangle[i] < 0) continue;
+      const SurfacePoint sp = interpolate_surface(scene, uint32_t(vb.triangle[i]), vb.bary[i].y, vb.bary[i].z);
+      const SurfaceMaterial m = evaluate_material(scene, sp);
+      const vec3 n = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
+      g.position.set_rgb(x, row, sp.position);
+      g.normal.set_rgb(x, row, n);
+      g.albedo.set_rgb(x, row, m.albedo);
+      float* mat = g.material.pixel(x, row);
+      mat[0] = m.metallic;
+      mat[1] = m.roughness;
+      mat[2] = m.specular_factor;
+      g.specular_color.set_rgb(x, row, m.specular_color);
+      g.emission.set_rgb(x, row, m.emission);
+      g.depth.at(x, row, 0) = vb.depth[i];
+      g.coverage.at(x, row, 0) = 1.0f;
+    }
+  });
+  return g;
+}
+
+}  // namespace vct

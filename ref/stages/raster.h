@@ -1,0 +1,123 @@
+// The software rasterizer behind the shadow maps, the G-buffer and the GPU-rule voxelizer. It is a
+// plain implementation of the GL rules (docs/pipeline.md, "Raster conventions"):
+//  - window coordinates with the origin at the lower-left, y up; pixel (x, y) covers
+//    [x, x+1) x [y, y+1) and its centre is (x+0.5, y+0.5);
+//  - vertices snapped to 1/256 pixel (8 sub-pixel bits, as llvmpipe) and edge functions evaluated
+//    exactly in 64-bit integers, so a sample on a shared edge is covered by exactly one triangle;
+//  - the top-left fill rule stated in y-up window coordinates: a sample exactly on an edge is
+//    covered if the edge is a left edge (interior to its right) or a top edge (horizontal,
+//    interior below it);
+//  - perspective-correct barycentrics at the pixel centre, window depth z_w = z_ndc/2 + 1/2
+//    interpolated linearly in screen space (GL: depth is not perspective-divided again);
+//  - clipping against the near and far planes always, and against x/y only for vertices beyond a
+//    guard band (GL allows either; inside the guard band no clipping changes coverage).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+
+namespace vct {
+
+constexpr int kSubpixelBits = 8;
+constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
+
+/// A triangle after clipping, projection and snapping, ready to be scanned. The vertex order is
+/// made counter-clockwise in window space (area > 0); `front_facing` remembers the original
+/// winding (GL's default glFrontFace(GL_CCW)).
+struct RasterTriangle {
+  int64_t x[3], y[3];   // window coordinates in 1/256 pixel, y up
+  double z[3];          // window depth in [0,1]
+  double inv_w[3];      // 1/w_clip of each vertex (perspective correction)
+  vec3 bary[3];         // barycentrics of each vertex w.r.t. the source triangle (clipping)
+  int64_t area2;        // twice the signed area in fixed-point units squared (> 0)
+  bool front_facing = true;
+  int xmin = 0, xmax = -1, ymin = 0, ymax = -1;  // pixel bounding box, clamped to the viewport
+  uint32_t source = 0;  // index of the source triangle
+};
+
+/// What the scanner reports for one pixel: which samples are covered and the interpolated values
+/// at the pixel centre (GL evaluates non-centroid inputs at the centre even when the centre itself
+/// is not covered, i.e. extrapolates; depth at the centre as well).
+struct RasterFragment {
+  int x = 0, y = 0;        // window pixel, y up
+  uint32_t coverage = 0;   // bit s = sample s covered
+  float depth = 0.0f;      // window depth at the pixel centre, clamped to [0,1]
+  vec3 bary{0.0f};         // perspective-correct barycentrics (b0, b1, b2) of the source triangle
+};
+
+/// Sample positions of a pixel, offsets in [0,1)^2 from its lower-left corner (y up): 1 sample at
+/// the centre; 4 and 8 samples: the D3D11/Vulkan standard patterns (what llvmpipe and most GPUs
+/// report through GL_SAMPLE_POSITION). Throws std::invalid_argument for other counts.
+const std::vector<vec2>& standard_sample_positions(int samples);
+
+/// Clips the clip-space triangle, projects it into a width x height viewport and appends the
+/// resulting triangles (0 if culled/degenerate, more than 1 if clipping split it) to `out`.
+void setup_triangle(const vec4 clip[3], int width, int height, uint32_t source, std::vector<RasterTriangle>& out);
+
+/// Exact coverage of one sample offset (fixed point, relative to the pixel's lower-left corner).
+struct EdgeSetup {
+  int64_t a[3], b[3], c[3];  // e_i(px, py) = a_i*px + b_i*py + c_i, fixed point
+  int64_t bias[3];           // 0 for top/left edges, -1 otherwise (e + bias >= 0 covers)
+};
+EdgeSetup edge_setup(const RasterTriangle& t);
+
+/// Interpolates at the centre of pixel (x, y) (window coordinates), filling depth and bary.
+void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f);
+
+/// Calls emit(const RasterFragment&) for every pixel of [x0,x1]x[y0,y1] (inclusive, window
+/// coordinates) with at least one covered sample, in row-major order (y, then x).
+template <class Emit>
+void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0, int x1, int y0, int y1,
+               Emit&& emit) {
+  x0 = x0 > t.xmin ? x0 : t.xmin;
+  x1 = x1 < t.xmax ? x1 : t.xmax;
+  y0 = y0 > t.ymin ? y0 : t.ymin;
+  y1 = y1 < t.ymax ? y1 : t.ymax;
+  if (x0 > x1 || y0 > y1) return;
+  const EdgeSetup e = edge_setup(t);
+  int64_t sx[32], sy[32];
+  const int ns = int(samples.size());
+  for (int s = 0; s < ns; ++s) {
+    sx[s] = int64_t(samples[size_t(s)].x * float(kSubpixelScale));
+    sy[s] = int64_t(samples[size_t(s)].y * float(kSubpixelScale));
+  }
+  RasterFragment f;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      uint32_t mask = 0;
+      for (int s = 0; s < ns; ++s) {
+        const int64_t px = int64_t(x) * kSubpixelScale + sx[s], py = int64_t(y) * kSubpixelScale + sy[s];
+        bool in = true;
+        for (int i = 0; i < 3 && in; ++i) in = e.a[i] * px + e.b[i] * py + e.c[i] + e.bias[i] >= 0;
+        if (in) mask |= 1u << s;
+      }
+      if (!mask) continue;
+      f.x = x;
+      f.y = y;
+      f.coverage = mask;
+      interpolate_at_centre(t, e, x, y, f);
+      emit(static_cast<const RasterFragment&>(f));
+    }
+  }
+}
+
+/// The closest surface at each pixel centre of a width x height view (depth test GL_LESS, depth
+/// cleared to 1, no culling, triangles in index order), row 0 = top (image convention).
+struct VisibilityBuffer {
+  int width = 0, height = 0;
+  std::vector<float> depth;          // window depth, 1 where empty
+  std::vector<int32_t> triangle;     // source triangle, -1 where empty
+  std::vector<vec3> bary;            // perspective-correct barycentrics of that triangle
+  std::vector<uint8_t> front_facing; // 1 if the triangle is front facing (CCW in window space)
+  size_t index(int x, int row) const { return size_t(row) * size_t(width) + size_t(x); }
+};
+
+/// Rasterizes every triangle of `positions`/`triangles` (world space) through `view_proj`.
+/// Parallel over bands of rows; each band walks the triangles in index order, so the result does
+/// not depend on the thread count.
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
+                                   const mat4& view_proj, int width, int height);
+
+}  // namespace vct

@@ -1,0 +1,113 @@
+#include "stages/voxelize.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vct {
+
+glm::dvec3 to_voxel_space(const Scene& scene, int n, const vec3& world) {
+  return (glm::dvec3(world) - glm::dvec3(scene.volume.origin)) / double(scene.volume.size) * double(n);
+}
+
+int dominant_axis(const vec3& v0, const vec3& v1, const vec3& v2) {
+  const vec3 p = glm::abs(glm::cross(v1 - v0, v2 - v0));
+  if (p.z > p.x && p.z > p.y) return 2;
+  if (p.x > p.y) return 0;
+  return 1;
+}
+
+bool triangle_overlaps_voxel(const glm::dvec3 tri[3], const glm::dvec3& lo) {
+  const glm::dvec3 hi = lo + glm::dvec3(1.0);
+  const glm::dvec3 e[3] = {tri[1] - tri[0], tri[2] - tri[1], tri[0] - tri[2]};
+  glm::dvec3 axes[13] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, glm::cross(e[0], e[1])};
+  int count = 4;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) axes[count++] = glm::cross(glm::dvec3(i == 0, i == 1, i == 2), e[j]);
+  for (const glm::dvec3& a : axes) {
+    // Box [lo, hi): the projection's min is attained only if no component of a is negative
+    // (those pick hi, which the box excludes); likewise the max needs no positive component.
+    double bmin = 0.0, bmax = 0.0;
+    bool min_closed = true, max_closed = true;
+    for (int c = 0; c < 3; ++c) {
+      if (a[c] > 0.0) {
+        bmin += a[c] * lo[c];
+        bmax += a[c] * hi[c];
+        max_closed = false;
+      } else if (a[c] < 0.0) {
+        bmin += a[c] * hi[c];
+        bmax += a[c] * lo[c];
+        min_closed = false;
+      }
+    }
+    const double t0 = glm::dot(a, tri[0]), t1 = glm::dot(a, tri[1]), t2 = glm::dot(a, tri[2]);
+    const double tmin = std::min({t0, t1, t2}), tmax = std::max({t0, t1, t2});
+    if (tmax < bmin || (tmax == bmin && !min_closed)) return false;
+    if (tmin > bmax || (tmin == bmax && !max_closed)) return false;
+  }
+  return true;
+}
+
+glm::dvec2 closest_point_barycentrics(const glm::dvec3 tri[3], const glm::dvec3& p) {
+  const glm::dvec3 &a = tri[0], &b = tri[1], &c = tri[2];
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {0.0, 0.0};
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return {1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return {d1 / (d1 - d3), 0.0};
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return {0.0, d2 / (d2 - d6)};
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {1.0 - w, w};
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  return {vb * denom, vc * denom};
+}
+
+Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>& per_triangle) {
+  Voxelization v;
+  v.n = n;
+  size_t total = 0;
+  for (auto& f : per_triangle) total += f.size();
+  v.fragments.reserve(total);
+  for (auto& f : per_triangle) {
+    v.fragments.insert(v.fragments.end(), f.begin(), f.end());
+    std::vector<VoxelFragment>().swap(f);
+  }
+  const auto linear = [n](const ivec3& c) { return (int64_t(c.z) * n + c.y) * n + c.x; };
+  // Keys are unique (one fragment per triangle and voxel), so the order is total.
+  std::sort(v.fragments.begin(), v.fragments.end(), [&](const VoxelFragment& a, const VoxelFragment& b) {
+    const int64_t la = linear(a.voxel), lb = linear(b.voxel);
+    return la != lb ? la < lb : a.triangle < b.triangle;
+  });
+  v.occupancy = Volume(n, n, n, 1);
+  v.occupancy.channel_names = {"occupancy"};
+  for (const VoxelFragment& f : v.fragments) {
+    float& o = *v.occupancy.voxel(f.voxel.x, f.voxel.y, f.voxel.z);
+    if (o == 0.0f) ++v.covered;
+    o = 1.0f;
+  }
+  return v;
+}
+
+Voxelization voxelize(const Scene& scene, const VctSettings& settings) {
+  return settings.voxelizer == Voxelizer::Conservative ? voxelize_conservative(scene, settings.grid)
+                                                       : voxelize_gpu_rule(scene, settings.grid, settings.msaa_samples);
+}
+
+Volume hole_map(const Voxelization& conservative, const Voxelization& gpu) {
+  Volume h(conservative.n, conservative.n, conservative.n, 1);
+  h.channel_names = {"hole"};
+  for (size_t i = 0; i < h.data.size(); ++i)
+    h.data[i] = (conservative.occupancy.data[i] > 0.0f && gpu.occupancy.data[i] == 0.0f) ? 1.0f : 0.0f;
+  return h;
+}
+
+}  // namespace vct

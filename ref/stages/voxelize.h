@@ -1,0 +1,70 @@
+// Voxelization of the scene's triangles into the N^3 grid of scene.volume, two ways:
+//  (a) conservative: the exact set of voxels containing a point of the triangle (separating-axis
+//      triangle/box test against half-open voxel boxes);
+//  (b) the GPU's rule: dominant-axis projection as the seed's geometry shader, MSAA sample
+//      coverage with the standard patterns, depth along the axis from the interpolated position.
+// Comparing them gives the "holes" (voxels (a) has and (b) misses). docs/pipeline.md,
+// "Voxelization".
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "core/settings.h"
+#include "core/volume.h"
+#include "scene/scene.h"
+
+namespace vct {
+
+/// A surface sample that lands in one voxel: where light injection evaluates the surface.
+struct VoxelFragment {
+  ivec3 voxel{0};
+  vec3 position{0.0f};  // world position of the sample
+  vec3 normal{0.0f};    // interpolated vertex normal there (normal mapping happens at injection)
+  uint32_t triangle = 0;
+  float b1 = 0.0f, b2 = 0.0f;  // barycentrics of the sample (b0 = 1 - b1 - b2)
+};
+
+struct Voxelization {
+  int n = 0;
+  /// Sorted by (voxel linear index x + n*(y + n*z), triangle); at most one fragment per
+  /// (triangle, voxel) for both voxelizers.
+  std::vector<VoxelFragment> fragments;
+  Volume occupancy;  // 1 channel, 1 where at least one fragment, else 0
+  int64_t covered = 0;  // number of occupied voxels
+};
+
+/// Voxel-space coordinates: (world - origin) / size * n, so voxel i covers [i, i+1).
+glm::dvec3 to_voxel_space(const Scene& scene, int n, const vec3& world);
+
+/// Exact conservative voxelization; one fragment per (triangle, voxel) at the point of the
+/// triangle closest to the voxel centre.
+Voxelization voxelize_conservative(const Scene& scene, int n);
+
+/// The GPU rule with 1, 4 or 8 samples; one fragment per covered pixel (any sample), evaluated at
+/// the pixel centre as GL evaluates non-centroid inputs (extrapolated barycentrics allowed).
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples);
+
+/// The voxelizer settings.voxelizer selects, at settings.grid.
+Voxelization voxelize(const Scene& scene, const VctSettings& settings);
+
+/// 1 where `conservative` has a voxel and `gpu` does not (1 channel).
+Volume hole_map(const Voxelization& conservative, const Voxelization& gpu);
+
+/// Dominant axis of a triangle as the seed's geometry shader picks it from
+/// p = abs(cross(v1 - v0, v2 - v0)) in float: 2 (z) if p.z > p.x && p.z > p.y, else 0 (x) if
+/// p.x > p.y, else 1 (y). Ties therefore go z < x < y in priority order as written.
+int dominant_axis(const vec3& v0, const vec3& v1, const vec3& v2);
+
+/// Exact test: does the closed triangle (voxel-space coordinates) meet the half-open box
+/// [lo, lo+1)^3? Separating-axis theorem over 13 axes with open/closed interval ends.
+bool triangle_overlaps_voxel(const glm::dvec3 tri[3], const glm::dvec3& lo);
+
+/// Barycentrics (b1, b2) of the point of triangle `tri` closest to `p` (Ericson, RTCD 5.1.5).
+glm::dvec2 closest_point_barycentrics(const glm::dvec3 tri[3], const glm::dvec3& p);
+
+/// Sorts fragments, fills occupancy and the covered count.
+Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>& per_triangle);
+
+}  // namespace vct

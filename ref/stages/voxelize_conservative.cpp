@@ -1,0 +1,38 @@
+// (a) Exact conservative voxelization: every voxel whose half-open box contains a point of the
+// triangle, found by the separating-axis test over the triangle's voxel bounding box.
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "scene/surface.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+
+Voxelization voxelize_conservative(const Scene& scene, int n) {
+  std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
+  parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
+    const uvec3 t = scene.triangles[size_t(ti)];
+    const glm::dvec3 v[3] = {to_voxel_space(scene, n, scene.positions[t.x]), to_voxel_space(scene, n, scene.positions[t.y]),
+                             to_voxel_space(scene, n, scene.positions[t.z])};
+    const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
+    ivec3 a, b;
+    for (int c = 0; c < 3; ++c) {
+      a[c] = int(std::clamp(std::floor(lo[c]), 0.0, double(n - 1)));
+      b[c] = int(std::clamp(std::floor(hi[c]), 0.0, double(n - 1)));
+    }
+    auto& out = per_tri[size_t(ti)];
+    for (int z = a.z; z <= b.z; ++z)
+      for (int y = a.y; y <= b.y; ++y)
+        for (int x = a.x; x <= b.x; ++x) {
+          const glm::dvec3 corner(x, y, z);
+          if (!triangle_overlaps_voxel(v, corner)) continue;
+          const glm::dvec2 bc = closest_point_barycentrics(v, corner + glm::dvec3(0.5));
+          const SurfacePoint sp = interpolate_surface(scene, uint32_t(ti), float(bc.x), float(bc.y));
+          out.push_back({ivec3(x, y, z), sp.position, sp.normal, uint32_t(ti), float(bc.x), float(bc.y)});
+        }
+  });
+  return finish_voxelization(n, per_tri);
+}
+
+}  // namespace vct

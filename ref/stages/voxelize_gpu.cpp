@@ -1,0 +1,54 @@
+// (b) The GPU's voxelization rule, emulated: the seed's geometry shader projects each triangle
+// orthographically along its dominant axis into an n x n viewport; the rasterizer covers pixels
+// with the MSAA sample pattern; the fragment shader turns the interpolated position (evaluated at
+// the pixel centre) into the voxel along the axis with floor(), clamped to the grid.
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "scene/surface.h"
+#include "stages/raster.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+
+namespace {
+// Window axes (u, v) for each dominant axis, as the seed's gl_Position swizzles.
+constexpr int kProjU[3] = {1, 0, 0};  // x-dominant: (y, z); y-dominant: (x, z); z-dominant: (x, y)
+constexpr int kProjV[3] = {2, 2, 1};
+}  // namespace
+
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
+  const std::vector<vec2>& samples = standard_sample_positions(msaa_samples);
+  std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
+  parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
+    const uvec3 t = scene.triangles[size_t(ti)];
+    const vec3 w[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
+    const int axis = dominant_axis(w[0], w[1], w[2]);
+    const int pu = kProjU[axis], pv = kProjV[axis];
+    glm::dvec3 v[3];
+    vec4 clip[3];
+    for (int i = 0; i < 3; ++i) {
+      v[i] = to_voxel_space(scene, n, w[i]);
+      // Volume texture coordinates [0,1] -> clip [-1,1] (w = 1, orthographic).
+      clip[i] = vec4(float(v[i][pu] / n * 2.0 - 1.0), float(v[i][pv] / n * 2.0 - 1.0), 0.0f, 1.0f);
+    }
+    std::vector<RasterTriangle> rt;
+    setup_triangle(clip, n, n, uint32_t(ti), rt);
+    auto& out = per_tri[size_t(ti)];
+    for (const RasterTriangle& r : rt) {
+      rasterize(r, samples, 0, n - 1, 0, n - 1, [&](const RasterFragment& f) {
+        const double depth = double(f.bary.x) * v[0][axis] + double(f.bary.y) * v[1][axis] + double(f.bary.z) * v[2][axis];
+        ivec3 voxel;
+        voxel[pu] = f.x;
+        voxel[pv] = f.y;
+        voxel[axis] = int(std::clamp(std::floor(depth), 0.0, double(n - 1)));
+        const SurfacePoint sp = interpolate_surface(scene, uint32_t(ti), f.bary.y, f.bary.z);
+        out.push_back({voxel, sp.position, sp.normal, uint32_t(ti), f.bary.y, f.bary.z});
+      });
+    }
+  });
+  return finish_voxelization(n, per_tri);
+}
+
+}  // namespace vct
