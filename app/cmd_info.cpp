@@ -1,21 +1,207 @@
-// vct info SCENE: a summary of what the loader made of the file.
+// vct info [SCENE] [--json]: everything the loader made of a glTF file (no SCENE = the built-in
+// Cornell box): geometry counts, what was dropped or skipped and why, bounds and the voxel
+// volume, materials, textures, camera, spot lights and particle emitters.
+#include <cmath>
 #include <cstdio>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "core/error.h"
+#include "core/settings.h"
 #include "scene/gltf_loader.h"
 
 namespace vct::app {
+namespace {
+
+using nlohmann::json;
+
+json vec_json(const vec2& v) { return json::array({v.x, v.y}); }
+json vec_json(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+json vec_json(const vec4& v) { return json::array({v.x, v.y, v.z, v.w}); }
+
+json texture_ref_json(const TextureRef& r) {
+  if (!r.present()) return nullptr;
+  json j = {{"texture", r.texture}, {"texcoord", r.texcoord}};
+  if (!r.transform.is_identity()) {
+    j["transform"] = {{"offset", vec_json(r.transform.offset)},
+                      {"rotation", r.transform.rotation},
+                      {"scale", vec_json(r.transform.scale)}};
+  }
+  return j;
+}
+
+const char* wrap_name(Wrap w) {
+  return w == Wrap::Repeat ? "repeat" : (w == Wrap::ClampToEdge ? "clamp_to_edge" : "mirrored_repeat");
+}
+
+// The one description of a scene; the text output prints the same facts.
+json summary(const Scene& s) {
+  const int grid = VctSettings{}.grid;
+  json j;
+  j["source"] = s.source;
+  j["triangles"] = s.triangle_count();
+  j["vertices"] = s.positions.size();
+  j["has_uv1"] = !s.uv1.empty();
+  j["degenerate_triangles_dropped"] = s.stats.degenerate_triangles_dropped;
+  j["non_triangle_primitives_skipped"] = s.stats.non_triangle_primitives_skipped;
+  j["warnings"] = s.stats.warnings;
+  j["bounds"] = {{"min", vec_json(s.bounds.lo)}, {"max", vec_json(s.bounds.hi)}, {"extent", vec_json(s.bounds.extent())}};
+  j["volume"] = {{"origin", vec_json(s.volume.origin)},
+                 {"size", s.volume.size},
+                 {"overridden", s.volume.overridden},
+                 {"default_grid", grid},
+                 {"voxel_size_at_default_grid", s.volume.size / float(grid)}};
+  for (const Material& m : s.materials) {
+    j["materials"].push_back({{"name", m.name},
+                              {"base_color_factor", vec_json(m.base_color_factor)},
+                              {"base_color_texture", texture_ref_json(m.base_color_texture)},
+                              {"metallic", m.metallic_factor},
+                              {"roughness", m.roughness_factor},
+                              {"metallic_roughness_texture", texture_ref_json(m.metallic_roughness_texture)},
+                              {"normal_texture", texture_ref_json(m.normal_texture)},
+                              {"normal_scale", m.normal_scale},
+                              {"normal_two_channel", m.normal_two_channel},
+                              {"emissive_factor", vec_json(m.emissive_factor)},
+                              {"emissive_strength", m.emissive_strength},
+                              {"emissive_texture", texture_ref_json(m.emissive_texture)},
+                              {"specular_factor", m.specular_factor},
+                              {"specular_color_factor", vec_json(m.specular_color_factor)},
+                              {"double_sided", m.double_sided}});
+  }
+  j["textures"] = json::array();
+  for (const Texture& t : s.textures) {
+    j["textures"].push_back({{"name", t.name},
+                             {"width", t.width},
+                             {"height", t.height},
+                             {"wrap_s", wrap_name(t.wrap_s)},
+                             {"wrap_t", wrap_name(t.wrap_t)},
+                             {"mag_filter", t.mag_filter == Filter::Nearest ? "nearest" : "linear"}});
+  }
+  const Camera& c = s.camera;
+  j["camera"] = {{"from_file", c.from_file}, {"position", vec_json(c.position)}, {"forward", vec_json(c.forward)},
+                 {"up", vec_json(c.up)},     {"yfov", c.yfov},                  {"znear", c.znear},
+                 {"zfar", c.zfar}};
+  j["spot_lights"] = json::array();
+  for (const SpotLight& l : s.spot_lights) {
+    j["spot_lights"].push_back({{"name", l.name},
+                                {"position", vec_json(l.position)},
+                                {"direction", vec_json(l.direction)},
+                                {"color", vec_json(l.color)},
+                                {"intensity_cd", l.intensity},
+                                {"inner_cone_angle", l.inner_cone_angle},
+                                {"outer_cone_angle", l.outer_cone_angle},
+                                {"range", l.range}});
+  }
+  j["particle_emitters"] = json::array();
+  for (const ParticleEmitter& e : s.emitters) {
+    j["particle_emitters"].push_back({{"name", e.name},
+                                      {"origin", vec_json(e.origin)},
+                                      {"count", e.count},
+                                      {"lifetime", e.lifetime},
+                                      {"spawn_extent", vec_json(e.spawn_extent)},
+                                      {"velocity_min", vec_json(e.velocity_min)},
+                                      {"velocity_max", vec_json(e.velocity_max)},
+                                      {"acceleration", vec_json(e.acceleration)},
+                                      {"color_start", vec_json(e.color_start)},
+                                      {"color_end", vec_json(e.color_end)},
+                                      {"size_start", e.size_start},
+                                      {"size_end", e.size_end}});
+  }
+  return j;
+}
+
+std::string v3(const vec3& v) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", v.x, v.y, v.z); }
+
+std::string tex(const Scene& s, const TextureRef& r) {
+  if (!r.present()) return "";
+  std::string out = fmt::format(" [texture {} '{}', uv{}", r.texture, s.textures[size_t(r.texture)].name, r.texcoord);
+  if (!r.transform.is_identity()) {
+    out += fmt::format(", transform offset ({:.4g}, {:.4g}) rotation {:.4g} scale ({:.4g}, {:.4g})", r.transform.offset.x,
+                       r.transform.offset.y, r.transform.rotation, r.transform.scale.x, r.transform.scale.y);
+  }
+  return out + "]";
+}
+
+float deg(float radians) { return radians * 180.0f / kPi; }
+
+void print_text(const Scene& s) {
+  const int grid = VctSettings{}.grid;
+  fmt::print("scene: {}\n", s.source);
+  fmt::print("triangles: {}\nvertices: {}{}\n", s.triangle_count(), s.positions.size(), s.uv1.empty() ? "" : " (with TEXCOORD_1)");
+  fmt::print("degenerate triangles dropped: {}\nnon-triangle primitives skipped: {}\n",
+             s.stats.degenerate_triangles_dropped, s.stats.non_triangle_primitives_skipped);
+  fmt::print("warnings: {}\n", s.stats.warnings.size());
+  for (const auto& w : s.stats.warnings) fmt::print("  - {}\n", w);
+  fmt::print("bounds: min {} max {} extent {}\n", v3(s.bounds.lo), v3(s.bounds.hi), v3(s.bounds.extent()));
+  fmt::print("voxel volume: origin {} size {:.4g}{}; voxel {:.4g} at the default grid {}^3\n", v3(s.volume.origin),
+             s.volume.size, s.volume.overridden ? " (from the file's vct_volume)" : " (fit to bounds)",
+             s.volume.size / float(grid), grid);
+  fmt::print("materials: {}\n", s.materials.size());
+  for (size_t i = 0; i < s.materials.size(); ++i) {
+    const Material& m = s.materials[i];
+    const vec4& b = m.base_color_factor;
+    fmt::print("  {} '{}': base colour ({:.3g}, {:.3g}, {:.3g}, {:.3g}){}\n", i, m.name, b.x, b.y, b.z, b.w,
+               tex(s, m.base_color_texture));
+    fmt::print("      metallic {:.3g} roughness {:.3g}{}; specular {:.3g} colour {}{}{}\n", m.metallic_factor,
+               m.roughness_factor, tex(s, m.metallic_roughness_texture), m.specular_factor, v3(m.specular_color_factor),
+               m.specular_factor == 0.0f && m.metallic_factor == 0.0f ? " (Lambertian)" : "",
+               m.double_sided ? "; double sided" : "");
+    if (m.normal_texture.present()) {
+      fmt::print("      normal map{} scale {:.3g}{}\n", tex(s, m.normal_texture), m.normal_scale,
+                 m.normal_two_channel ? " (two-channel RG, z reconstructed)" : "");
+    }
+    if (m.is_emissive() || m.emissive_texture.present()) {
+      fmt::print("      emission {} = factor {} x strength {:.4g}{}\n", v3(m.emission()), v3(m.emissive_factor),
+                 m.emissive_strength, tex(s, m.emissive_texture));
+    }
+  }
+  fmt::print("textures: {}\n", s.textures.size());
+  for (size_t i = 0; i < s.textures.size(); ++i) {
+    const Texture& t = s.textures[i];
+    fmt::print("  {} '{}': {}x{} RGBA8, wrap {}/{}, {} filter\n", i, t.name, t.width, t.height, wrap_name(t.wrap_s),
+               wrap_name(t.wrap_t), t.mag_filter == Filter::Nearest ? "nearest" : "linear");
+  }
+  const Camera& c = s.camera;
+  fmt::print("camera ({}): position {} forward {} up {} yfov {:.4g} deg near {:.4g} far {:.4g}\n",
+             c.from_file ? "from file" : "default framing", v3(c.position), v3(c.forward), v3(c.up), deg(c.yfov), c.znear,
+             c.zfar);
+  fmt::print("spot lights: {}\n", s.spot_lights.size());
+  for (const SpotLight& l : s.spot_lights) {
+    fmt::print("  '{}': position {} direction {} colour {} intensity {:.4g} cd, cone inner {:.4g} outer {:.4g} deg{}\n",
+               l.name, v3(l.position), v3(l.direction), v3(l.color), l.intensity, deg(l.inner_cone_angle),
+               deg(l.outer_cone_angle), l.range > 0.0f ? fmt::format(", range {:.4g}", l.range) : "");
+  }
+  fmt::print("particle emitters: {}\n", s.emitters.size());
+  for (const ParticleEmitter& e : s.emitters) {
+    fmt::print("  '{}': origin {} count {} lifetime {:.3g} s, spawn half-extent {}, velocity {}..{}, "
+               "acceleration {}, colour {} -> {}, size {:.3g} -> {:.3g}\n",
+               e.name, v3(e.origin), e.count, e.lifetime, v3(e.spawn_extent), v3(e.velocity_min), v3(e.velocity_max),
+               v3(e.acceleration), v3(e.color_start), v3(e.color_end), e.size_start, e.size_end);
+  }
+}
+
+}  // namespace
 
 void register_info(CLI::App& app, int& exit_code) {
-  auto* scene_path = new std::string;  // lives as long as the process (CLI11 binds by reference)
+  struct Args {
+    std::string scene;
+    bool json = false;
+  };
+  auto* args = new Args;  // lives as long as the process (CLI11 binds by reference)
   CLI::App* cmd = app.add_subcommand("info", "Print a summary of a glTF scene (no SCENE = built-in default)");
-  cmd->add_option("scene", *scene_path, "glTF 2.0 file (.gltf or .glb)");
-  cmd->callback([scene_path, &exit_code]() {
-    const Scene scene = load_scene(*scene_path);
-    std::printf("scene: %s\ntriangles: %zu\nvertices: %zu\nmaterials: %zu\nspot lights: %zu\n",
-                scene.source.c_str(), scene.triangle_count(), scene.positions.size(), scene.materials.size(),
-                scene.spot_lights.size());
-    exit_code = 0;
+  cmd->add_option("scene", args->scene, "glTF 2.0 file (.gltf or .glb)");
+  cmd->add_flag("--json", args->json, "Print the summary as JSON");
+  cmd->callback([args, &exit_code]() {
+    const Scene scene = load_scene(args->scene);
+    if (args->json) {
+      std::printf("%s\n", summary(scene).dump(2).c_str());
+    } else {
+      print_text(scene);
+    }
+    exit_code = kExitOk;
   });
 }
 

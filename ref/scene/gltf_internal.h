@@ -1,0 +1,58 @@
+// Pieces of the glTF loader shared between its files (not a public API): the file name used in
+// every message, the checks run on a parsed tinygltf model, typed accessor reads, and the
+// conversion of materials, nodes, lights and particles into the Scene model.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "core/error.h"
+#include "scene/scene.h"
+
+namespace vct::gltf {
+
+/// Everything the conversion needs to know about where the model came from.
+struct Context {
+  const tinygltf::Model& model;
+  std::string file;  // name used in messages
+};
+
+/// Throws InputError(ctx.file, message).
+[[noreturn]] void fail(const Context& ctx, const std::string& message);
+
+/// The extensions we understand; a file requiring any other is refused.
+const std::vector<std::string>& supported_extensions();
+
+/// Checks every index, byte range, the node graph (a forest: no cycles, one parent per node)
+/// and required extensions. Throws InputError on the first problem.
+void validate_model(const Context& ctx);
+
+/// Reads accessor `index` as floats, `components` per element (VEC2 = 2 ...); normalized
+/// integer types are converted as glTF defines. Throws on NaN/Inf (`what` names the attribute).
+std::vector<float> read_floats(const Context& ctx, int index, int components, const std::string& what);
+
+/// Reads an index accessor (UNSIGNED_BYTE/SHORT/INT).
+std::vector<uint32_t> read_indices(const Context& ctx, int index, const std::string& what);
+
+/// Materials and textures, converted once. Adds warnings for unsupported features.
+void convert_textures(const Context& ctx, Scene& scene);
+void convert_materials(const Context& ctx, Scene& scene);
+
+/// Walks the default scene's node trees and appends geometry, camera, spot lights and particle
+/// emitters in world space.
+void convert_nodes(const Context& ctx, Scene& scene);
+
+/// Node-attached objects (gltf_objects.cpp). `world` is the node's world matrix.
+Camera make_camera(const Context& ctx, int camera, const mat4& world);
+SpotLight make_spot_light(const Context& ctx, int light, const mat4& world);
+/// Refuses lights we do not model (point, directional) and checks spot parameters.
+void validate_lights(const Context& ctx);
+/// extras.vct_particles of node `node`, if present.
+bool read_particles(const Context& ctx, int node, const mat4& world, ParticleEmitter& out);
+
+/// The optional `vct_volume` override in asset or scene extras; false when absent.
+bool read_volume_override(const Context& ctx, VoxelVolume& volume);
+
+}  // namespace vct::gltf

@@ -1,0 +1,607 @@
+#!/usr/bin/env python3
+"""Generates the procedural glTF 2.0 scenes in scenes/ (Python 3 standard library only).
+
+    python3 scenes/generate_scenes.py          # rewrites every scene below
+    python3 scenes/generate_scenes.py --check  # exits 1 if a committed file differs
+
+Units are metres, +Y up, lights in glTF units (candela for spot lights); see docs/scenes.md.
+All buffers are embedded as base64 data URIs so each .gltf is one self-contained file (the
+built-in scene is compiled into the binary); demo_room.gltf references its PNG textures in
+scenes/textures/ to exercise external images. Output is deterministic (no randomness, fixed
+float formatting), so regenerating gives byte-identical files.
+"""
+import base64
+import json
+import math
+import os
+import struct
+import sys
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+FLOAT, UINT16, UINT32 = 5126, 5123, 5125
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+LAMBERT = {"KHR_materials_specular": {"specularFactor": 0.0}}
+
+
+# ----------------------------------------------------------------------------- vector helpers
+def add(a, b): return [a[i] + b[i] for i in range(3)]
+def sub(a, b): return [a[i] - b[i] for i in range(3)]
+def mul(a, s): return [a[i] * s for i in range(3)]
+def dot(a, b): return sum(a[i] * b[i] for i in range(3))
+def cross(a, b): return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+def normalize(a):
+    n = math.sqrt(dot(a, a))
+    return [x / n for x in a]
+
+
+def quat_axis_angle(axis, angle):
+    axis = normalize(axis)
+    s = math.sin(angle / 2)
+    return [round(axis[0] * s, 7), round(axis[1] * s, 7), round(axis[2] * s, 7), round(math.cos(angle / 2), 7)]
+
+
+# Rotates the node's -Z (where glTF lights and cameras look) onto straight down (-Y).
+POINT_DOWN = quat_axis_angle([1, 0, 0], -math.pi / 2)
+
+
+def look_rotation(eye, target):
+    """Quaternion turning -Z toward target-eye with +Y as up (for cameras and spot lights)."""
+    f = normalize(sub(target, eye))
+    r = normalize(cross(f, [0, 1, 0]))
+    u = cross(r, f)
+    # Rotation matrix columns: x = r, y = u, z = -f.
+    m = [[r[0], u[0], -f[0]], [r[1], u[1], -f[1]], [r[2], u[2], -f[2]]]
+    tr = m[0][0] + m[1][1] + m[2][2]
+    if tr > 0:
+        s = math.sqrt(tr + 1.0) * 2
+        q = [(m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s, 0.25 * s]
+    elif m[0][0] > m[1][1] and m[0][0] > m[2][2]:
+        s = math.sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]) * 2
+        q = [0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s, (m[2][1] - m[1][2]) / s]
+    elif m[1][1] > m[2][2]:
+        s = math.sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]) * 2
+        q = [(m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s, (m[0][2] - m[2][0]) / s]
+    else:
+        s = math.sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]) * 2
+        q = [(m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s, (m[1][0] - m[0][1]) / s]
+    n = math.sqrt(sum(x * x for x in q))
+    return [round(x / n, 7) for x in q]
+
+
+# ----------------------------------------------------------------------------- meshes
+class MeshData:
+    """Triangle list with per-vertex position, normal and uv (normals/uvs may be None)."""
+
+    def __init__(self, with_normals=True, with_uv=True, with_tangents=False):
+        self.pos, self.nrm, self.uv, self.idx, self.tan = [], [], [], [], []
+        self.with_normals, self.with_uv, self.with_tangents = with_normals, with_uv, with_tangents
+
+    def vertex(self, p, n=None, uv=None):
+        self.pos.append(p)
+        if self.with_normals:
+            self.nrm.append(n)
+        if self.with_uv:
+            self.uv.append(uv)
+        return len(self.pos) - 1
+
+    def tri(self, a, b, c):
+        self.idx += [a, b, c]
+
+    def quad(self, origin, du, dv, uv_scale=(1.0, 1.0), nu=1, nv=1):
+        """Grid on origin + s*du + t*dv, s,t in [0,1]; front face (CCW) along du x dv.
+        uv = (s*|du|, t*|dv|) * uv_scale, with t growing toward image rows below (glTF v)."""
+        n = normalize(cross(du, dv))
+        lu, lv = math.sqrt(dot(du, du)), math.sqrt(dot(dv, dv))
+        base = len(self.pos)
+        for j in range(nv + 1):
+            for i in range(nu + 1):
+                s, t = i / nu, j / nv
+                p = add(origin, add(mul(du, s), mul(dv, t)))
+                # v runs against dv so the image's top row sits at the far end of dv (image "up"
+                # = +dv), the glTF convention for upright textures.
+                self.vertex(p, n, [s * lu * uv_scale[0], (1.0 - t) * lv * uv_scale[1]])
+                if self.with_tangents:
+                    # +u along du; bitangent cross(N, T) * w = +dv = toward decreasing v: w = +1.
+                    self.tan.append(normalize(du) + [1.0])
+        for j in range(nv):
+            for i in range(nu):
+                a = base + j * (nu + 1) + i
+                self.tri(a, a + 1, a + nu + 2)
+                self.tri(a, a + nu + 2, a + nu + 1)
+
+    def box(self, lo, hi, inward=False, uv_scale=(1.0, 1.0)):
+        x0, y0, z0 = lo
+        x1, y1, z1 = hi
+        faces = [  # origin, du, dv with du x dv pointing outward
+            ([x1, y0, z1], [0, 0, z0 - z1], [0, y1 - y0, 0]),  # +x
+            ([x0, y0, z0], [0, 0, z1 - z0], [0, y1 - y0, 0]),  # -x
+            ([x0, y1, z1], [x1 - x0, 0, 0], [0, 0, z0 - z1]),  # +y
+            ([x0, y0, z0], [x1 - x0, 0, 0], [0, 0, z1 - z0]),  # -y
+            ([x0, y0, z1], [x1 - x0, 0, 0], [0, y1 - y0, 0]),  # +z
+            ([x1, y0, z0], [x0 - x1, 0, 0], [0, y1 - y0, 0]),  # -z
+        ]
+        for o, du, dv in faces:
+            if inward:
+                self.quad(add(o, du), mul(du, -1), dv, uv_scale)
+            else:
+                self.quad(o, du, dv, uv_scale)
+
+    def sphere(self, center, radius, nlat, nlon, inward=False, displace=None):
+        base = len(self.pos)
+        for j in range(nlat + 1):
+            theta = math.pi * j / nlat
+            for i in range(nlon + 1):
+                phi = 2 * math.pi * i / nlon
+                d = [math.sin(theta) * math.cos(phi), math.cos(theta), -math.sin(theta) * math.sin(phi)]
+                r = radius * (displace(theta, phi) if displace else 1.0)
+                n = mul(d, -1.0) if inward else d
+                self.vertex(add(center, mul(d, r)), n, [i / nlon, j / nlat])
+        for j in range(nlat):
+            for i in range(nlon):
+                a = base + j * (nlon + 1) + i
+                b, c, e = a + 1, a + nlon + 1, a + nlon + 2
+                tris = []
+                if j != 0:
+                    tris.append((a, c, b))
+                if j != nlat - 1:
+                    tris.append((b, c, e))
+                for t in tris:
+                    self.tri(t[0], t[2], t[1]) if inward else self.tri(*t)
+        if displace:
+            self.recompute_normals(base)
+
+    def cylinder(self, center, radius, height, n):
+        """Open-ended side plus top cap, axis +Y from center (base) upward."""
+        base = len(self.pos)
+        for j in (0, 1):
+            for i in range(n + 1):
+                phi = 2 * math.pi * i / n
+                d = [math.cos(phi), 0.0, -math.sin(phi)]
+                self.vertex(add(center, [radius * d[0], height * j, radius * d[2]]), d,
+                            [i / n * 2 * math.pi * radius, (1 - j) * height])
+        for i in range(n):
+            a = base + i
+            self.tri(a, a + 1, a + n + 2)
+            self.tri(a, a + n + 2, a + n + 1)
+        top = add(center, [0, height, 0])
+        c = self.vertex(top, [0, 1, 0], [0.5, 0.5])
+        ring = [self.vertex(add(top, [radius * math.cos(2 * math.pi * i / n), 0, -radius * math.sin(2 * math.pi * i / n)]),
+                            [0, 1, 0], [0.5 + 0.5 * math.cos(2 * math.pi * i / n), 0.5 + 0.5 * math.sin(2 * math.pi * i / n)])
+                for i in range(n)]
+        for i in range(n):
+            self.tri(c, ring[i], ring[(i + 1) % n])
+
+    def recompute_normals(self, start):
+        acc = {k: [0.0, 0.0, 0.0] for k in range(start, len(self.pos))}
+        # Vertices at the same position (sphere seams and poles) share their normal.
+        key = {k: tuple(round(x, 6) for x in self.pos[k]) for k in acc}
+        by_key = {}
+        for t in range(0, len(self.idx), 3):
+            a, b, c = self.idx[t:t + 3]
+            if a < start:
+                continue
+            fn = cross(sub(self.pos[b], self.pos[a]), sub(self.pos[c], self.pos[a]))
+            for v in (a, b, c):
+                s = by_key.setdefault(key[v], [0.0, 0.0, 0.0])
+                for i in range(3):
+                    s[i] += fn[i]
+        for k in acc:
+            self.nrm[k] = normalize(by_key[key[k]])
+
+
+# ----------------------------------------------------------------------------- PNG textures
+def png_bytes(width, height, rows, channels=3):
+    """rows: list of bytes objects (RGB or RGBA per texel). Row 0 is the top of the image."""
+    def chunk(kind, data):
+        c = kind + data
+        return struct.pack(">I", len(data)) + c + struct.pack(">I", zlib.crc32(c) & 0xFFFFFFFF)
+    color_type = {3: 2, 4: 6}[channels]
+    raw = b"".join(b"\x00" + r for r in rows)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, color_type, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def hash01(i, j, seed):
+    h = (i * 73856093) ^ (j * 19349663) ^ (seed * 83492791)
+    h = (h ^ (h >> 13)) * 1274126177 & 0xFFFFFFFF
+    return ((h ^ (h >> 16)) & 0xFFFF) / 65535.0
+
+
+def brick_height(x, y, size):
+    """Brick pattern on a size x size tile: 4 courses of 2 bricks, mortar 2 px, bevelled."""
+    course = size // 4
+    row = y // course
+    xx = (x + (size // 4 if row % 2 else 0)) % size
+    bx, by = xx % (size // 2), y % course
+    d = min(bx, size // 2 - 1 - bx, by, course - 1 - by)  # distance to the mortar line
+    return min(max(d - 1, 0) / 2.0, 1.0), (row, (xx // (size // 2)))
+
+
+def brick_textures(size=64):
+    albedo, normal = [], []
+    h = [[brick_height(x, y, size)[0] for x in range(size)] for y in range(size)]
+    for y in range(size):
+        arow, nrow = bytearray(), bytearray()
+        for x in range(size):
+            height, brick = brick_height(x, y, size)
+            if height == 0.0:
+                c = (170, 165, 155)  # mortar
+            else:
+                v = 0.85 + 0.3 * hash01(brick[0], brick[1], 7)
+                c = tuple(min(255, int(v * k)) for k in (150, 62, 45))
+            arow += bytes(c)
+            # Tangent-space normal from the height field: x right, y = up in the image
+            # (toward row 0), z out of the surface (glTF / OpenGL convention).
+            dhdx = (h[y][(x + 1) % size] - h[y][(x - 1) % size]) * 0.5
+            dhdrow = (h[(y + 1) % size][x] - h[(y - 1) % size][x]) * 0.5
+            n = normalize([-dhdx * 2.0, dhdrow * 2.0, 1.0])
+            nrow += bytes(int(round((k * 0.5 + 0.5) * 255)) for k in n)
+        albedo.append(bytes(arow))
+        normal.append(bytes(nrow))
+    return png_bytes(size, size, albedo), png_bytes(size, size, normal)
+
+
+def tile_normal_two_channel(size=64):
+    """Floor tiles as a two-channel normal map: R, G hold x, y; B is 0 (z is reconstructed)."""
+    rows = []
+    tile = size // 2
+    for y in range(size):
+        r = bytearray()
+        for x in range(size):
+            tx, ty = x % tile, y % tile
+            nx = ny = 0.0
+            if tx < 2: nx = -0.5
+            elif tx >= tile - 2: nx = 0.5
+            if ty < 2: ny = 0.5
+            elif ty >= tile - 2: ny = -0.5
+            r += bytes([int(round((nx * 0.5 + 0.5) * 255)), int(round((ny * 0.5 + 0.5) * 255)), 0])
+        rows.append(bytes(r))
+    return png_bytes(size, size, rows)
+
+
+# ----------------------------------------------------------------------------- glTF writer
+class Gltf:
+    def __init__(self, generator_note):
+        self.doc = {"asset": {"version": "2.0", "generator": "VCT Oracle scenes/generate_scenes.py (" + generator_note + ")"},
+                    "scene": 0, "scenes": [{"nodes": []}], "nodes": [], "meshes": [], "materials": [],
+                    "accessors": [], "bufferViews": [], "buffers": []}
+        self.blob = bytearray()
+        self.extensions = set()
+
+    def _view(self, data, target=None):
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(data)}
+        if target:
+            view["target"] = target
+        self.blob += data
+        self.doc["bufferViews"].append(view)
+        return len(self.doc["bufferViews"]) - 1
+
+    def _accessor(self, values, comps, ctype, target, minmax=False):
+        fmt = {FLOAT: "f", UINT16: "H", UINT32: "I"}[ctype]
+        flat = [x for v in values for x in (v if comps > 1 else [v])]
+        view = self._view(struct.pack("<%d%s" % (len(flat), fmt), *flat), target)
+        acc = {"bufferView": view, "componentType": ctype, "count": len(values),
+               "type": {1: "SCALAR", 2: "VEC2", 3: "VEC3", 4: "VEC4"}[comps]}
+        if minmax:
+            # min/max of the float32 values actually stored (the validator compares exactly).
+            f32 = [struct.unpack("<f", struct.pack("<f", x))[0] for x in flat]
+            acc["min"] = [min(f32[i::comps]) for i in range(comps)]
+            acc["max"] = [max(f32[i::comps]) for i in range(comps)]
+        self.doc["accessors"].append(acc)
+        return len(self.doc["accessors"]) - 1
+
+    def mesh(self, name, m, material):
+        attrs = {"POSITION": self._accessor(m.pos, 3, FLOAT, ARRAY_BUFFER, minmax=True)}
+        if m.with_normals:
+            attrs["NORMAL"] = self._accessor(m.nrm, 3, FLOAT, ARRAY_BUFFER)
+        if m.with_tangents:
+            attrs["TANGENT"] = self._accessor(m.tan, 4, FLOAT, ARRAY_BUFFER)
+        if m.with_uv:
+            attrs["TEXCOORD_0"] = self._accessor(m.uv, 2, FLOAT, ARRAY_BUFFER)
+        itype = UINT16 if len(m.pos) < 65536 else UINT32
+        prim = {"attributes": attrs, "indices": self._accessor(m.idx, 1, itype, ELEMENT_ARRAY_BUFFER), "material": material}
+        self.doc["meshes"].append({"name": name, "primitives": [prim]})
+        return len(self.doc["meshes"]) - 1
+
+    def material(self, name, color, metallic=0.0, roughness=1.0, lambert=False, emissive=None, strength=None,
+                 extras=None, **textures):
+        mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(color) + [1.0],
+                                                      "metallicFactor": metallic, "roughnessFactor": roughness}}
+        ext = {}
+        if lambert:
+            ext.update(LAMBERT)
+        if emissive:
+            mat["emissiveFactor"] = list(emissive)
+            if strength:
+                ext["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
+        if "base_color" in textures:
+            mat["pbrMetallicRoughness"]["baseColorTexture"] = textures["base_color"]
+        if "normal" in textures:
+            mat["normalTexture"] = textures["normal"]
+        if ext:
+            mat["extensions"] = ext
+            self.extensions.update(ext.keys())
+        if extras:
+            mat["extras"] = extras
+        self.doc["materials"].append(mat)
+        return len(self.doc["materials"]) - 1
+
+    def texture(self, uri_or_png, name):
+        """An image (a relative URI, or PNG bytes to embed) with a repeat/linear sampler."""
+        self.doc.setdefault("samplers", [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}])
+        images = self.doc.setdefault("images", [])
+        if isinstance(uri_or_png, bytes):
+            images.append({"name": name, "uri": "data:image/png;base64," + base64.b64encode(uri_or_png).decode()})
+        else:
+            images.append({"name": name, "uri": uri_or_png})
+        textures = self.doc.setdefault("textures", [])
+        textures.append({"name": name, "sampler": 0, "source": len(images) - 1})
+        return len(textures) - 1
+
+    def texture_info(self, texture, transform=None, **extra):
+        info = {"index": texture}
+        info.update(extra)
+        if transform:
+            info["extensions"] = {"KHR_texture_transform": transform}
+            self.extensions.add("KHR_texture_transform")
+        return info
+
+    def node(self, name, root=True, **fields):
+        node = {"name": name}
+        node.update({k: v for k, v in fields.items() if v is not None})
+        self.doc["nodes"].append(node)
+        index = len(self.doc["nodes"]) - 1
+        if root:
+            self.doc["scenes"][0]["nodes"].append(index)
+        return index
+
+    def camera(self, eye, target, yfov, znear=0.05, zfar=100.0):
+        self.doc.setdefault("cameras", []).append(
+            {"type": "perspective", "perspective": {"yfov": yfov, "znear": znear, "zfar": zfar}})
+        return self.node("camera", camera=len(self.doc["cameras"]) - 1, translation=list(eye),
+                         rotation=look_rotation(eye, target))
+
+    def spot(self, name, position, rotation, intensity, inner, outer, color=(1.0, 1.0, 1.0)):
+        ext = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+        ext["lights"].append({"name": name, "type": "spot", "color": list(color), "intensity": intensity,
+                              "spot": {"innerConeAngle": inner, "outerConeAngle": outer}})
+        self.extensions.add("KHR_lights_punctual")
+        return self.node(name, translation=list(position), rotation=rotation,
+                         extensions={"KHR_lights_punctual": {"light": len(ext["lights"]) - 1}})
+
+    def write(self, filename):
+        doc = self.doc
+        doc["buffers"] = [{"byteLength": len(self.blob),
+                           "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode()}]
+        if self.extensions:
+            doc["extensionsUsed"] = sorted(self.extensions)
+        text = json.dumps(_rounded(doc), indent=1, sort_keys=False) + "\n"
+        return filename, text.encode()
+
+
+def _rounded(x):
+    """Rounds floats in the JSON to 7 significant digits (deterministic, readable)."""
+    if isinstance(x, float):
+        return float("%.7g" % x)
+    if isinstance(x, list):
+        return [_rounded(v) for v in x]
+    if isinstance(x, dict):
+        # Accessor bounds stay exact: the validator compares them with the stored float32 data.
+        return {k: (v if k in ("min", "max") else _rounded(v)) for k, v in x.items()}
+    return x
+
+
+# ----------------------------------------------------------------------------- scenes
+def cornell_box():
+    g = Gltf("Cornell box: the built-in default scene")
+    white = g.material("white_wall", (0.73, 0.73, 0.73), lambert=True)
+    red = g.material("red_wall", (0.63, 0.065, 0.05), lambert=True)
+    green = g.material("green_wall", (0.14, 0.45, 0.091), lambert=True)
+    panel = g.material("emissive_panel", (0.78, 0.78, 0.78), lambert=True, emissive=(1.0, 0.85, 0.6), strength=4.0)
+    metal = g.material("rough_metal", (0.95, 0.64, 0.54), metallic=1.0, roughness=0.4)
+    glossy = g.material("glossy_dielectric", (0.1, 0.25, 0.8), metallic=0.0, roughness=0.1)
+
+    def add_quad_mesh(name, mat, origin, du, dv, n=4):
+        m = MeshData()
+        m.quad(origin, du, dv, nu=n, nv=n)
+        g.node(name, mesh=g.mesh(name, m, mat))
+
+    # The box spans x, z in [-1, 1], y in [0, 2]; open toward +z, where the camera stands.
+    add_quad_mesh("floor", white, [-1, 0, 1], [2, 0, 0], [0, 0, -2])
+    add_quad_mesh("ceiling", white, [-1, 2, -1], [2, 0, 0], [0, 0, 2])
+    add_quad_mesh("back_wall", white, [-1, 0, -1], [2, 0, 0], [0, 2, 0])
+    add_quad_mesh("left_wall", red, [-1, 0, 1], [0, 0, -2], [0, 2, 0])
+    add_quad_mesh("right_wall", green, [1, 0, -1], [0, 0, 2], [0, 2, 0])
+    # Emissive panel just below the ceiling, facing down, off-centre so the spot light's
+    # housing position stays free.
+    add_quad_mesh("emissive_panel", panel, [-0.25, 1.995, -0.55], [0.5, 0, 0], [0, 0, 0.3], n=1)
+
+    box = MeshData()
+    box.box([-0.3, 0.0, -0.3], [0.3, 1.2, 0.3])
+    g.node("metal_box", mesh=g.mesh("metal_box", box, metal), translation=[-0.38, 0.0, -0.3],
+           rotation=quat_axis_angle([0, 1, 0], math.radians(17)))
+    sphere = MeshData()
+    sphere.sphere([0, 0, 0], 1.0, 24, 48)
+    g.node("glossy_sphere", mesh=g.mesh("glossy_sphere", sphere, glossy), translation=[0.42, 0.35, 0.3],
+           scale=[0.35, 0.35, 0.35])
+
+    g.spot("ceiling_spot", [0.0, 1.98, 0.1], POINT_DOWN, intensity=6.0, inner=0.45, outer=0.75)
+    g.camera([0.0, 1.0, 3.6], [0.0, 1.0, 0.0], yfov=0.75)
+    return g.write("cornell_box.gltf")
+
+
+def statue_displacement(theta, phi):
+    return 1.0 + 0.12 * math.sin(3 * theta) * math.cos(2 * phi) + 0.05 * math.sin(7 * phi) * math.sin(theta)
+
+
+def demo_room():
+    g = Gltf("demo room in the seed's spirit")
+    brick_albedo, brick_normal = brick_textures()
+    os.makedirs(os.path.join(HERE, "textures"), exist_ok=True)
+    files = {"textures/brick_albedo.png": brick_albedo, "textures/brick_normal.png": brick_normal,
+             "textures/tile_normal_rg.png": tile_normal_two_channel()}
+    t_albedo = g.texture("textures/brick_albedo.png", "brick_albedo")
+    t_normal = g.texture("textures/brick_normal.png", "brick_normal")
+    t_tiles = g.texture("textures/tile_normal_rg.png", "tile_normal_rg")
+    # One tile of the brick texture covers 1 m x 1 m; the transform halves it (2 tiles per m).
+    tt = {"scale": [2.0, 2.0]}
+    walls = g.material("brick_wall", (1.0, 1.0, 1.0), roughness=0.9,
+                       base_color=g.texture_info(t_albedo, tt), normal=g.texture_info(t_normal, tt, scale=1.0))
+    floor = g.material("tiled_floor", (0.55, 0.5, 0.45), roughness=0.6, extras={"vct_normal_two_channel": True},
+                       normal=g.texture_info(t_tiles, scale=0.8))
+    ceiling = g.material("ceiling", (0.8, 0.8, 0.8), lambert=True)
+    gold = g.material("gold_pillar", (1.0, 0.78, 0.34), metallic=1.0, roughness=0.3)
+    chrome = g.material("chrome_statue", (0.9, 0.9, 0.92), metallic=1.0, roughness=0.15)
+    stone = g.material("stone", (0.5, 0.48, 0.45), roughness=0.8)
+    coal = g.material("brazier", (0.05, 0.05, 0.05), metallic=1.0, roughness=0.5)
+
+    def quad_mesh(name, mat, origin, du, dv):
+        m = MeshData(with_tangents=mat in (walls, floor))
+        m.quad(origin, du, dv)
+        g.node(name, mesh=g.mesh(name, m, mat))
+
+    # Room: x, z in [-4, 4], y in [0, 3.5], every surface facing inward.
+    H = 3.5
+    quad_mesh("floor", floor, [-4, 0, 4], [8, 0, 0], [0, 0, -8])
+    quad_mesh("ceiling", ceiling, [-4, H, -4], [8, 0, 0], [0, 0, 8])
+    quad_mesh("wall_back", walls, [-4, 0, -4], [8, 0, 0], [0, H, 0])
+    quad_mesh("wall_front", walls, [4, 0, 4], [-8, 0, 0], [0, H, 0])
+    quad_mesh("wall_left", walls, [-4, 0, 4], [0, 0, -8], [0, H, 0])
+    quad_mesh("wall_right", walls, [4, 0, -4], [0, 0, 8], [0, H, 0])
+
+    # Four pillars as children of one group node (exercises the hierarchy).
+    pillar = MeshData()
+    pillar.cylinder([0, 0, 0], 0.25, H, 24)
+    pillar_mesh = g.mesh("pillar", pillar, gold)
+    group = g.node("pillars")
+    kids = [g.node("pillar_%d" % i, root=False, mesh=pillar_mesh, translation=[x, 0.0, z])
+            for i, (x, z) in enumerate([(-2.5, -2.5), (2.5, -2.5), (-2.5, 2.5), (2.5, 2.5)])]
+    g.doc["nodes"][group]["children"] = kids
+
+    # Statue: pedestal + a deformed sphere body + a small head.
+    pedestal = MeshData()
+    pedestal.box([-0.5, 0.0, -0.5], [0.5, 0.8, 0.5])
+    g.node("pedestal", mesh=g.mesh("pedestal", pedestal, stone))
+    body = MeshData()
+    body.sphere([0, 0, 0], 1.0, 32, 48, displace=statue_displacement)
+    body_node = g.node("statue_body", mesh=g.mesh("statue_body", body, chrome), translation=[0.0, 1.45, 0.0],
+                       scale=[0.45, 0.65, 0.45])
+    head = MeshData()
+    head.sphere([0, 0, 0], 1.0, 16, 24)
+    head_node = g.node("statue_head", root=False, mesh=g.mesh("statue_head", head, chrome),
+                       translation=[0.0, 1.25, 0.0], scale=[0.4, 0.28, 0.4])
+    g.doc["nodes"][body_node]["children"] = [head_node]
+
+    # Two braziers with fire particle emitters above them (schema: docs/scenes.md).
+    brazier = MeshData()
+    brazier.cylinder([0, 0, 0], 0.2, 0.5, 16)
+    brazier_mesh = g.mesh("brazier", brazier, coal)
+    for i, x in enumerate((-1.5, 1.5)):
+        g.node("brazier_%d" % i, mesh=brazier_mesh, translation=[x, 0.0, -3.0])
+        g.node("fire_%d" % i, translation=[x, 0.55, -3.0], extras={"vct_particles": {
+            "count": 512, "lifetime": 1.2, "spawn_extent": [0.12, 0.02, 0.12],
+            "velocity_min": [-0.1, 0.5, -0.1], "velocity_max": [0.1, 1.1, 0.1], "acceleration": [0.0, 0.4, 0.0],
+            "color_start": [6.0, 2.6, 0.6], "color_end": [1.2, 0.15, 0.0], "size_start": 0.06, "size_end": 0.015}})
+
+    g.spot("statue_spot", [2.5, 3.3, 2.0], look_rotation([2.5, 3.3, 2.0], [0.0, 1.2, 0.0]), intensity=40.0,
+           inner=0.25, outer=0.45, color=(1.0, 0.95, 0.85))
+    g.camera([0.0, 1.7, 3.6], [0.0, 1.2, -1.0], yfov=1.0)
+    return [g.write("demo_room.gltf")] + [(name, data) for name, data in files.items()]
+
+
+def furnace_sphere():
+    """Closed Lambertian sphere (albedo 0.5, uniform emission 1) seen from its centre. The
+    radiance everywhere is Le / (1 - albedo) = 2 (white furnace test)."""
+    g = Gltf("furnace: closed sphere, albedo 0.5, emission 1, radiance 2 everywhere")
+    mat = g.material("furnace_wall", (0.5, 0.5, 0.5), lambert=True, emissive=(1.0, 1.0, 1.0))
+    m = MeshData()
+    m.sphere([0, 0, 0], 1.0, 32, 64, inward=True)
+    g.node("sphere", mesh=g.mesh("sphere", m, mat))
+    g.camera([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], yfov=1.2, znear=0.01, zfar=10.0)
+    return g.write("furnace_sphere.gltf")
+
+
+def plane_spot():
+    """A 4 m x 4 m Lambertian plane (albedo 0.8) at y = 0 under a spot light 2 m above it,
+    pointing straight down: E(r) = I cos^3(theta) / h^2 * cone(theta), theta = atan(r / h)."""
+    g = Gltf("plane under a spot light: closed-form irradiance")
+    mat = g.material("lambert_plane", (0.8, 0.8, 0.8), lambert=True)
+    m = MeshData()
+    m.quad([-2, 0, 2], [4, 0, 0], [0, 0, -4], nu=16, nv=16)
+    g.node("plane", mesh=g.mesh("plane", m, mat))
+    g.spot("spot", [0.0, 2.0, 0.0], POINT_DOWN, intensity=10.0, inner=0.3, outer=0.5)
+    g.camera([0.0, 3.0, 3.0], [0.0, 0.0, 0.0], yfov=0.9)
+    return g.write("plane_spot.gltf")
+
+
+def tiny_triangles():
+    """A 1 m x 1 m patch of 45,000 triangles (edges 6.7 mm, far below a voxel at grid 128 of
+    this ~2.2 m volume, 17 mm) on a 2 m floor, lit by a spot light. Positions only: the loader
+    generates flat normals and tangents."""
+    g = Gltf("triangles much smaller than a voxel")
+    floor_mat = g.material("floor", (0.7, 0.7, 0.7), lambert=True)
+    patch_mat = g.material("patch", (0.9, 0.3, 0.2), lambert=True)
+    floor = MeshData()
+    floor.quad([-1, 0, 1], [2, 0, 0], [0, 0, -2])
+    g.node("floor", mesh=g.mesh("floor", floor, floor_mat))
+    n = 150
+    patch = MeshData(with_normals=False, with_uv=False)
+    patch.quad([-0.5, 0.0, 0.5], [1, 0, 0], [0, 0, -1], nu=n, nv=n)
+    # Tilt the patch 30 degrees about x and lift it so it is not coplanar with the floor.
+    g.node("patch", mesh=g.mesh("patch", patch, patch_mat), translation=[0.0, 0.6, 0.0],
+           rotation=quat_axis_angle([1, 0, 0], math.radians(30)))
+    g.spot("spot", [0.0, 2.0, 0.0], POINT_DOWN, intensity=8.0, inner=0.4, outer=0.7)
+    g.camera([0.0, 1.6, 2.2], [0.0, 0.4, 0.0], yfov=0.8)
+    return g.write("tiny_triangles.gltf")
+
+
+def thin_wall():
+    """Two closed rooms (x < 0 lit by a spot light, x > 0 dark) separated by a 2 cm wall, far
+    thinner than a voxel (grid 64 over the ~4.4 m volume: 69 mm). Any light seen in the dark
+    room is leakage through the wall. The camera stands in the dark room, facing the wall."""
+    g = Gltf("thin wall between a lit and a dark room")
+    white = g.material("white", (0.75, 0.75, 0.75), lambert=True)
+    wall_mat = g.material("thin_wall", (0.75, 0.75, 0.75), lambert=True)
+    W = 0.01  # half thickness
+    shell = MeshData()
+    # Shared floor, ceiling, back and front over both rooms; outer side walls; all inward.
+    shell.box([-2.0 - W, 0.0, -1.0], [2.0 + W, 2.0, 1.0], inward=True)
+    g.node("shell", mesh=g.mesh("shell", shell, white))
+    wall = MeshData()
+    wall.box([-W, 0.0, -1.0], [W, 2.0, 1.0])
+    g.node("thin_wall", mesh=g.mesh("thin_wall", wall, wall_mat))
+    g.spot("lit_room_spot", [-1.0, 1.95, 0.0], POINT_DOWN, intensity=8.0, inner=0.6, outer=1.0)
+    g.camera([1.9, 1.0, 0.0], [0.0, 1.0, 0.0], yfov=1.2, znear=0.02)
+    return g.write("thin_wall.gltf")
+
+
+def main():
+    outputs = []
+    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall):
+        result = make()
+        outputs += result if isinstance(result, list) else [result]
+    check = "--check" in sys.argv
+    stale = []
+    for name, data in outputs:
+        path = os.path.join(HERE, name)
+        old = open(path, "rb").read() if os.path.exists(path) else None
+        if old != data:
+            stale.append(name)
+            if not check:
+                os.makedirs(os.path.dirname(path), exist_ok=True)
+                with open(path + ".tmp", "wb") as f:
+                    f.write(data)
+                os.replace(path + ".tmp", path)
+        print("%-28s %8d bytes%s" % (name, len(data), " (changed)" if old != data else ""))
+    if check and stale:
+        print("stale: " + ", ".join(stale))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
