@@ -143,7 +143,11 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
         const vec3 l = to_light / dist;
         const BsdfValue f = eval_bsdf(bp, l);
         const float cos_l = std::abs(glm::dot(lp.geometric_normal, l));
-        if (f.total() != vec3(0.0f) && cos_l > 0.0f) {
+        // Directions within rounding of either plane carry no light (and a triangle never
+        // lights itself); cutting them avoids 1/cos blow-ups from float noise.
+        constexpr float kMinCos = 1e-5f;
+        if (ls.triangle != hit.triangle && glm::dot(ng, l) > kMinCos && cos_l > kMinCos &&
+            f.total() != vec3(0.0f)) {
           const vec3 lle = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
           if (lle != vec3(0.0f)) {
             ++counts.shadow;

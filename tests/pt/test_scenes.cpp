@@ -112,3 +112,30 @@ void finish(Scene& s) {
 }
 
 }  // namespace vct::pt::test
+
+namespace vct::pt::test {
+Scene demo_room() {
+  Scene s;
+  const uint32_t white = add_material(s, lambertian(vec3(0.75f)));
+  const uint32_t red = add_material(s, lambertian(vec3(0.7f, 0.1f, 0.1f)));
+  const uint32_t lamp = add_material(s, lambertian(vec3(0.0f), vec3(6.0f, 5.0f, 4.0f)));
+  const uint32_t metal = add_material(s, pbr(vec3(0.9f, 0.7f, 0.4f), 1.0f, 0.3f));
+  const uint32_t glossy = add_material(s, pbr(vec3(0.2f, 0.4f, 0.8f), 0.0f, 0.2f));
+  add_room(s, vec3(-1.0f, 0.0f, -1.0f), vec3(1.0f, 2.0f, 1.0f), white);
+  add_quad(s, vec3(-0.999f, 0.0f, -1.0f), vec3(0, 2, 0), vec3(0, 0, 2), red);  // left wall tint, facing +x
+  add_quad(s, vec3(-0.25f, 1.999f, -0.25f), vec3(0.5f, 0, 0), vec3(0, 0, 0.5f), lamp);  // facing -y
+  add_quad(s, vec3(0.2f, 0.6f, -0.6f), vec3(0, 0, 0.5f), vec3(0.5f, 0, 0), metal);  // block top, +y
+  add_quad(s, vec3(0.2f, 0.0f, -0.1f), vec3(0.5f, 0, 0), vec3(0, 0.6f, 0), metal);   // block front, +z
+  add_icosphere(s, vec3(-0.4f, 0.35f, 0.1f), 0.35f, 2, false, glossy);
+  SpotLight l;
+  l.position = vec3(0.6f, 1.8f, 0.6f);
+  l.direction = glm::normalize(vec3(-0.6f, -1.0f, -0.5f));
+  l.intensity = 4.0f;
+  l.inner_cone_angle = 0.3f;
+  l.outer_cone_angle = 0.6f;
+  s.spot_lights.push_back(l);
+  s.camera = look_at(vec3(0.0f, 1.0f, 0.95f), vec3(0.0f, 1.5f, -1.0f), vec3(0, 1, 0), 1.2f);
+  finish(s);
+  return s;
+}
+}  // namespace vct::pt::test

@@ -29,3 +29,9 @@ Camera look_at(const vec3& eye, const vec3& target, const vec3& up, float yfov);
 void finish(Scene& s);
 
 }  // namespace vct::pt::test
+
+namespace vct::pt::test {
+/// A small closed room exercising every feature of the estimator: a one-sided emissive ceiling
+/// panel, a spot light, a rough metal block, a glossy dielectric sphere and coloured walls.
+Scene demo_room();
+}  // namespace vct::pt::test
