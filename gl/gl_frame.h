@@ -1,0 +1,60 @@
+// Internal: the GPU state of one frame, handed from pass to pass (gl_pass_*.cpp). Every GL object
+// belongs to the frame's context and dies with it, so passes create freely and never delete.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/settings.h"
+#include "gl_program.h"
+#include "gl_scene.h"
+#include "gl_timer.h"
+#include "scene/scene.h"
+#include "stages/stage_types.h"
+
+namespace vct::gl {
+
+struct GlFrame {
+  GlFrame(const Scene& sc, const VctSettings& st, FrameResult& r) : scene(sc), s(st), geo(sc), out(r) {}
+
+  const Scene& scene;
+  VctSettings s;
+  GlScene geo;
+  FrameResult& out;
+  GpuTimers timers;
+  int samples = 1;  // MSAA samples actually used for voxelization
+
+  std::vector<mat4> light_view_proj;
+  GLuint shadow_maps = 0;         // DEPTH_COMPONENT32F 2D array, one layer per light
+  std::array<GLuint, 6> gbuffer{};  // position(+coverage), normal, albedo, material, specular, emission
+  GLuint gbuffer_depth = 0;
+  GLuint gbuffer_fbo = 0;
+
+  GLenum voxel_format = GL_RGBA16F;
+  int levels = 1;
+  GLuint radiance = 0;                // voxel radiance with its mip chain
+  std::array<GLuint, 6> aniso{};      // directional volumes, level 0 = mip 1
+  std::array<GLuint, 4> sums{};       // r, g, b (or packed CAS), count
+  std::array<GLuint, 3> particle_sums{};
+  GLuint emitter_ubo = 0;
+
+  GLuint direct = 0, soft_shadow = 0;
+  std::array<GLuint, 5> shading{};  // indirect diffuse, indirect specular, diffuse term, specular term, final
+  GLuint particles = 0;
+  GLuint empty_vao = 0;
+};
+
+// The passes, in frame order.
+mat4 light_view_proj(const Scene& scene, const SpotLight& light);
+void shadow_pass(GlFrame& f);
+void gbuffer_pass(GlFrame& f);
+void voxel_passes(GlFrame& f);   // voxelization (+ multibounce frames), particles into voxels, mips
+void direct_pass(GlFrame& f);
+void indirect_pass(GlFrame& f);
+void particle_pass(GlFrame& f);
+void read_back(GlFrame& f);
+
+/// Binds the voxel mips (units 5..11) and sets the cone uniforms (cone.glsl) on `p`.
+void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std::array<GLuint, 6>& aniso);
+
+}  // namespace vct::gl

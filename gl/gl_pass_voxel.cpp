@@ -1,0 +1,204 @@
+// Voxelization (dominant-axis geometry shader, MSAA coverage on an attachment-less framebuffer),
+// the per-voxel reduction and its resolve, particles added into the voxels, temporal multibounce,
+// and the isotropic / anisotropic mip chains built by compute shaders.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gl_context.h"
+#include "gl_frame.h"
+#include "gl_resources.h"
+
+namespace vct::gl {
+namespace {
+
+GLuint groups(int n) { return GLuint((n + 3) / 4); }
+
+void bind_image(GLuint unit, GLuint tex, GLint level, GLenum access, GLenum format) {
+  glBindImageTexture(unit, tex, level, GL_TRUE, 0, access, format);
+}
+
+void clear_uint(GLuint tex) {
+  const GLuint zero = 0;
+  glClearTexImage(tex, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void set_volume(const GlFrame& f, const Program& p) {
+  p.set("u_volume_origin", f.scene.volume.origin);
+  p.set("u_volume_size", f.scene.volume.size);
+  p.set("u_grid", f.s.grid);
+}
+
+// std140 image of sh::ParticleEmitterBlock (seven vec4s).
+struct EmitterStd140 {
+  vec4 v[7];
+};
+
+EmitterStd140 emitter_block(const ParticleEmitter& e) {
+  EmitterStd140 b;
+  b.v[0] = vec4(e.origin, float(e.count));
+  b.v[1] = vec4(e.spawn_extent, e.lifetime);
+  b.v[2] = vec4(e.velocity_min, 0.0f);
+  b.v[3] = vec4(e.velocity_max, 0.0f);
+  b.v[4] = vec4(e.acceleration, 0.0f);
+  b.v[5] = vec4(e.color_start, e.size_start);
+  b.v[6] = vec4(e.color_end, e.size_end);
+  return b;
+}
+
+void inject_particles(GlFrame& f) {
+  for (GLuint& t : f.particle_sums) clear_uint(t);
+  if (!f.s.particles || f.scene.emitters.empty()) return;
+  ScopedTimer timer(f.timers, "particles_voxels");
+  const Program prog = Program::from_files({"particles_voxel.comp"});
+  prog.use();
+  set_volume(f, prog);
+  prog.set("u_time", f.s.time);
+  for (GLuint c = 0; c < 3; ++c) bind_image(4 + c, f.particle_sums[c], 0, GL_READ_WRITE, GL_R32UI);
+  for (size_t e = 0; e < f.scene.emitters.size(); ++e) {
+    const EmitterStd140 block = emitter_block(f.scene.emitters[e]);
+    glNamedBufferSubData(f.emitter_ubo, 0, sizeof block, &block);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, f.emitter_ubo);
+    prog.set("u_emitter_index", unsigned(e));
+    prog.set("u_count", unsigned(f.scene.emitters[e].count));
+    glDispatchCompute(GLuint((f.scene.emitters[e].count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  check_gl("particles into voxels");
+}
+
+// One voxelization frame into f.sums; bounce > 0 reads the previous frame's mips.
+void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
+              const std::array<GLuint, 6>& prev_aniso) {
+  ScopedTimer timer(f.timers, "voxelize");
+  for (GLuint& t : f.sums) clear_uint(t);
+  GLuint fbo = 0;
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_WIDTH, f.s.grid);
+  glNamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_HEIGHT, f.s.grid);
+  glNamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_SAMPLES, f.samples > 1 ? f.samples : 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, f.s.grid, f.s.grid);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  if (f.samples > 1) glEnable(GL_MULTISAMPLE);
+  prog.use();
+  set_volume(f, prog);
+  f.geo.set_lights(prog, f.s, f.light_view_proj);
+  glBindTextureUnit(4, f.shadow_maps);
+  prog.set("u_bounce", bounce);
+  prog.set("u_restitution", f.s.restitution);
+  prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
+  if (bounce > 0) bind_voxels(f, prog, prev_radiance, prev_aniso);
+  for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_WRITE, GL_R32UI);
+  f.geo.draw(prog);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  check_gl("voxelization");
+}
+
+void resolve(GlFrame& f, GLuint target) {
+  ScopedTimer timer(f.timers, "resolve");
+  const Program prog = Program::from_files({"voxel_resolve.comp"});
+  prog.use();
+  prog.set("u_grid", f.s.grid);
+  prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
+  for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_ONLY, GL_R32UI);
+  for (GLuint c = 0; c < 3; ++c) bind_image(4 + c, f.particle_sums[c], 0, GL_READ_ONLY, GL_R32UI);
+  bind_image(7, target, 0, GL_WRITE_ONLY, f.voxel_format);
+  glDispatchCompute(groups(f.s.grid), groups(f.s.grid), groups(f.s.grid));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  check_gl("voxel resolve");
+}
+
+void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso) {
+  ScopedTimer timer(f.timers, "mips");
+  const Program iso = Program::from_files({"mip_iso.comp"});
+  iso.use();
+  glBindTextureUnit(0, radiance);
+  for (int l = 1, size = f.s.grid / 2; l < f.levels; ++l, size /= 2) {
+    iso.set("u_src_level", l - 1);
+    iso.set("u_dst_size", size);
+    bind_image(0, radiance, l, GL_WRITE_ONLY, f.voxel_format);
+    glDispatchCompute(groups(size), groups(size), groups(size));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  if (f.s.anisotropic) {
+    const Program an = Program::from_files({"mip_aniso.comp"});
+    an.use();
+    for (int d = 0; d < 6; ++d) {
+      an.set("u_axis", d / 2);
+      an.set("u_positive", d % 2 == 0 ? 1 : 0);
+      for (int l = 0, size = f.s.grid / 2; l < f.levels - 1; ++l, size /= 2) {
+        // Level 0 of a directional volume is built from the shared base level.
+        glBindTextureUnit(0, l == 0 ? radiance : aniso[size_t(d)]);
+        an.set("u_src_level", l == 0 ? 0 : l - 1);
+        an.set("u_dst_size", size);
+        bind_image(0, aniso[size_t(d)], l, GL_WRITE_ONLY, f.voxel_format);
+        glDispatchCompute(groups(size), groups(size), groups(size));
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      }
+    }
+  }
+  check_gl("mips");
+}
+
+double total_radiance(GLuint radiance, int n) {
+  const Volume v = read_volume(radiance, 0, n, 4);
+  double sum = 0.0;
+  for (size_t i = 0; i < v.voxel_count(); ++i)
+    for (size_t c = 0; c < 3; ++c) sum += double(v.data[i * 4 + c]);
+  return sum;
+}
+
+}  // namespace
+
+void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std::array<GLuint, 6>& aniso) {
+  glBindTextureUnit(5, radiance);
+  for (GLuint d = 0; d < 6; ++d) glBindTextureUnit(6 + d, f.s.anisotropic ? aniso[d] : radiance);
+  p.set("u_anisotropic", f.s.anisotropic ? 1 : 0);
+  p.set("u_grid", f.s.grid);
+  p.set("u_cone_start", f.s.cone_offset_voxels / float(f.s.grid));
+  p.set("u_cone_max_distance", f.s.max_distance);
+  p.set("u_cone_quality", f.s.cone_quality);
+  p.set("u_diffuse_aperture", f.s.diffuse_aperture_deg * (kPi / 180.0f));
+  p.set("u_cosine_weighted", f.s.diffuse_weighting == DiffuseWeighting::Cosine ? 1 : 0);
+}
+
+void voxel_passes(GlFrame& f) {
+  const int n = f.s.grid;
+  f.voxel_format = f.s.storage == VoxelStorage::Rgba8 ? GL_RGBA8 : GL_RGBA16F;
+  f.levels = mip_count(n);
+  for (GLuint& t : f.sums) t = make_texture_3d(GL_R32UI, n, 1);
+  for (GLuint& t : f.particle_sums) t = make_texture_3d(GL_R32UI, n, 1);
+  glCreateBuffers(1, &f.emitter_ubo);
+  glNamedBufferStorage(f.emitter_ubo, 7 * sizeof(vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // Two voxel textures (and directional sets): multibounce frame b reads frame b-1's.
+  std::array<GLuint, 2> radiance{};
+  std::array<std::array<GLuint, 6>, 2> aniso{};
+  for (int i = 0; i < 2; ++i) {
+    radiance[size_t(i)] = make_texture_3d(f.voxel_format, n, f.levels);
+    if (f.s.anisotropic)
+      for (GLuint& t : aniso[size_t(i)]) t = make_texture_3d(f.voxel_format, n / 2, f.levels - 1);
+  }
+  const Program prog = Program::from_files({"voxelize.vert", "voxelize.geom", "voxelize.frag"});
+  inject_particles(f);
+  const int frames = std::max(f.s.bounces, 1);
+  size_t cur = 0;
+  for (int b = 0; b < frames; ++b) {
+    cur = size_t(b % 2);
+    const size_t prev = 1 - cur;
+    voxelize(f, prog, b, radiance[prev], aniso[prev]);
+    resolve(f, radiance[cur]);
+    build_mips(f, radiance[cur], aniso[cur]);
+    f.out.multibounce_energy.push_back(total_radiance(radiance[cur], n));
+    const size_t k = f.out.multibounce_energy.size();
+    if (f.s.convergence_tolerance > 0.0f && k >= 2) {
+      const double a = f.out.multibounce_energy[k - 2], e = f.out.multibounce_energy[k - 1];
+      if (std::abs(e - a) <= double(f.s.convergence_tolerance) * std::max(std::abs(e), 1e-30)) break;
+    }
+  }
+  f.radiance = radiance[cur];
+  f.aniso = aniso[cur];
+}
+
+}  // namespace vct::gl

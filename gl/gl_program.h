@@ -1,0 +1,56 @@
+// GLSL programs built from the embedded shader files (gl/shaders/*, ref/shared/vct_shared.h).
+// Every shader's source is "#version 450\n#define VCT_GLSL 1\n" + vct_shared.h + the file, with
+// `#include "name"` lines in our own files replaced by the named embedded file. Compile and link
+// errors throw std::runtime_error whose text names the shader file and carries the driver's log.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "gl_api.h"
+
+namespace vct::gl {
+
+const std::map<std::string, std::string>& embedded_files();
+
+/// One stage of a program: its GL type, a name used in messages, and its full source.
+struct ShaderSource {
+  GLenum type;
+  std::string name;
+  std::string source;
+};
+
+/// The complete source of an embedded shader file (prelude + shared header + includes).
+std::string assemble_shader(const std::string& file);
+
+/// Source for `file`, with its stage guessed from the extension (.vert/.geom/.frag/.comp).
+ShaderSource shader_file(const std::string& file);
+
+class Program {
+ public:
+  Program() = default;
+  explicit Program(const std::vector<ShaderSource>& stages);
+  /// Convenience: embedded files by name, e.g. {"fullscreen.vert", "direct.frag"}.
+  static Program from_files(const std::vector<std::string>& files);
+
+  GLuint id() const { return id_; }
+  void use() const;
+  GLint location(const char* name) const;
+  // Uniform setters; unknown names are ignored (the compiler may drop unused uniforms).
+  void set(const char* name, int v) const;
+  void set(const char* name, unsigned v) const;
+  void set(const char* name, float v) const;
+  void set(const char* name, const vec2& v) const;
+  void set(const char* name, const vec3& v) const;
+  void set(const char* name, const vec4& v) const;
+  void set(const char* name, const ivec3& v) const;
+  void set(const char* name, const mat3& v) const;
+  void set(const char* name, const mat4& v) const;
+
+ private:
+  GLuint id_ = 0;  // owned by the context (all objects die with it)
+};
+
+}  // namespace vct::gl

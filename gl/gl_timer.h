@@ -1,0 +1,41 @@
+// GPU time per stage from GPU timer queries (timestamp pairs; see gl_timer.cpp). Results are
+// collected once at the end so the queries never stall the pipeline mid-frame.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl_api.h"
+
+namespace vct::gl {
+
+class GpuTimers {
+ public:
+  void begin(const std::string& stage);
+  void end();
+  /// Waits for every query; stage name -> milliseconds (repeated stages are summed).
+  std::map<std::string, double> collect();
+
+ private:
+  struct Query {
+    std::string stage;
+    GLuint begin, end;
+  };
+  std::vector<Query> queries_;
+  bool open_ = false;
+};
+
+/// begin() in the constructor, end() in the destructor.
+class ScopedTimer {
+ public:
+  ScopedTimer(GpuTimers& t, const std::string& stage) : t_(t) { t_.begin(stage); }
+  ~ScopedTimer() { t_.end(); }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  GpuTimers& t_;
+};
+
+}  // namespace vct::gl

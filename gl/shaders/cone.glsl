@@ -1,0 +1,79 @@
+// Cone marching through the voxel mips with GL's own filtering: textureLod on 3D textures with
+// LINEAR_MIPMAP_LINEAR and CLAMP_TO_BORDER (border 0). The loop follows docs/pipeline.md
+// ("Cone marching"); the CPU's ref/stages/cone_trace.cpp is the independent twin.
+layout(binding = 5) uniform sampler3D u_voxels;
+layout(binding = 6) uniform sampler3D u_aniso_px;
+layout(binding = 7) uniform sampler3D u_aniso_nx;
+layout(binding = 8) uniform sampler3D u_aniso_py;
+layout(binding = 9) uniform sampler3D u_aniso_ny;
+layout(binding = 10) uniform sampler3D u_aniso_pz;
+layout(binding = 11) uniform sampler3D u_aniso_nz;
+uniform int u_anisotropic;
+uniform int u_grid;
+uniform float u_cone_start;     // texture units
+uniform float u_cone_max_distance;
+uniform float u_cone_quality;
+
+// A directional chain is [shared base level, aniso level 0 (= mip 1), ...].
+vec4 sample_direction(int d, vec3 uvw, float lod) {
+  vec4 upper;
+  float l = max(lod - 1.0f, 0.0f);
+  if (d == 0) upper = textureLod(u_aniso_px, uvw, l);
+  else if (d == 1) upper = textureLod(u_aniso_nx, uvw, l);
+  else if (d == 2) upper = textureLod(u_aniso_py, uvw, l);
+  else if (d == 3) upper = textureLod(u_aniso_ny, uvw, l);
+  else if (d == 4) upper = textureLod(u_aniso_pz, uvw, l);
+  else upper = textureLod(u_aniso_nz, uvw, l);
+  if (lod >= 1.0f) return upper;
+  vec4 base = textureLod(u_voxels, uvw, 0.0f);
+  float f = max(lod, 0.0f);
+  return f == 0.0f ? base : (1.0f - f) * base + f * upper;
+}
+
+vec4 sample_voxels(vec3 uvw, float lod, vec3 dir) {
+  if (u_anisotropic == 0) return textureLod(u_voxels, uvw, lod);
+  vec3 w = dir * dir;
+  vec4 r = vec4(0.0f);
+  if (w.x > 0.0f) r += w.x * sample_direction(dir.x >= 0.0f ? 0 : 1, uvw, lod);
+  if (w.y > 0.0f) r += w.y * sample_direction(dir.y >= 0.0f ? 2 : 3, uvw, lod);
+  if (w.z > 0.0f) r += w.z * sample_direction(dir.z >= 0.0f ? 4 : 5, uvw, lod);
+  return r;
+}
+
+bool inside_unit_cube(vec3 p) { return all(greaterThanEqual(p, vec3(0.0f))) && all(lessThanEqual(p, vec3(1.0f))); }
+
+// Returns (radiance, opacity) accumulated front to back (rgb premultiplied).
+vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float max_distance, float min_lod) {
+  float voxel = 1.0f / float(u_grid);
+  float tan_half = tan(0.5f * aperture);
+  vec3 color = vec3(0.0f);
+  float alpha = 0.0f;
+  float t = u_cone_start;
+  while (alpha < 1.0f && t < max_distance) {
+    vec3 pos = origin + dir * t;
+    if (!inside_unit_cube(pos)) break;
+    float diameter = max(voxel, 2.0f * t * tan_half);
+    float lod = max(log2(diameter / voxel), min_lod);
+    vec4 s = sample_voxels(pos, lod, dir);
+    float transmit = 1.0f - alpha;
+    color += transmit * s.rgb;
+    alpha += transmit * s.a;
+    t += max(diameter * u_cone_quality, 1e-6f);
+  }
+  return vec4(color, min(alpha, 1.0f));
+}
+
+uniform float u_diffuse_aperture;  // radians
+uniform int u_cosine_weighted;
+
+// The diffuse cone set at texture-space point `origin` with unit normal n.
+vec3 trace_diffuse(vec3 origin, vec3 n, float rotation, float min_lod) {
+  Frame f = frame_from_normal(n);
+  vec3 sum = vec3(0.0f);
+  for (int i = 0; i < MAX_DIFFUSE_CONES; ++i) {
+    vec3 dir = normalize(frame_to_world(f, diffuse_cone_direction(i, rotation)));
+    vec4 c = trace_cone(origin, dir, u_diffuse_aperture, u_cone_max_distance, min_lod);
+    sum += diffuse_cone_weight(i, u_cosine_weighted != 0) * c.rgb;
+  }
+  return sum;
+}

@@ -1,0 +1,42 @@
+// Direct light: Cook–Torrance (vct_shared.h) from every spot light, visibility from the PCF
+// shadow map or (soft shadows) from a cone toward the light through the voxels.
+#include "lights.glsl"
+#include "cone.glsl"
+#include "gbuffer_read.glsl"
+uniform int u_soft_shadows;
+uniform float u_shadow_aperture;  // radians
+
+layout(location = 0) out vec4 o_direct;
+layout(location = 1) out vec4 o_soft_shadow;
+
+float cone_visibility(vec3 p, vec3 light_position) {
+  vec3 origin = to_volume(p);
+  vec3 to_light = to_volume(light_position) - origin;
+  float dist = length(to_light);
+  if (dist <= 0.0f) return 1.0f;
+  return 1.0f - trace_cone(origin, to_light / dist, u_shadow_aperture, min(u_cone_max_distance, dist), 0.0f).a;
+}
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  GSample g = read_gbuffer(px);
+  o_direct = vec4(0.0f);
+  o_soft_shadow = vec4(0.0f);
+  if (!g.covered) return;
+  vec3 v = normalize(u_camera_position - g.position);
+  vec3 sum = vec3(0.0f);
+  for (int i = 0; i < u_light_count; ++i) {
+    vec3 l = light_vector(i, g.position);
+    float n_dot_l = dot(g.normal, l);
+    float vis;
+    if (u_soft_shadows != 0) {
+      vis = cone_visibility(g.position, u_light_position[i]);
+      if (i == 0) o_soft_shadow = vec4(vis);
+    } else {
+      vis = shadow_visibility(i, g.position);
+    }
+    if (n_dot_l <= 0.0f) continue;
+    sum += cook_torrance(g.pbr, g.normal, v, l) * light_irradiance(i, g.position) * n_dot_l * vis;
+  }
+  o_direct = vec4(sum, 0.0f);
+}

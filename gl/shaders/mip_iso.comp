@@ -1,0 +1,16 @@
+// Isotropic mip level l from level l-1: the box filter over the 2x2x2 children.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(binding = 0) uniform sampler3D u_src;
+layout(binding = 0) uniform writeonly image3D u_dst;
+uniform int u_src_level;
+uniform int u_dst_size;
+
+void main() {
+  ivec3 c = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(c, ivec3(u_dst_size)))) return;
+  vec4 sum = vec4(0.0f);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) sum += texelFetch(u_src, 2 * c + ivec3(i, j, k), u_src_level);
+  imageStore(u_dst, c, sum * 0.125f);
+}

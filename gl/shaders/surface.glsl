@@ -1,0 +1,74 @@
+// The textured material at a surface point: the GLSL twin of ref/scene/surface.cpp's
+// evaluate_material (same factors, same glTF channel use, same normal-map frame). Texture
+// filtering itself is GL's (SRGB8_ALPHA8 decode before filtering, LINEAR without mipmaps).
+uniform vec4 u_base_color_factor;
+uniform float u_metallic_factor;
+uniform float u_roughness_factor;
+uniform float u_normal_scale;
+uniform int u_normal_two_channel;
+uniform vec3 u_emission;           // emissive_factor * emissive_strength
+uniform float u_specular_factor;
+uniform vec3 u_specular_color;
+// Texture slots: 0 base colour, 1 metallic-roughness, 2 normal, 3 emissive.
+uniform int u_tex_present[4];
+uniform int u_tex_coord[4];
+uniform mat3 u_tex_transform[4];
+layout(binding = 0) uniform sampler2D u_tex_base;
+layout(binding = 1) uniform sampler2D u_tex_mr;
+layout(binding = 2) uniform sampler2D u_tex_normal;
+layout(binding = 3) uniform sampler2D u_tex_emissive;
+
+struct SurfaceMaterial {
+  vec3 albedo;
+  float metallic;
+  float roughness;
+  float specular_factor;
+  vec3 specular_color;
+  vec3 emission;
+  vec3 shading_normal;
+};
+
+vec2 slot_uv(int slot, vec2 uv0, vec2 uv1) {
+  vec2 uv = u_tex_coord[slot] == 1 ? uv1 : uv0;
+  return (u_tex_transform[slot] * vec3(uv, 1.0f)).xy;
+}
+
+vec3 apply_normal_map(vec3 normal, vec4 tangent, vec3 tn, float scale) {
+  tn.x *= scale;
+  tn.y *= scale;
+  vec3 t = tangent.xyz - normal * dot(normal, tangent.xyz);
+  float tl = length(t);
+  if (tl < 1e-8f) return normal;
+  t /= tl;
+  vec3 b = cross(normal, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+  vec3 n = t * tn.x + b * tn.y + normal * tn.z;
+  float nl = length(n);
+  return nl > 1e-8f ? n / nl : normal;
+}
+
+// `normal` is the interpolated vertex normal (already unit), `tangent` the interpolated tangent.
+SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1) {
+  SurfaceMaterial s;
+  vec4 base = u_base_color_factor;
+  if (u_tex_present[0] != 0) base *= texture(u_tex_base, slot_uv(0, uv0, uv1));
+  s.albedo = base.rgb;
+  s.metallic = u_metallic_factor;
+  s.roughness = u_roughness_factor;
+  if (u_tex_present[1] != 0) {
+    vec4 mr = texture(u_tex_mr, slot_uv(1, uv0, uv1));
+    s.roughness *= mr.g;
+    s.metallic *= mr.b;
+  }
+  s.specular_factor = u_specular_factor;
+  s.specular_color = u_specular_color;
+  s.emission = u_emission;
+  if (u_tex_present[3] != 0) s.emission *= texture(u_tex_emissive, slot_uv(3, uv0, uv1)).rgb;
+  s.shading_normal = normal;
+  if (u_tex_present[2] != 0) {
+    vec4 texel = texture(u_tex_normal, slot_uv(2, uv0, uv1));
+    vec3 tn = texel.xyz * 2.0f - 1.0f;
+    if (u_normal_two_channel != 0) tn.z = sqrt(max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
+    s.shading_normal = apply_normal_map(normal, tangent, tn, u_normal_scale);
+  }
+  return s;
+}

@@ -1,0 +1,68 @@
+// One fragment = one surface sample in one voxel: the in-plane voxel indices are the pixel's, the
+// depth index is floor(N x interpolated texture coordinate) along the projection axis (clamped).
+// Writes: fragment count (imageAtomicAdd), then either fixed-point sums (deterministic) or the
+// OpenGL Insights ch. 22 compare-and-swap running average on packed RGBA8.
+#include "voxel_value.glsl"
+#include "voxel_fixed.glsl"
+in vec3 v_position;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv0;
+in vec2 v_uv1;
+in vec3 v_tex;
+flat in int v_axis;
+flat in vec3 v_geometric_normal;
+
+uniform int u_reduction;  // 0 fixed point, 1 CAS RGBA8
+layout(binding = 0, r32ui) uniform coherent volatile uimage3D u_sum_r;  // CAS: the packed value
+layout(binding = 1, r32ui) uniform coherent volatile uimage3D u_sum_g;
+layout(binding = 2, r32ui) uniform coherent volatile uimage3D u_sum_b;
+layout(binding = 3, r32ui) uniform coherent volatile uimage3D u_count;
+
+ivec3 voxel_coords() {
+  int n = u_grid;
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  int d = clamp(int(floor(v_tex[v_axis] * float(n))), 0, n - 1);
+  if (v_axis == 2) return ivec3(px.x, px.y, d);
+  if (v_axis == 0) return ivec3(d, px.x, px.y);
+  return ivec3(px.x, d, px.y);
+}
+
+uint pack_rgba8(vec4 v) {
+  uvec4 b = uvec4(clamp(v, vec4(0.0f), vec4(255.0f)));  // truncation, as in the chapter's code
+  return b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u);
+}
+vec4 unpack_rgba8(uint v) {
+  return vec4(float(v & 0xFFu), float((v >> 8u) & 0xFFu), float((v >> 16u) & 0xFFu), float(v >> 24u));
+}
+
+void cas_average(ivec3 c, vec3 value) {
+  vec4 add = vec4(value * 255.0f, 1.0f);
+  uint next = pack_rgba8(add);
+  uint prev = 0u;
+  uint cur;
+  int guard = 0;
+  while ((cur = imageAtomicCompSwap(u_sum_r, c, prev, next)) != prev && guard < 65536) {
+    prev = cur;
+    vec4 r = unpack_rgba8(cur);
+    r.rgb *= r.a;  // de-normalize the running mean
+    vec4 sum = r + add;
+    sum.rgb /= sum.a;
+    next = pack_rgba8(sum);
+    ++guard;
+  }
+}
+
+void main() {
+  ivec3 c = voxel_coords();
+  vec3 value = voxel_radiance(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_tex);
+  imageAtomicAdd(u_count, c, 1u);
+  if (u_reduction == 1) {
+    cas_average(c, clamp(value, vec3(0.0f), vec3(1.0f)));
+  } else {
+    uvec3 q = voxel_fixed_encode(value);
+    imageAtomicAdd(u_sum_r, c, q.r);
+    imageAtomicAdd(u_sum_g, c, q.g);
+    imageAtomicAdd(u_sum_b, c, q.b);
+  }
+}

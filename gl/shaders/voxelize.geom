@@ -1,0 +1,45 @@
+// The seed's dominant-axis projection, verbatim in its decisions: the axis of the largest
+// |component| of the triangle's normal, with ties going to
+// x-or-y as the seed's strict comparisons do; z -> (x, y), x -> (y, z), y -> (x, z).
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in vec3 vg_position[];
+in vec3 vg_normal[];
+in vec4 vg_tangent[];
+in vec2 vg_uv0[];
+in vec2 vg_uv1[];
+in vec3 vg_tex[];
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_uv0;
+out vec2 v_uv1;
+out vec3 v_tex;
+flat out int v_axis;
+flat out vec3 v_geometric_normal;
+
+void main() {
+  vec3 pos[3] = vec3[3](gl_in[0].gl_Position.xyz, gl_in[1].gl_Position.xyz, gl_in[2].gl_Position.xyz);
+  // On world positions, as ref/stages/voxelize.cpp's dominant_axis (the [-1,1] mapping is a
+  // uniform scale, so only rounding at exact ties could differ from the seed's clip-space test).
+  vec3 p = abs(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
+  int axis = (p.z > p.x && p.z > p.y) ? 2 : (p.x > p.y ? 0 : 1);
+  vec3 gn = normalize(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
+  for (int i = 0; i < 3; ++i) {
+    if (axis == 2) gl_Position = vec4(pos[i].x, pos[i].y, 0.0f, 1.0f);
+    else if (axis == 0) gl_Position = vec4(pos[i].y, pos[i].z, 0.0f, 1.0f);
+    else gl_Position = vec4(pos[i].x, pos[i].z, 0.0f, 1.0f);
+    v_position = vg_position[i];
+    v_normal = vg_normal[i];
+    v_tangent = vg_tangent[i];
+    v_uv0 = vg_uv0[i];
+    v_uv1 = vg_uv1[i];
+    v_tex = vg_tex[i];
+    v_axis = axis;
+    v_geometric_normal = gn;
+    EmitVertex();
+  }
+  EndPrimitive();
+}
