@@ -1,0 +1,450 @@
+#!/usr/bin/env python3
+"""make_report.py RUN_DIR [RUN_DIR...]: writes RUN_DIR/report/index.html for each run directory
+(ours from `vct validate`, or a stage directory with vct-stages.json), a static page that opens
+from disk: images are files beside it, CSS/JS are inline, float data is embedded (docs/report.md).
+Prints each index.html path. Missing parts are shown as missing, never as errors."""
+import html
+import json
+import os
+import re
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vct_report import runio, svg  # noqa: E402
+from vct_report.walkthrough import STAGES  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SEED_GLOB_DIR = os.environ.get("VCT_SEED_DIR", "/work/shared/seed")
+E = html.escape
+
+
+def missing(what):
+    return '<div class="missing">missing: %s</div>' % E(what)
+
+
+class Page:
+    def __init__(self, run):
+        self.run = run
+        self.out_dir = os.path.join(run.path, "report")
+        os.makedirs(self.out_dir, exist_ok=True)
+        self.parts = []
+
+    def rel(self, path):
+        return os.path.relpath(path, self.out_dir)
+
+    def img(self, path, caption, cls="thumb"):
+        if not path:
+            return '<figure class="%s">%s<figcaption>%s</figcaption></figure>' % (cls, missing(caption), E(caption))
+        return '<figure class="%s"><img src="%s" alt="%s"><figcaption>%s</figcaption></figure>' % (
+            cls, E(self.rel(path)), E(caption), E(caption))
+
+
+def verdict_cell(v):
+    return '<td class="v-%s">%s</td>' % (E(v), E(v))
+
+
+def fmt(x, spec="%.4g"):
+    if x is None:
+        return "-"
+    if isinstance(x, (int, float)):
+        return spec % x
+    return E(str(x))
+
+
+# ---------------------------------------------------------------- summary
+def summary(p):
+    j = p.run.json
+    scene = j.get("scene", {})
+    env = j.get("environment", {})
+    backends = j.get("backends", {})
+    gl_info = backends.get("gl", {}).get("info", {})
+    for side, m in p.run.sets.items():
+        gl_info = gl_info or (m.get("info") if side != "ref" else {})
+    rows = []
+    for name in ("ref", "gl", "pt"):
+        b = backends.get(name)
+        if b is None and name in p.run.sets:
+            b = {"status": "ok (stage set)", "ms": None}
+        if b is None:
+            rows.append("<tr><td>%s</td><td class='v-missing'>missing</td><td></td></tr>" % name)
+            continue
+        ok = str(b.get("status", "")).startswith("ok")
+        rows.append("<tr><td>%s</td><td class='v-%s'>%s</td><td class='num'>%s</td></tr>" % (
+            name, "pass" if ok else "missing", E(str(b.get("status"))), fmt((b.get("ms") or 0) / 1000, "%.2f s") if b.get("ms") else "-"))
+    s = j.get("settings", {})
+    out = ['<h2 id="summary">Summary</h2><table>']
+    out.append("<tr><th>scene</th><td>%s (%s triangles, %s lights)</td></tr>" % (
+        E(str(scene.get("source", "?"))), fmt(scene.get("triangles")), fmt(scene.get("lights"))))
+    vct = s.get("vct", {})
+    out.append("<tr><th>settings</th><td>%sx%s, grid %s^3, %s, %s, bounces %s; path tracer %s spp</td></tr>" % (
+        fmt(vct.get("width")), fmt(vct.get("height")), fmt(vct.get("grid")), E(str(vct.get("storage", "?"))),
+        E(str(vct.get("reduction", "?"))), fmt(vct.get("bounces")), fmt(s.get("pt", {}).get("spp"))))
+    out.append("<tr><th>machine</th><td>%s, %s cores, %s threads; %s; %s</td></tr>" % (
+        E(str(env.get("cpu", "?"))), fmt(env.get("cores")), fmt(env.get("threads")), E(str(env.get("os", "?"))),
+        E(str(env.get("compiler", "?")))))
+    out.append("<tr><th>GL renderer</th><td>%s</td></tr>" % E(str(gl_info.get("GL_RENDERER", "not available in this run"))))
+    out.append("</table><table><tr><th>backend</th><th>status</th><th>time</th></tr>%s</table>" % "".join(rows))
+    out.append("<details><summary>all settings (run.json)</summary><pre class='settings'>%s</pre></details>" % E(json.dumps(s, indent=1)))
+    out.append(verdict_table(p))
+    return "".join(out)
+
+
+def verdict_table(p):
+    v = p.run.json.get("verdicts") or load_compare_json(p.run)
+    if not v or not v.get("stages"):
+        note = (v or {}).get("note", "no GPU run to compare")
+        return '<h3>GPU vs CPU verdicts</h3>' + missing("verdicts (%s)" % note)
+    first = v.get("first_failing", "")
+    out = ['<h3 id="verdicts">GPU vs CPU verdicts: <span class="v-%s">&nbsp;%s&nbsp;</span></h3>' % (E(v.get("overall", "")), E(v.get("overall", "")))]
+    if first:
+        out.append('<p class="firstfail">First failing stage: %s (later failures are usually its consequence).</p>' % E(first))
+    out.append("<table><tr><th>stage</th><th>verdict</th><th>model</th><th>bound</th><th>result</th><th>max |d|</th><th>worst offenders (reference / test)</th><th>mask</th></tr>")
+    for st in v["stages"]:
+        cls = ' class="first-fail"' if st["stage"] == first else ""
+        worst = st.get("worst", [])[:5]
+        wtxt = "<br>".join("%s: %s / %s" % (E(str(w["at"])), E(", ".join("%.4g" % x for x in w["reference"])),
+                                             E(", ".join("%.4g" % x for x in w["test"]))) for w in worst)
+        mask = st.get("mask")
+        mpath = os.path.join(p.run.path, mask) if mask else None
+        mcell = '<a href="%s"><img src="%s" style="width:64px"></a>' % (E(p.rel(mpath)), E(p.rel(mpath))) if mpath and os.path.exists(mpath) else ""
+        out.append("<tr%s><td>%s</td>%s<td>%s</td><td>%s</td><td>%s</td><td class='num'>%s</td><td>%s</td><td>%s</td></tr>" % (
+            cls, E(st["stage"]), verdict_cell(st["verdict"]), E(st.get("model", "")), E(st.get("bound", "")),
+            E(st.get("note", "")), fmt(st.get("max_abs")), wtxt, mcell))
+    out.append("</table>")
+    return "".join(out)
+
+
+def load_compare_json(run):
+    j = runio.load_json(os.path.join(run.path, "compare.json"))
+    return j.get("verdicts") if j else None
+
+
+# ---------------------------------------------------------------- final images + viewer
+def final_images(p):
+    run = p.run
+    cands = [("ref", run.stage_file("ref", "image.final"), run.stage_file("ref", "image.final", False)),
+             ("gl", run.stage_file("gl", "image.final"), run.stage_file("gl", "image.final", False)),
+             ("pt", run.file("pt", "pt_full.png"), run.file("pt", "pt_full.exr"))]
+    for side in run.sets:
+        if side not in ("ref", "gl"):
+            cands.append((side, run.stage_file(side, "image.final"), run.stage_file(side, "image.final", False)))
+    out = ['<h2 id="final">Final images</h2><div class="row">']
+    labels = {"ref": "CPU reference (VCT)", "gl": "GL (VCT)", "pt": "path tracer (ground truth)"}
+    for name, png, _ in cands:
+        out.append(p.img(png, labels.get(name, name), "wide" if False else "thumb"))
+    out.append("</div>")
+    floats = {}
+    for name, _, exr in cands:
+        arr = runio.read_exr(exr) if exr else None
+        if arr is not None:
+            floats[name] = runio.half_b64(arr)
+    out.append('<h3>Difference view</h3><div class="viewer"><div class="controls">'
+               '<label>A <select id="viewer-a"></select></label><label>B <select id="viewer-b"></select></label>'
+               '<label>view <select id="viewer-mode"><option value="a">A</option><option value="b">B</option>'
+               '<option value="flip">flip A/B (click or auto)</option><option value="diff">|A-B| heat</option>'
+               '<option value="reldiff">|A-B|/(A+0.01) heat</option></select></label>'
+               '<label>exposure <input id="viewer-ev" type="range" min="-6" max="6" step="0.25" value="0"> <span id="viewer-ev-out"></span></label>'
+               '</div><canvas id="viewer-canvas" width="256" height="256"></canvas><div id="viewer-info"></div></div>')
+    if not floats:
+        out.append(missing("float data for the viewer (no EXR readable: flip-evaluator missing?)"))
+    out.append("<script>window.VCT_FLOAT_IMAGES=%s;</script>" % json.dumps(floats))
+    return "".join(out)
+
+
+# ---------------------------------------------------------------- bias
+def flip_for(run, comp, vct_exr, pt_exr, out_dir):
+    try:
+        import flip_evaluator
+    except ImportError:
+        return None, None
+    a, b = runio.read_exr(pt_exr), runio.read_exr(vct_exr)
+    if a is None or b is None or a.shape != b.shape:
+        return None, None
+    a = np.clip(np.nan_to_num(a[:, :, :3]), 0, None)
+    b = np.clip(np.nan_to_num(b[:, :, :3]), 0, None)
+    if a.max() <= 0 and b.max() <= 0:
+        return 0.0, None
+    try:
+        emap, mean, _ = flip_evaluator.evaluate(a, b, "HDR")
+    except Exception:  # noqa: BLE001
+        return None, None
+    path = os.path.join(out_dir, "flip_%s.png" % comp)
+    runio.write_png(path, np.asarray(emap, dtype=np.float32))
+    return float(mean), path
+
+
+def bias_section(p):
+    run = p.run
+    b = run.json.get("bias")
+    out = ['<h2 id="bias">Bias against the path tracer</h2>']
+    if not b:
+        return "".join(out) + missing("bias (needs the CPU reference and the path tracer in this run)")
+    out.append("<p>Reference = path tracer; relMSE = mean((VCT-PT)^2/(PT^2+eps)) with eps = 0.01; "
+               "mean bias = mean(VCT-PT); relative bias = sum(VCT-PT)/sum(PT); SSIM on luminance (Gaussian 11x11); "
+               "FLIP (HDR, flip-evaluator); noise-aware: fraction of pixels with |VCT-PT| > 3 sigma_PT (pooled 5x5 "
+               "half-split variance) against what PT noise alone gives (Student t, 24 dof).</p>")
+    for side, rows in b.items():
+        out.append("<h3>%s vs path tracer</h3><table><tr><th>component</th><th>VCT</th><th>PT</th><th>relMSE</th>"
+                   "<th>mean bias</th><th>rel. bias</th><th>SSIM</th><th>FLIP</th><th>&gt;3&sigma;</th><th>noise alone</th>"
+                   "<th>mean z</th><th>judgement</th></tr>" % E(side))
+        pics = []
+        for r in rows:
+            if not r.get("available"):
+                out.append("<tr><td>%s</td><td colspan=11 class='v-missing'>%s</td></tr>" % (E(r["component"]), E(r.get("note", ""))))
+                continue
+            vct_exr = run.stage_file(side, r["vct"], False)
+            mean_flip, flip_png = flip_for(run, side + "_" + r["component"], vct_exr, run.file("pt", r["pt"] + ".exr"), p.out_dir)
+            out.append("<tr><td>%s</td><td>%s</td><td>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td>"
+                       "<td class=num>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td>"
+                       "<td class='v-%s'>%s</td></tr>" % (
+                           E(r["component"]), E(r["vct"]), E(r["pt"]), fmt(r.get("rel_mse")), fmt(r.get("mean_bias")),
+                           fmt(100 * r.get("relative_bias", 0), "%+.2f%%"), fmt(r.get("ssim"), "%.4f"),
+                           fmt(mean_flip, "%.4f") if mean_flip is not None else "n/a",
+                           fmt(100 * r.get("fraction_beyond_k_sigma", 0), "%.2f%%"), fmt(100 * r.get("expected_fraction", 0), "%.2f%%"),
+                           fmt(r.get("mean_bias_z"), "%.1f"), "warn" if r.get("significant") else "pass",
+                           "bias beyond PT noise" if r.get("significant") else "within PT noise"))
+            heat = os.path.join(run.path, r["heatmap"]) if r.get("heatmap") else None
+            z = os.path.join(run.path, r["zmap"]) if r.get("zmap") else None
+            pics.append('<div><b>%s</b><div class="row">%s%s%s%s%s</div></div>' % (
+                E(r["component"]), p.img(run.stage_file(side, r["vct"]), "VCT " + r["vct"]),
+                p.img(run.file("pt", r["pt"] + ".png"), "PT " + r["pt"]),
+                p.img(heat if heat and os.path.exists(heat) else None, "signed rel. error (blue: VCT darker, red: brighter)"),
+                p.img(z if z and os.path.exists(z) else None, "z = (VCT-PT)/sigma, +-6 full scale"),
+                p.img(flip_png, "FLIP error map") if flip_png else ""))
+        out.append("</table>")
+        out.append("<details %s><summary>heat maps (%s)</summary>%s</details>" % ("open" if side == "ref" else "", E(side), "".join(pics)))
+    return "".join(out)
+
+
+# ---------------------------------------------------------------- walkthrough
+def walkthrough(p):
+    run = p.run
+    j = run.json
+    vct = j.get("settings", {}).get("vct", {})
+    times = j.get("timings_ms", {})
+    verdicts = {s["stage"]: s for s in (j.get("verdicts") or {}).get("stages", [])}
+    out = ['<h2 id="walkthrough">Walkthrough: the pipeline stage by stage</h2>']
+    for key, title, prefixes, text, settings, timing_key in STAGES:
+        body = ['<div class="stage" id="stage-%s"><h3>%s</h3><p>%s</p>' % (key, E(title), E(text))]
+        body.append('<div class="settings">%s</div>' % " &middot; ".join(
+            "%s = %s" % (E(k), E(json.dumps(vct[k]))) for k in settings if k in vct))
+        if timing_key:
+            t = ["%s %.2f ms" % (b, times[b][timing_key]) for b in ("ref", "gl") if timing_key in times.get(b, {})]
+            if t:
+                body.append("<div>time: %s</div>" % E(", ".join(t)))
+        stage_names = [s for s in (run.stages("ref") or run.stages("gl")) if any(s == pre or (pre.endswith(".") and s.startswith(pre)) for pre in prefixes)]
+        if key == "inject":
+            stage_names = ["voxel.radiance"]
+        if key == "voxelize":
+            stage_names = [s for s in ("voxel.conservative", "voxel.fragments") if s in run.stages("ref") or s in run.stages("gl")]
+        figs = []
+        for st in stage_names:
+            for side in ("ref", "gl"):
+                if side in run.sets:
+                    figs.append(p.img(run.stage_file(side, st), "%s: %s" % (side, st)))
+            if st in verdicts:
+                v = verdicts[st]
+                figs.append('<div><table><tr><th>%s</th>%s</tr><tr><td colspan=2>%s<br>%s</td></tr></table></div>' % (
+                    E(st), verdict_cell(v["verdict"]), E(v.get("bound", "")), E(v.get("note", ""))))
+        if key == "voxelize":
+            figs.append(voxel_view(p))
+            for extra in ("voxel.occupancy", "voxel.holes"):
+                if extra in verdicts:
+                    v = verdicts[extra]
+                    figs.append('<div><table><tr><th>%s</th>%s</tr><tr><td colspan=2>%s</td></tr></table></div>' % (
+                        E(extra), verdict_cell(v["verdict"]), E(v.get("note", ""))))
+        if key == "explain":
+            ex = runio.load_json(os.path.join(run.path, "explain", "explain.json"))
+            figs.append(p.img(run.file("explain", "explain.png"), "cones of the explained pixel over a slice of the grid", "wide"))
+            if ex:
+                figs.append(explain_table(ex))
+        if key == "multibounce":
+            mb = j.get("multibounce_energy", {})
+            figs.append(svg.line_plot("voxel energy per multibounce frame", list(range(1, 1 + max((len(v) for v in mb.values()), default=0))),
+                                      [(k, v) for k, v in mb.items()], "frame", "total voxel radiance") if mb else missing("multibounce energy"))
+        if not figs:
+            figs.append(missing("%s (not produced in this run)" % title))
+        body.append('<div class="row">%s</div></div>' % "".join(figs))
+        out.append("".join(body))
+    return "".join(out)
+
+
+def explain_table(ex):
+    rows = []
+    for c in ex.get("cones", [])[:8]:
+        rows.append("<tr><td>%s %s</td><td>%s</td><td class=num>%d</td><td>%s</td></tr>" % (
+            E(str(c.get("kind"))), E(str(c.get("index"))), E(", ".join("%.2f" % d for d in c.get("direction", []))),
+            len(c.get("samples", [])), E(", ".join("%.3f" % d for d in c.get("result_rgba", [])))))
+    px = ex.get("pixel", "")
+    return '<div><b>pixel %s</b><table><tr><th>cone</th><th>direction</th><th>samples</th><th>result rgba</th></tr>%s</table></div>' % (
+        E(str(px)), "".join(rows))
+
+
+def voxel_view(p):
+    run = p.run
+    side = "ref" if "ref" in run.sets else next(iter(run.sets), None)
+    path = run.stage_file(side, "voxel.radiance", False) if side else None
+    vol = runio.read_nrrd(path) if path else None
+    if vol is None:
+        return missing("voxel radiance volume for the 3D view")
+    n = vol.shape[0]
+    alpha = vol[..., 3] if vol.shape[3] >= 4 else vol[..., 0]
+    zz, yy, xx = np.nonzero(alpha > 0)
+    step = max(1, int(np.ceil(len(xx) / 30000)))
+    pts = []
+    for x, y, z in zip(xx[::step], yy[::step], zz[::step]):
+        c = vol[z, y, x, :3]
+        c = c / (1.0 + c)  # Reinhard, enough to tell surfaces apart
+        c = np.clip(c ** (1 / 2.2), 0, 1)
+        pts.append([int(x), int(y), int(z), "%02x%02x%02x" % tuple(int(v * 255) for v in c)])
+    return ('<figure><canvas id="voxel-canvas" width="360" height="360"></canvas><figcaption>occupied voxels (%d of %d shown), '
+            'turn: <input id="voxel-rot" type="range" min="-180" max="180" value="30"></figcaption></figure>'
+            '<script>window.VCT_VOXELS=%s;</script>') % (len(pts), len(xx), json.dumps({"n": int(n), "points": pts}, separators=(",", ":")))
+
+
+# ---------------------------------------------------------------- performance
+def parse_seed_tables():
+    """The seed report's performance tables (its 'Performance' section), parsed from the text."""
+    try:
+        names = sorted(f for f in os.listdir(SEED_GLOB_DIR) if f.endswith(".txt"))
+        text = open(os.path.join(SEED_GLOB_DIR, names[0])).read()
+    except (OSError, IndexError):
+        return None
+    t = {}
+    m = re.search(r"Grid Size\tNo HDR, No TM\tHDR, No TM\tHDR \+ TM\n((?:\d+\t.*\n)+)", text)
+    if m:
+        t["voxelization"] = [[c.replace(" ms", "") for c in line.split("\t")] for line in m.group(1).strip().splitlines()]
+    m = re.search(r"Size\t([\d\t]+)\nTime \(HDR\)\t(.*)\n", text)
+    if m:
+        t["cone_tracing"] = list(zip(m.group(1).split("\t"), [c.replace(" ms", "") for c in m.group(2).split("\t")]))
+    m = re.search(r"Isotropic\tAnisotropic\n(.*)\n", text)
+    if m:
+        t["aniso"] = [c.replace(" ms", "") for c in m.group(1).split("\t")]
+    m = re.search(r"Time with NO Occlusion Culling\tTime with Occlusion Culling\n(.*)\n", text)
+    if m:
+        t["culling"] = [c.replace(" ms", "") for c in m.group(1).split("\t")]
+    return t
+
+
+def performance(p):
+    j = p.run.json
+    times = j.get("timings_ms", {})
+    out = ['<h2 id="performance">Performance</h2>']
+    stages = sorted({k for b in times.values() for k in b})
+    if stages:
+        out.append("<h3>This run: per-stage time (ms)</h3><table><tr><th>stage</th><th>CPU reference</th><th>GL</th></tr>")
+        for s in stages:
+            out.append("<tr><td>%s</td><td class=num>%s</td><td class=num>%s</td></tr>" % (
+                E(s), fmt(times.get("ref", {}).get(s), "%.2f"), fmt(times.get("gl", {}).get(s), "%.2f")))
+        out.append("</table>")
+    else:
+        out.append(missing("stage timings"))
+    out.append(sweeps(p))
+    seed = parse_seed_tables()
+    out.append("<h3>The seed's tables (Ryzen 3500U / Vega 8, its report) beside ours</h3>")
+    if not seed:
+        out.append(missing("seed report text (%s)" % SEED_GLOB_DIR))
+        return "".join(out)
+    ours_vox = {}
+    ours_cone = {}
+    for sw in j.get("sweeps", []):
+        if sw.get("key") == "grid":
+            for r in sw["rows"]:
+                ours_vox[str(r["value"])] = (r.get("ref_timings_ms", {}).get("voxelize"), r.get("gl_timings_ms", {}).get("voxelize"))
+                ours_cone[str(r["value"])] = (r.get("ref_timings_ms", {}).get("indirect_cones"), r.get("gl_timings_ms", {}).get("indirect_cones"))
+    if "voxelization" in seed:
+        out.append("<table><tr><th>grid</th><th>seed: no HDR, no TM</th><th>seed: HDR, no TM</th><th>seed: HDR + TM</th>"
+                   "<th>ours ref voxelize</th><th>ours GL voxelize</th></tr>")
+        for row in seed["voxelization"]:
+            o = ours_vox.get(row[0], (None, None))
+            out.append("<tr><td>%s</td>%s<td class=num>%s</td><td class=num>%s</td></tr>" % (
+                E(row[0]), "".join("<td class=num>%s</td>" % E(c) for c in row[1:]), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
+        out.append("</table>")
+    if "cone_tracing" in seed:
+        out.append("<table><tr><th>grid</th><th>seed cone tracing (HDR)</th><th>ours ref cones</th><th>ours GL cones</th></tr>")
+        for g, ms in seed["cone_tracing"]:
+            o = ours_cone.get(g, (None, None))
+            out.append("<tr><td>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td></tr>" % (E(g), E(ms), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
+        out.append("</table>")
+    if "aniso" in seed:
+        out.append("<table><tr><th></th><th>isotropic</th><th>anisotropic</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr></table>" % tuple(E(c) for c in seed["aniso"][:2]))
+    if "culling" in seed:
+        out.append("<table><tr><th></th><th>no occlusion culling</th><th>with depth pre-pass</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr></table>" % tuple(E(c) for c in seed["culling"][:2]))
+    out.append("<p>Ours for these rows: <code>vct bench</code> and <code>vct validate --sweep grid=32,64,128,256</code> / "
+               "<code>--sweep anisotropic=false,true</code> / <code>--sweep depth_prepass=false,true</code> fill them.</p>")
+    return "".join(out)
+
+
+def sweeps(p):
+    sw = p.run.json.get("sweeps")
+    if not sw:
+        return "<h3>Sweeps</h3>" + missing("sweeps (run with --sweep grid=64,128,256 ...)")
+    out = []
+    for s in sw:
+        key, rows = s["key"], s["rows"]
+        comps = []
+        for r in rows:
+            for b in r.get("bias", []):
+                if b.get("available") and b["component"] not in comps:
+                    comps.append(b["component"])
+        out.append("<h3>Sweep: %s</h3><table><tr><th>%s</th><th>ref ms</th><th>GL ms</th><th>GL verdict</th>%s</tr>" % (
+            E(key), E(key), "".join("<th>%s relMSE / rel. bias</th>" % E(c) for c in comps)))
+        for r in rows:
+            bias = {b["component"]: b for b in r.get("bias", []) if b.get("available")}
+            out.append("<tr><td>%s</td><td class=num>%s</td><td class=num>%s</td><td>%s</td>%s</tr>" % (
+                E(str(r["value"])), fmt(r.get("ref_ms"), "%.1f"), fmt(r.get("gl_ms"), "%.1f"),
+                E(str(r.get("gl_verdict", r.get("gl_status", "-")))),
+                "".join("<td class=num>%s / %s</td>" % (fmt(bias[c]["rel_mse"]), fmt(100 * bias[c]["relative_bias"], "%+.1f%%"))
+                        if c in bias else "<td>-</td>" for c in comps)))
+        out.append("</table>")
+        xs = [str(r["value"]) for r in rows]
+        series = [(c, [next((b["rel_mse"] for b in r.get("bias", []) if b.get("component") == c and b.get("available")), None) for r in rows]) for c in comps]
+        tseries = [("ref", [r.get("ref_ms") for r in rows])]
+        if any(r.get("gl_ms") for r in rows):
+            tseries.append(("gl", [r.get("gl_ms") for r in rows]))
+        out.append('<div class="row">%s%s</div>' % (svg.line_plot("relMSE vs " + key, xs, series, key, "relMSE", logy=True),
+                                                      svg.line_plot("frame time vs " + key, xs, tseries, key, "ms", logy=True)))
+    return "".join(out)
+
+
+# ---------------------------------------------------------------- page
+def build(run_dir):
+    run = runio.Run(run_dir)
+    if not run.json and not run.sets:
+        raise SystemExit("make_report.py: %s: neither run.json nor vct-stages.json here" % run_dir)
+    p = Page(run)
+    css = open(os.path.join(HERE, "vct_report", "style.css")).read()
+    js = open(os.path.join(HERE, "vct_report", "viewer.js")).read()
+    scene = run.json.get("scene", {}).get("source", os.path.basename(run.path))
+    sections = [summary(p), final_images(p), bias_section(p), walkthrough(p), performance(p)]
+    doc = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>VCT Oracle: %s</title><style>%s</style></head><body>" % (E(str(scene)), css),
+           "<header><h1>VCT Oracle report: %s</h1><div class='sub'>%s</div></header>" % (E(str(scene)), E(run.path)),
+           "<nav><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a>"
+           "<a href='#walkthrough'>walkthrough</a><a href='#performance'>performance</a></nav><main>",
+           "".join(sections),
+           "<p>Report status (for tests): <code id='status' data-ok='pending'>pending</code></p>",
+           "</main><script>%s</script></body></html>" % js]
+    index = os.path.join(p.out_dir, "index.html")
+    tmp = index + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("".join(doc))
+    os.replace(tmp, index)
+    return index
+
+
+def main(argv):
+    if len(argv) < 2 or argv[1] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if len(argv) >= 2 else 2
+    for d in argv[1:]:
+        if not os.path.isdir(d):
+            print("make_report.py: %s: not a directory" % d, file=sys.stderr)
+            return 2
+        print(build(d))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
