@@ -4,6 +4,7 @@
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -59,7 +60,7 @@ std::string read_bytes(const std::string& path) {
 
 // The checks tinygltf would report unclearly or not at all: JSON syntax, asset.version,
 // required extensions. Warns about used-but-unsupported extensions.
-void precheck_json(const std::string& text, const std::string& name, std::vector<std::string>& warnings) {
+nlohmann::json precheck_json(const std::string& text, const std::string& name, std::vector<std::string>& warnings) {
   const size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos || text[first] != '{') {
     throw InputError(name, "not a glTF file (neither a JSON object nor a GLB container)");
@@ -98,6 +99,19 @@ void precheck_json(const std::string& text, const std::string& name, std::vector
       if (e.is_string() && !supported(e.get<std::string>())) warnings.push_back("extension " + e.get<std::string>() + " is ignored");
     }
   }
+  return j;
+}
+
+// tinygltf names images by index ("image[3]"); add the file name so the user knows which one.
+std::string name_image(const std::string& message, const nlohmann::json& doc) {
+  const size_t at = message.find("image[");
+  if (at == std::string::npos) return message;
+  const size_t index = std::strtoul(message.c_str() + at + 6, nullptr, 10);
+  if (!doc.contains("images") || !doc["images"].is_array() || index >= doc["images"].size()) return message;
+  const auto& img = doc["images"][index];
+  if (!img.contains("uri") || !img["uri"].is_string()) return message + " (image stored in a bufferView)";
+  const std::string uri = img["uri"];
+  return message + (uri.rfind("data:", 0) == 0 ? " (embedded data URI)" : " (uri '" + uri + "')");
 }
 
 uint32_t u32_at(const std::string& b, size_t at) {
@@ -158,7 +172,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
 
 Scene parse(const std::string& bytes, bool glb, const std::string& name, const std::string& base_dir) {
   std::vector<std::string> warnings;
-  precheck_json(glb ? check_glb(bytes, name) : bytes, name, warnings);
+  const nlohmann::json doc = precheck_json(glb ? check_glb(bytes, name) : bytes, name, warnings);
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   std::string err, warn;
@@ -173,7 +187,7 @@ Scene parse(const std::string& bytes, bool glb, const std::string& name, const s
   } catch (const std::exception& e) {
     throw InputError(name, std::string("glTF parse failed: ") + e.what());
   }
-  if (!ok) throw InputError(name, one_line(err.empty() ? "glTF parse failed" : err));
+  if (!ok) throw InputError(name, "tinygltf: " + name_image(one_line(err.empty() ? "parse failed" : err), doc));
   std::istringstream lines(warn);
   for (std::string line; std::getline(lines, line);) {
     if (!line.empty()) warnings.push_back(line);

@@ -43,7 +43,10 @@ std::vector<vec4> generate_tangents(const std::vector<vec3>& positions, const st
   for (size_t i = 0; i < n; ++i) {
     const vec3 nrm = normals[i];
     const vec3 t = vec3(tan[i]);
-    const float w = glm::dot(glm::cross(nrm, t), vec3(bit[i])) < 0.0f ? -1.0f : 1.0f;
+    // glTF UVs put v = 0 at the top of the image while normal maps are "+Y up" (OpenGL
+    // convention, as the glTF Sample Viewer and Blender use): the bitangent cross(N, T) * w
+    // must point toward *decreasing* v, i.e. against dP/dv.
+    const float w = glm::dot(glm::cross(nrm, t), vec3(bit[i])) > 0.0f ? -1.0f : 1.0f;
     out[i] = orthogonalize_tangent(nrm, vec4(t, w));
   }
   return out;
