@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 
 namespace vct {
 namespace {
@@ -257,6 +258,7 @@ void validate_settings(const Settings& s) {
   require(p.spp >= 1, "spp must be >= 1");
   require(p.max_depth >= 1 && p.max_depth <= 1024, "max_depth must be in 1..1024");
   require(s.threads >= 0 && s.threads <= 1024, "threads must be in 0..1024");
+  check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }
 
 }  // namespace vct
