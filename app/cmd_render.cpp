@@ -1,17 +1,182 @@
-// vct render: not built yet (see the open issues); registered so --help lists it.
+// vct render SCENE --backend ref|gl: one VCT frame. Always writes final.exr/final.png and
+// run.json (settings, environment, timings, scene summary, multibounce energy); --dump writes
+// every stage through the shared dump writer; --explain X,Y writes one pixel's cones.
 #include <cstdio>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/image_io.h"
+#include "io/run_dir.h"
+#include "options.h"
+#include "scene/gltf_loader.h"
+#include "stages/dumps.h"
+#include "stages/explain.h"
+#include "stages/pipeline.h"
+
+#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
+#include "gl/gl_pipeline.h"
+#define VCT_RENDER_GL 1
+#endif
 
 namespace vct::app {
 
+namespace {
+
+// The VCT knobs a user most often turns, as flags; each one left unset keeps the --config value.
+struct VctFlags {
+  std::string backend = "ref";
+  bool dump = false;
+  std::string explain;
+  bool aniso = false, soft_shadows = false, random_rotation = false, no_particles = false;
+  bool no_diffuse = false, no_specular = false;
+  std::optional<int> bounces, msaa, shadow_map_size, frame;
+  std::optional<float> restitution, tolerance, quality, offset, aperture, time;
+  std::optional<std::string> light_model, voxelizer, storage, reduction, weighting;
+};
+
+void add_vct_flags(CLI::App* cmd, VctFlags& f) {
+  cmd->add_option("--backend", f.backend, "ref (CPU reference) or gl (OpenGL 4.5)")->check(CLI::IsMember({"ref", "gl"}));
+  cmd->add_flag("--dump", f.dump, "Write every stage (images, volumes, mips) into the run directory");
+  cmd->add_option("--explain", f.explain, "X,Y: write that pixel's cones (JSON + picture); row 0 = top");
+  cmd->add_flag("--aniso", f.aniso, "Anisotropic voxels (six directional mip volumes)");
+  cmd->add_flag("--soft-shadows", f.soft_shadows, "Cone-traced shadows instead of PCF");
+  cmd->add_flag("--random-rotation", f.random_rotation, "Rotate the diffuse cones per pixel (hash of pixel, frame)");
+  cmd->add_flag("--no-particles", f.no_particles, "Leave out the fire particles");
+  cmd->add_flag("--no-diffuse", f.no_diffuse, "Skip the diffuse cones");
+  cmd->add_flag("--no-specular", f.no_specular, "Skip the specular cone");
+  cmd->add_option("--bounces", f.bounces, "Temporal multibounce frames (1 = direct light in voxels only)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--restitution", f.restitution, "Multibounce attenuation factor");
+  cmd->add_option("--tolerance", f.tolerance, "Stop multibounce when the relative energy change is below this");
+  cmd->add_option("--quality", f.quality, "Cone step = diameter x quality");
+  cmd->add_option("--offset", f.offset, "Cone start offset in voxels");
+  cmd->add_option("--aperture", f.aperture, "Diffuse cone aperture in degrees");
+  cmd->add_option("--time", f.time, "Time in seconds (particles)");
+  cmd->add_option("--frame", f.frame, "Frame index (random cone rotation hash)");
+  cmd->add_option("--msaa", f.msaa, "Samples of the GPU voxelizer rule (1, 4, 8)");
+  cmd->add_option("--shadow-map-size", f.shadow_map_size, "Shadow map resolution");
+  cmd->add_option("--light-model", f.light_model, "gltf or seed");
+  cmd->add_option("--voxelizer", f.voxelizer, "conservative or gpu");
+  cmd->add_option("--storage", f.storage, "rgba8 or rgba16f");
+  cmd->add_option("--reduction", f.reduction, "exact, fixed or cas");
+  cmd->add_option("--weighting", f.weighting, "Diffuse cone weights: cosine or seed");
+}
+
+// Flags become a JSON patch over the settings, so enum names and errors are the --config ones.
+Settings apply_vct_flags(Settings s, const VctFlags& f) {
+  nlohmann::json patch = nlohmann::json::object();
+  if (f.aniso) patch["anisotropic"] = true;
+  if (f.soft_shadows) patch["soft_shadows"] = true;
+  if (f.random_rotation) patch["random_rotation"] = true;
+  if (f.no_particles) patch["particles"] = false;
+  if (f.no_diffuse) patch["diffuse_cones"] = false;
+  if (f.no_specular) patch["specular_cones"] = false;
+  if (f.bounces) patch["bounces"] = *f.bounces;
+  if (f.msaa) patch["msaa_samples"] = *f.msaa;
+  if (f.shadow_map_size) patch["shadow_map_size"] = *f.shadow_map_size;
+  if (f.frame) patch["frame"] = *f.frame;
+  if (f.restitution) patch["restitution"] = *f.restitution;
+  if (f.tolerance) patch["convergence_tolerance"] = *f.tolerance;
+  if (f.quality) patch["cone_quality"] = *f.quality;
+  if (f.offset) patch["cone_offset_voxels"] = *f.offset;
+  if (f.aperture) patch["diffuse_aperture_deg"] = *f.aperture;
+  if (f.time) patch["time"] = *f.time;
+  if (f.light_model) patch["light_model"] = *f.light_model;
+  if (f.voxelizer) patch["voxelizer"] = *f.voxelizer;
+  if (f.storage) patch["storage"] = *f.storage;
+  if (f.reduction) patch["reduction"] = *f.reduction;
+  if (f.weighting) patch["diffuse_weighting"] = *f.weighting;
+  nlohmann::json j = s.vct;
+  j.merge_patch(patch);
+  from_json(j, s.vct);
+  validate_settings(s);
+  return s;
+}
+
+ivec2 parse_pixel(const std::string& text) {
+  int x = 0, y = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &extra) != 2) {
+    throw InputError("--explain", "expected X,Y (two integers), got '" + text + "'");
+  }
+  return ivec2(x, y);
+}
+
+FrameResult render_frame(const Scene& scene, const Settings& s, const std::string& backend) {
+  if (backend == "ref") return render_ref_frame(scene, s);
+#ifdef VCT_RENDER_GL
+  return vct::gl::render_gl_frame(scene, s);
+#else
+  throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");
+#endif
+}
+
+nlohmann::json scene_summary(const Scene& scene) {
+  return {{"source", scene.source},
+          {"triangles", scene.triangle_count()},
+          {"vertices", scene.positions.size()},
+          {"materials", scene.materials.size()},
+          {"spot_lights", scene.spot_lights.size()},
+          {"emitters", scene.emitters.size()},
+          {"volume", {{"origin", {scene.volume.origin.x, scene.volume.origin.y, scene.volume.origin.z}},
+                      {"size", scene.volume.size}}}};
+}
+
+void write_explain(RunDir& run, const Scene& scene, const FrameResult& frame, const VctSettings& s, ivec2 px) {
+  const PixelExplanation e = explain_pixel(scene, frame, s, px.x, px.y);
+  const std::string stem = "explain_" + std::to_string(px.x) + "_" + std::to_string(px.y);
+  write_text_atomically(run.file(stem + ".json"), e.json.dump(1) + "\n");
+  write_png_linear(run.file(stem + ".png"), e.picture, 0.0f, 1.0f);
+}
+
+void run_render(const std::string& scene_path, const CommonOptions& common, const VctFlags& flags) {
+  const Settings settings = apply_vct_flags(resolve_settings(common), flags);
+  std::optional<ivec2> explain;
+  if (!flags.explain.empty()) explain = parse_pixel(flags.explain);
+  const Scene scene = load_scene(scene_path);
+  const FrameResult frame = render_frame(scene, settings, flags.backend);
+  if (frame.images.final_image.empty()) throw EnvironmentError("backend '" + flags.backend + "' produced no frame");
+  RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out);
+  run.json()["command"] = "render";
+  run.json()["backend"] = frame.backend;
+  run.json()["settings"] = settings;
+  run.json()["environment"] = environment_info();
+  run.json()["scene"] = scene_summary(scene);
+  // Keyed by backend, the shape the dump writer uses too.
+  run.json()["multibounce_energy"][frame.backend] = frame.multibounce_energy;
+  for (const auto& [key, value] : frame.info) run.json()["info"][frame.backend][key] = value;
+  for (const auto& [stage, ms] : frame.timings_ms) run.add_timing(frame.backend, stage, ms);
+  run.write_color("final", frame.images.final_image);
+  if (flags.dump) write_frame_dumps(run, frame, scene, settings.vct);
+  if (explain) {
+    if (frame.backend != "ref") throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");
+    write_explain(run, scene, frame, settings.vct, *explain);
+  }
+  run.save();
+  std::printf("vct render: %s frame of %s in %.0f ms -> %s\n", frame.backend.c_str(), scene.source.c_str(),
+              frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0, run.path().c_str());
+}
+
+}  // namespace
+
 void register_render(CLI::App& app, int& exit_code) {
-  CLI::App* cmd = app.add_subcommand("render", "(not built yet)");
-  cmd->allow_extras();
-  cmd->callback([&exit_code]() {
-    std::fprintf(stderr, "vct render: not built yet\n");
-    exit_code = kExitNoEnvironment;
+  auto* scene_path = new std::string;  // lives as long as the process (CLI11 binds by reference)
+  auto* common = new CommonOptions;
+  auto* flags = new VctFlags;
+  CLI::App* cmd = app.add_subcommand("render", "Render one VCT frame (no SCENE = built-in default scene)");
+  cmd->add_option("scene", *scene_path, "glTF 2.0 file (.gltf or .glb)");
+  add_common_flags(cmd, *common);
+  add_image_flags(cmd, *common);
+  add_grid_flag(cmd, *common);
+  add_vct_flags(cmd, *flags);
+  cmd->callback([scene_path, common, flags, &exit_code]() {
+    run_render(*scene_path, *common, *flags);
+    exit_code = kExitOk;
   });
 }
 

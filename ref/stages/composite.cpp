@@ -17,6 +17,9 @@ void composite_frame(const Scene& scene, const GBuffer& g, FrameImages& im) {
   im.specular_term = Image(w, h, 3);
   im.emission = Image(w, h, 3);
   im.final_image = Image(w, h, 3);
+  for (Image* img : {&im.diffuse_term, &im.specular_term, &im.emission, &im.final_image}) {
+    img->channel_names = {"R", "G", "B"};
+  }
   parallel_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       vec3 total = rgb_or_zero(im.particles, x, y);

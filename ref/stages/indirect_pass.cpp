@@ -11,6 +11,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
   IndirectImages out;
   out.diffuse = Image(w, h, 3);
   out.specular = Image(w, h, 3);
+  out.diffuse.channel_names = out.specular.channel_names = {"R", "G", "B"};
   for (auto& img : out.diffuse_cones) {
     img = Image(w, h, 4);
     img.channel_names = {"R", "G", "B", "A"};

@@ -68,6 +68,7 @@ ScreenParticle project(const sh::ParticleState& p, const Camera& cam, const mat4
 Image render_particles(const Scene& scene, const GBuffer& g, const VctSettings& s) {
   const int w = g.coverage.width, h = g.coverage.height;
   Image out(w, h, 3);
+  out.channel_names = {"R", "G", "B"};
   if (scene.emitters.empty() || !s.particles) return out;
   const Camera& cam = scene.camera;
   const mat4 view_proj = cam.projection(float(w) / float(h)) * cam.view();

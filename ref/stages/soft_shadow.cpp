@@ -17,7 +17,7 @@ vec3 spot_light_radiance(const SpotLight& light, const VctSettings& s, const vec
   const float n_dot_l = glm::dot(n, l);
   if (n_dot_l <= 0.0f) return vec3(0.0f);
   const int model = s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF;
-  const vec3 e = sh::spot_irradiance(model, light.color, light.intensity, dist, glm::dot(-l, light.direction),
+  const vec3 e = sh::spot_irradiance(model, light.color, light.intensity, dist, glm::dot(-l, glm::normalize(light.direction)),
                                      std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle), light.range);
   const sh::SurfacePbr pbr = sh::surface_pbr(m.albedo, m.metallic, m.roughness, m.specular_factor, m.specular_color);
   return sh::cook_torrance(pbr, n, v, l) * e * n_dot_l;
@@ -39,7 +39,11 @@ Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& m
                         Image* visibility) {
   const int w = g.coverage.width, h = g.coverage.height;
   Image out(w, h, 3);
-  if (visibility) *visibility = Image(w, h, 1, 1.0f);
+  out.channel_names = {"R", "G", "B"};
+  if (visibility) {
+    *visibility = Image(w, h, 1, 1.0f);
+    visibility->channel_names = {"Y"};
+  }
   parallel_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;

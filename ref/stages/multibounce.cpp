@@ -1,0 +1,63 @@
+#include "stages/multibounce.h"
+
+#include <cmath>
+
+#include "io/run_dir.h"
+#include "stages/cone_sets.h"
+#include "stages/mips.h"
+#include "stages/particles.h"
+
+namespace vct {
+
+BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s) {
+  return [&scene, &previous, s](const VoxelFragment& f, const SurfaceMaterial& m) -> vec3 {
+    const DiffuseConeSet set =
+        trace_diffuse_cones(previous, scene.volume, s, f.position, m.shading_normal, 0.0f, kBounceMinLod);
+    return s.restitution * m.albedo * set.radiance;
+  };
+}
+
+double total_energy(const Volume& radiance) {
+  double sum = 0.0;
+  const size_t count = radiance.voxel_count();
+  for (size_t i = 0; i < count; ++i) {
+    const float* p = &radiance.data[i * size_t(radiance.channels)];
+    sum += double(p[0]) + double(p[1]) + double(p[2]);
+  }
+  return sum;
+}
+
+namespace {
+void finish_frame(const Scene& scene, const VctSettings& s, MultibounceResult& r) {
+  Stopwatch sw;
+  add_particles_to_voxels(scene, s, r.grid.radiance);
+  r.timings_ms["particles_voxels"] += sw.ms();
+  sw = Stopwatch();
+  r.mips = build_mips(r.grid.radiance, s.anisotropic);
+  r.timings_ms["mips"] += sw.ms();
+  r.energy.push_back(total_energy(r.grid.radiance));
+  ++r.frames;
+}
+}  // namespace
+
+MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization& vox,
+                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s) {
+  MultibounceResult r;
+  Stopwatch sw;
+  r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr);
+  r.timings_ms["inject"] = sw.ms();
+  finish_frame(scene, s, r);
+  for (int frame = 1; frame < s.bounces; ++frame) {
+    const VoxelMips previous = std::move(r.mips);
+    const BounceLight bounce = make_bounce_light(scene, previous, s);
+    sw = Stopwatch();
+    r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce);
+    r.timings_ms["bounce_inject"] += sw.ms();
+    finish_frame(scene, s, r);
+    const double before = r.energy[r.energy.size() - 2], now = r.energy.back();
+    if (s.convergence_tolerance > 0.0f && std::abs(now - before) <= double(s.convergence_tolerance) * before) break;
+  }
+  return r;
+}
+
+}  // namespace vct

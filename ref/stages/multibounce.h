@@ -1,0 +1,43 @@
+// Temporal multibounce (docs/pipeline.md, "Multibounce"): frame 1 injects direct light and
+// emission; frame k injects, in addition, restitution x albedo x the diffuse cone set traced in
+// frame k-1's mips at level >= 1. Particles are added after every reduction.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/inject.h"
+#include "stages/stage_types.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+
+/// Level the bounce cones start at: the seed rewrites level 0 while it voxelizes, so only the
+/// coarser levels of the previous frame are readable; we keep that rule.
+constexpr float kBounceMinLod = 1.0f;
+
+/// The light a fragment gets from the previous frame's mips: restitution x albedo x (diffuse cone
+/// set at the fragment, normal = the material's shading normal, no rotation, lod >= 1).
+BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s);
+
+/// Total RGB radiance summed over the base level (the energy recorded per frame), in a fixed
+/// order (double accumulation, voxel order).
+double total_energy(const Volume& radiance);
+
+struct MultibounceResult {
+  VoxelGrid grid;   // the last frame's base level (particles included)
+  VoxelMips mips;   // its mips
+  std::vector<double> energy;  // total_energy after each frame
+  int frames = 0;
+  std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject"
+};
+
+/// Runs frame 1 and then up to settings.bounces - 1 bounce frames; stops early when
+/// convergence_tolerance > 0 and |E_k - E_{k-1}| <= tolerance * E_{k-1}.
+MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization& vox,
+                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s);
+
+}  // namespace vct

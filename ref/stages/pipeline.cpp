@@ -1,0 +1,74 @@
+#include "stages/pipeline.h"
+
+#include <functional>
+#include <string>
+
+#include "io/run_dir.h"
+#include "stages/composite.h"
+#include "stages/direct.h"
+#include "stages/gbuffer.h"
+#include "stages/indirect_pass.h"
+#include "stages/multibounce.h"
+#include "stages/particles.h"
+#include "stages/shadow_map.h"
+#include "stages/soft_shadow.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+
+namespace {
+// Runs one stage and records its wall time under `name`.
+void timed(FrameResult& r, const std::string& name, const std::function<void()>& stage) {
+  const Stopwatch sw;
+  stage();
+  r.timings_ms[name] += sw.ms();
+}
+
+Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, FrameResult& r) {
+  Voxelization conservative;
+  timed(r, "voxelize", [&] { conservative = voxelize_conservative(scene, s.grid); });
+  r.conservative_occupancy = conservative.occupancy;
+  if (s.voxelizer == Voxelizer::Conservative) return conservative;
+  Voxelization gpu;
+  timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, s.msaa_samples); });
+  timed(r, "holes", [&] { r.holes = hole_map(conservative, gpu); });
+  return gpu;
+}
+}  // namespace
+
+FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
+  const VctSettings& s = settings.vct;
+  FrameResult r;
+  r.backend = "ref";
+  const Stopwatch total;
+  timed(r, "shadow_maps", [&] { r.shadow_maps = render_shadow_maps(scene, s); });
+  timed(r, "gbuffer", [&] { r.gbuffer = render_gbuffer(scene, s); });
+  const Voxelization vox = run_voxelizers(scene, s, r);
+  {
+    MultibounceResult mb = inject_with_multibounce(scene, vox, r.shadow_maps, s);
+    for (const auto& [stage, ms] : mb.timings_ms) r.timings_ms[stage] += ms;
+    r.voxels = std::move(mb.grid);
+    r.mips = std::move(mb.mips);
+    r.multibounce_energy = std::move(mb.energy);
+    r.info["multibounce_frames"] = std::to_string(mb.frames);
+  }
+  r.info["fragments"] = std::to_string(vox.fragments.size());
+  r.info["covered_voxels"] = std::to_string(vox.covered);
+  FrameImages& im = r.images;
+  if (s.soft_shadows) {
+    timed(r, "direct_soft_shadows", [&] { im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow); });
+  } else {
+    timed(r, "direct", [&] { im.direct = shade_direct(scene, r.gbuffer, r.shadow_maps, s); });
+  }
+  timed(r, "indirect_cones", [&] {
+    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
+    im.indirect_diffuse = std::move(ind.diffuse);
+    im.indirect_specular = std::move(ind.specular);
+  });
+  timed(r, "particles", [&] { im.particles = render_particles(scene, r.gbuffer, s); });
+  timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, im); });
+  r.timings_ms["total"] = total.ms();
+  return r;
+}
+
+}  // namespace vct

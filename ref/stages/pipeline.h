@@ -1,0 +1,16 @@
+// The whole CPU VCT frame, stage after stage, with per-stage timings (docs/pipeline.md):
+// shadow maps -> G-buffer -> voxelization -> injection + reduction (+ multibounce, particles)
+// -> mips -> direct (PCF or cone shadows) -> indirect cones -> particles -> composite.
+#pragma once
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+/// Runs every stage of the CPU reference. Threads come from set_thread_count(); the result is
+/// byte-identical for any thread count.
+FrameResult render_ref_frame(const Scene& scene, const Settings& settings);
+
+}  // namespace vct
