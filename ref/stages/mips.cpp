@@ -1,6 +1,7 @@
 #include "stages/mips.h"
 
 #include <algorithm>
+#include <functional>
 
 #include "core/parallel.h"
 
@@ -14,6 +15,16 @@ Volume half_size(const Volume& v) {
   return out;
 }
 
+// Small levels run on the calling thread: a parallel region costs more than their work (and the
+// result is the same either way: each slice is written by one body).
+void for_each_slice(const Volume& out, const std::function<void(int64_t)>& body) {
+  if (out.voxel_count() < (size_t(1) << 15)) {
+    for (int64_t z = 0; z < out.nz; ++z) body(z);
+  } else {
+    parallel_for(out.nz, body);
+  }
+}
+
 // Child index 2i + o along an axis, clamped for levels of size 1.
 int child(int i, int o, int n) { return std::min(2 * i + o, n - 1); }
 
@@ -21,7 +32,7 @@ int child(int i, int o, int n) { return std::min(2 * i + o, n - 1); }
 
 Volume downsample_iso(const Volume& v) {
   Volume out = half_size(v);
-  parallel_for(out.nz, [&](int64_t zz) {
+  for_each_slice(out, [&](int64_t zz) {
     const int z = int(zz);
     for (int y = 0; y < out.ny; ++y)
       for (int x = 0; x < out.nx; ++x) {
@@ -40,7 +51,7 @@ Volume downsample_aniso(const Volume& v, int d) {
   const bool positive = d % 2 == 0;  // looking along +axis: the lower child is in front
   const int u_axis = (axis + 1) % 3, w_axis = (axis + 2) % 3;
   const int dims[3] = {v.nx, v.ny, v.nz};
-  parallel_for(out.nz, [&](int64_t zz) {
+  for_each_slice(out, [&](int64_t zz) {
     ivec3 o;
     o.z = int(zz);
     for (o.y = 0; o.y < out.ny; ++o.y)

@@ -74,9 +74,8 @@ CasInterval cas_interval(const std::vector<float>& values) {
     for (size_t j = 0; j < m; ++j) {
       if (mask & (size_t(1) << j)) continue;
       std::bitset<256>& next = reach[mask | (size_t(1) << j)];
-      for (int s = 0; s < 256; ++s) {
-        if (!reach[mask].test(size_t(s))) continue;
-        const double q = cas_quotient(s, count, x[j]);
+      for (size_t s = reach[mask]._Find_first(); s < 256; s = reach[mask]._Find_next(s)) {
+        const double q = cas_quotient(int(s), count, x[j]);
         const double f = std::floor(q), tol = kDivisionSlack * std::max(q, 1.0);
         next.set(size_t(f));
         if (q - f < tol && f >= 1.0) next.set(size_t(f - 1.0));

@@ -32,7 +32,7 @@ float cas_sequential(const std::vector<float>& values);
 /// Lowest and highest value (as s/255) a correct GPU may leave for any order of `values`:
 /// exact subset enumeration for up to kCasExactLimit fragments (admitting both neighbours of
 /// floor() where the GPU's division may round across an integer), a proven bound otherwise.
-constexpr size_t kCasExactLimit = 10;
+constexpr size_t kCasExactLimit = 8;
 struct CasInterval {
   float lo = 0.0f, hi = 0.0f;
 };
