@@ -93,6 +93,19 @@ uint64_t hash_scene(const Scene& s) {
     h.pod(l.outer_cone_angle);
     h.pod(l.range);
   }
+  for (const ParticleEmitter& e : s.emitters) {
+    h.pod(e.origin);
+    h.pod(e.count);
+    h.pod(e.lifetime);
+    h.pod(e.spawn_extent);
+    h.pod(e.velocity_min);
+    h.pod(e.velocity_max);
+    h.pod(e.acceleration);
+    h.pod(e.color_start);
+    h.pod(e.color_end);
+    h.pod(e.size_start);
+    h.pod(e.size_end);
+  }
   const Camera& c = s.camera;
   h.pod(c.position);
   h.pod(c.forward);
@@ -109,6 +122,14 @@ uint64_t hash_pt_settings(const PtSettings& s) {
   j.erase("checkpoint_seconds");
   Fnv h;
   h.str(j.dump());
+  return h.value();
+}
+
+uint64_t hash_render_settings(const PtSettings& s, const ParticleOptions& p) {
+  Fnv h;
+  h.pod(hash_pt_settings(s));
+  h.pod(p.enabled);
+  h.pod(p.enabled ? p.time : 0.0f);
   return h.value();
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/settings.h"
 #include "pt/accumulator.h"
+#include "pt/particle_lights.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
@@ -16,6 +17,8 @@ namespace vct::pt {
 uint64_t hash_scene(const Scene& scene);
 /// Hash of the PtSettings that change the image (all but spp and checkpoint_seconds).
 uint64_t hash_pt_settings(const PtSettings& s);
+/// hash_pt_settings combined with the particle options (they change the image too).
+uint64_t hash_render_settings(const PtSettings& s, const ParticleOptions& p);
 
 struct CheckpointKey {
   uint64_t scene_hash = 0;

@@ -49,10 +49,12 @@ void orient_normals(const SurfacePoint& sp, const SurfaceMaterial& m, const vec3
 }  // namespace
 
 Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights,
-                       const PtSettings& s)
+                       const PtSettings& s, const ParticleLights* particles, const Image* particle_layer)
     : scene_(scene),
       rt_(rt),
       lights_(lights),
+      particles_(particles && !particles->empty() ? particles : nullptr),
+      particle_layer_(particle_layer && !particle_layer->empty() ? particle_layer : nullptr),
       settings_(s),
       light_model_(s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF),
       eps_(1e-4f * scene_scale(scene)) {}
@@ -68,6 +70,10 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
   // that left the first vertex through its diffuse / specular lobe (used for the one-bounce AOVs).
   vec3 beta(1.0f), lobe_d(0.0f), lobe_s(0.0f);
   float prev_pdf = 0.0f;
+  if (particle_layer_) {
+    out.aov[kParticles] = particle_layer_->rgb(x, y);
+    out.aov[kFull] += out.aov[kParticles];
+  }
 
   for (int depth = 1; hit.hit; ++depth) {
     const SurfacePoint sp = interpolate_surface(scene_, hit.triangle, hit.b1, hit.b2);
@@ -160,6 +166,28 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
                 out.aov[kIndirectDiffuse] += f.diffuse * k;
                 out.aov[kIndirectSpecular] += f.specular * k;
               }
+            }
+          }
+        }
+      }
+    }
+
+    // Next-event estimation: one fire particle (an isotropic point light; delta, no MIS).
+    if (particles_) {
+      const ParticleLights::Sample ps = particles_->sample(rng.next_float());
+      const vec3 to_light = ps.position - pos;
+      const float dist2 = glm::dot(to_light, to_light);
+      if (dist2 > 0.0f && ps.pmf > 0.0f) {
+        const vec3 l = to_light / std::sqrt(dist2);
+        const BsdfValue f = eval_bsdf(bp, l);
+        if (f.total() != vec3(0.0f)) {
+          ++counts.shadow;
+          if (!rt_.occluded(p, ps.position - p, 0.0f, 1.0f)) {
+            const vec3 k = ps.intensity * (glm::dot(ns, l) / (dist2 * ps.pmf));
+            out.aov[kFull] += beta * f.total() * k;
+            if (depth == 1) {
+              out.aov[kIndirectDiffuse] += f.diffuse * k;
+              out.aov[kIndirectSpecular] += f.specular * k;
             }
           }
         }

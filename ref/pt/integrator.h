@@ -10,17 +10,19 @@
 #include "core/settings.h"
 #include "pt/emissive_lights.h"
 #include "pt/embree_scene.h"
+#include "pt/particle_lights.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
 
 /// AOVs in accumulator order.
-enum Aov : int { kFull = 0, kDirect, kEmission, kIndirectDiffuse, kIndirectSpecular, kAovCount };
-constexpr const char* kAovNames[kAovCount] = {"pt_full", "pt_direct", "pt_emission", "pt_indirect_diffuse",
-                                              "pt_indirect_specular"};
+enum Aov : int { kFull = 0, kDirect, kEmission, kIndirectDiffuse, kIndirectSpecular, kParticles, kAovCount };
+constexpr const char* kAovNames[kAovCount] = {"pt_full",           "pt_direct",
+                                              "pt_emission",       "pt_indirect_diffuse",
+                                              "pt_indirect_specular", "pt_particles"};
 
 struct PathSample {
-  vec3 aov[kAovCount] = {vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f)};
+  vec3 aov[kAovCount] = {vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f)};
 };
 
 /// Ray counts (primary = camera rays, secondary = BSDF continuation rays, shadow = NEE rays).
@@ -38,7 +40,10 @@ struct RayCounts {
 
 class Integrator {
  public:
-  Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights, const PtSettings& s);
+  /// particles / particle_layer may be null (no fire). particle_layer: the camera's additive
+  /// particle image (ParticleLights::camera_layer), added to every sample of its pixel.
+  Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights, const PtSettings& s,
+             const ParticleLights* particles = nullptr, const Image* particle_layer = nullptr);
 
   /// Sample `sample` of pixel (x, y); deterministic in (x, y, sample, settings.seed).
   PathSample trace(int x, int y, uint32_t sample, RayCounts& counts) const;
@@ -47,6 +52,8 @@ class Integrator {
   const Scene& scene_;
   const EmbreeScene& rt_;
   const EmissiveTriangles& lights_;
+  const ParticleLights* particles_;
+  const Image* particle_layer_;
   PtSettings settings_;
   int light_model_;
   float eps_;  // ray offset, scaled to the scene's size

@@ -12,12 +12,14 @@ namespace {
 constexpr int kTile = 16;
 }
 
-PathTracer::PathTracer(const Scene& scene, const PtSettings& settings)
+PathTracer::PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles)
     : scene_(scene),
       settings_(settings),
       rt_(scene),
       lights_(scene),
-      integrator_(scene, rt_, lights_, settings) {}
+      particles_(scene, particles),
+      particle_layer_(particles_.camera_layer(scene, rt_, settings.width, settings.height)),
+      integrator_(scene, rt_, lights_, settings, &particles_, &particle_layer_) {}
 
 RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterPass& after_pass) const {
   if (acc.width() != settings_.width || acc.height() != settings_.height)

@@ -11,6 +11,7 @@
 #include "pt/embree_scene.h"
 #include "pt/emissive_lights.h"
 #include "pt/integrator.h"
+#include "pt/particle_lights.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
@@ -18,7 +19,7 @@ namespace vct::pt {
 class PathTracer {
  public:
   /// Keeps a reference to `scene`; it must outlive the tracer.
-  PathTracer(const Scene& scene, const PtSettings& settings);
+  PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles = {});
 
   /// Called after each pass with the accumulators and the rays traced so far by this call;
   /// returning false stops the render there (acc stays a whole number of passes).
@@ -29,6 +30,7 @@ class PathTracer {
 
   const PtSettings& settings() const { return settings_; }
   const EmissiveTriangles& emitters() const { return lights_; }
+  const ParticleLights& particles() const { return particles_; }
   const EmbreeScene& embree() const { return rt_; }
 
  private:
@@ -36,6 +38,8 @@ class PathTracer {
   PtSettings settings_;
   EmbreeScene rt_;
   EmissiveTriangles lights_;
+  ParticleLights particles_;
+  Image particle_layer_;
   Integrator integrator_;
 };
 

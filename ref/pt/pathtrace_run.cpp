@@ -44,7 +44,8 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
   RunDir dir(opt.out_dir);
   merge_existing_run_json(dir);
   const std::string ckpt_path = dir.file(kCheckpointFile);
-  const CheckpointKey key{hash_scene(scene), hash_pt_settings(ps)};
+  const ParticleOptions particles{settings.vct.particles, settings.vct.time};
+  const CheckpointKey key{hash_scene(scene), hash_render_settings(ps, particles)};
 
   PathtraceRunResult result;
   Accumulator acc(ps.width, ps.height);
@@ -60,7 +61,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
   }
 
   const Stopwatch build_clock;
-  const PathTracer tracer(scene, ps);
+  const PathTracer tracer(scene, ps, particles);
   const double build_ms = build_clock.ms();
 
   ProgressBar bar(opt.progress, acc.samples(), uint32_t(ps.spp));
@@ -101,7 +102,8 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
                     {"settings_hash", key.settings_hash},
                     {"emissive_triangles", tracer.emitters().size()},
                     {"spot_lights", scene.spot_lights.size()},
-                    {"particles", "not rendered (see docs/pathtracer.md)"},
+                    {"particles", tracer.particles().size()},
+                    {"particle_time", settings.vct.time},
                     {"rays", {{"primary", result.rays.primary},
                               {"secondary", result.rays.secondary},
                               {"shadow", result.rays.shadow},
@@ -109,7 +111,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
                     {"nonfinite_samples_dropped", result.rays.nonfinite_samples},
                     {"render_seconds", result.render_seconds},
                     {"rays_per_second", result.render_seconds > 0.0 ? rays / result.render_seconds : 0.0},
-                    {"aovs", {"pt_full", "pt_direct", "pt_emission", "pt_indirect_diffuse", "pt_indirect_specular"}}};
+                    {"aovs", std::vector<std::string>(kAovNames, kAovNames + kAovCount)}};
   dir.add_timing("pt", "bvh_build", build_ms);
   dir.add_timing("pt", "render", result.render_seconds * 1e3);
   dir.save();
