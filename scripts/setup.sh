@@ -36,6 +36,20 @@ if [ ! -f .venv/.requirements-done ] || ! cmp -s report/requirements.txt .venv/.
   cp report/requirements.txt .venv/.requirements-done
 fi
 
+# Khronos glTF validator (npm), used by scenes/validate_scenes.sh and its ctest. Node from
+# Debian if there is none; the package goes into tools/gltf-validator (git-ignored node_modules).
+if ! command -v npm >/dev/null 2>&1; then
+  echo "setup: installing nodejs npm"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends nodejs npm
+fi
+if [ ! -d tools/gltf-validator/node_modules/gltf-validator ]; then
+  echo "setup: installing gltf-validator into tools/gltf-validator"
+  npm ci --silent --no-audit --no-fund --prefix tools/gltf-validator
+fi
+
 if [ ! -f "$BUILD_DIR/build.ninja" ]; then
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ${CMAKE_ARGS:-}
 fi
