@@ -134,6 +134,18 @@ void write_explain(RunDir& run, const Scene& scene, const FrameResult& frame, co
   write_png_linear(run.file(stem + ".png"), e.picture, 0.0f, 1.0f);
 }
 
+// What the shared dump writer has no slot for: each diffuse cone's image and the multibounce
+// frames before the last (the last one is the dumped base level).
+void write_ref_extras(RunDir& run, const FrameResult& frame, const Scene& scene, const VctSettings& s) {
+  for (size_t i = 0; i < frame.images.diffuse_cones.size(); ++i) {
+    run.write_color("diffuse_cone_" + std::to_string(i), frame.images.diffuse_cones[i]);
+  }
+  const float spacing = scene.volume.size / float(s.grid);
+  for (size_t k = 0; k < frame.multibounce_frames.size(); ++k) {
+    run.write_volume("multibounce_frame_" + std::to_string(k + 1), frame.multibounce_frames[k], spacing);
+  }
+}
+
 void run_render(const std::string& scene_path, const CommonOptions& common, const VctFlags& flags) {
   const Settings settings = apply_vct_flags(resolve_settings(common), flags);
   std::optional<ivec2> explain;
@@ -152,7 +164,10 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   for (const auto& [key, value] : frame.info) run.json()["info"][frame.backend][key] = value;
   for (const auto& [stage, ms] : frame.timings_ms) run.add_timing(frame.backend, stage, ms);
   run.write_color("final", frame.images.final_image);
-  if (flags.dump) write_frame_dumps(run, frame, scene, settings.vct);
+  if (flags.dump) {
+    write_frame_dumps(run, frame, scene, settings.vct);
+    write_ref_extras(run, frame, scene, settings.vct);
+  }
   if (explain) {
     if (frame.backend != "ref") throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");
     write_explain(run, scene, frame, settings.vct, *explain);

@@ -41,13 +41,15 @@ void finish_frame(const Scene& scene, const VctSettings& s, MultibounceResult& r
 }  // namespace
 
 MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization& vox,
-                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s) {
+                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s,
+                                          bool keep_frames) {
   MultibounceResult r;
   Stopwatch sw;
   r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr);
   r.timings_ms["inject"] = sw.ms();
   finish_frame(scene, s, r);
   for (int frame = 1; frame < s.bounces; ++frame) {
+    if (keep_frames) r.earlier_frames.push_back(r.grid.radiance);
     const VoxelMips previous = std::move(r.mips);
     const BounceLight bounce = make_bounce_light(scene, previous, s);
     sw = Stopwatch();

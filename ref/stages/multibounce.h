@@ -31,13 +31,16 @@ struct MultibounceResult {
   VoxelGrid grid;   // the last frame's base level (particles included)
   VoxelMips mips;   // its mips
   std::vector<double> energy;  // total_energy after each frame
+  std::vector<Volume> earlier_frames;  // base level of each frame before the last (if kept)
   int frames = 0;
   std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject"
 };
 
 /// Runs frame 1 and then up to settings.bounces - 1 bounce frames; stops early when
 /// convergence_tolerance > 0 and |E_k - E_{k-1}| <= tolerance * E_{k-1}.
+/// `keep_frames`: also return the earlier frames' base levels (for dumps).
 MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization& vox,
-                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s);
+                                          const std::vector<ShadowMap>& shadow_maps, const VctSettings& s,
+                                          bool keep_frames = false);
 
 }  // namespace vct

@@ -45,7 +45,11 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
   timed(r, "gbuffer", [&] { r.gbuffer = render_gbuffer(scene, s); });
   const Voxelization vox = run_voxelizers(scene, s, r);
   {
-    MultibounceResult mb = inject_with_multibounce(scene, vox, r.shadow_maps, s);
+    // Earlier frames are kept for the dumps while they stay under ~256 MB.
+    const double frame_bytes = double(s.grid) * s.grid * s.grid * 4.0 * sizeof(float);
+    const bool keep = s.bounces > 1 && frame_bytes * (s.bounces - 1) <= 256.0 * 1024 * 1024;
+    MultibounceResult mb = inject_with_multibounce(scene, vox, r.shadow_maps, s, keep);
+    r.multibounce_frames = std::move(mb.earlier_frames);
     for (const auto& [stage, ms] : mb.timings_ms) r.timings_ms[stage] += ms;
     r.voxels = std::move(mb.grid);
     r.mips = std::move(mb.mips);
@@ -64,6 +68,7 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
     IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
     im.indirect_diffuse = std::move(ind.diffuse);
     im.indirect_specular = std::move(ind.specular);
+    im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());
   });
   timed(r, "particles", [&] { im.particles = render_particles(scene, r.gbuffer, s); });
   timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, im); });

@@ -70,6 +70,7 @@ struct FrameImages {
   Image particles;         // additive particle layer
   Image soft_shadow;       // 1: cone-traced visibility (if enabled)
   Image final_image;
+  std::vector<Image> diffuse_cones;  // ref only: each diffuse cone's (rgb, opacity), cone order of vct_shared.h
 };
 
 /// Everything one VCT frame computed; either backend fills what it ran.
@@ -83,6 +84,9 @@ struct FrameResult {
   VoxelMips mips;
   FrameImages images;
   std::vector<double> multibounce_energy;  // total voxel radiance after each multibounce frame
+  // ref only: the base level after each multibounce frame before the last (kept while small,
+  // see pipeline.cpp), for the dumps.
+  std::vector<Volume> multibounce_frames;
   std::map<std::string, double> timings_ms;  // stage name -> milliseconds
   std::map<std::string, std::string> info;   // e.g. GL_RENDERER, counts
 };
