@@ -33,6 +33,11 @@ Settings validate_defaults() {
   s.vct.grid = 64;
   s.vct.shadow_map_size = 1024;
   s.pt.spp = 64;
+  // The GPU's own coverage rule and the deterministic reduction on both sides: occupancy and
+  // voxel radiance are then comparable exactly (holes are still measured against the
+  // conservative set).
+  s.vct.voxelizer = Voxelizer::GpuEmulation;
+  s.vct.reduction = Reduction::FixedPoint;
   return s;
 }
 

@@ -13,6 +13,9 @@ struct CompareOptions {
   size_t worst_n = 10;
   std::string mask_dir;     // absolute/relative directory for mask PNGs ("" = no masks)
   std::string mask_prefix;  // how masks are named in the verdicts (relative to the run dir)
+  // Set by compare_stage_sets when voxel stages tolerated ties: cone-traced images may then
+  // differ on up to this fraction of pixels (warn) before failing.
+  double upstream_tie_fraction = 0.0;
 };
 
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});

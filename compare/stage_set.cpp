@@ -41,6 +41,11 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   set.reduction = reduction_name(s.reduction);
   set.settings = s;
   for (const auto& [k, v] : f.info) set.info[k] = v;
+  // A backend may substitute a reduction (GL has no exact float mean: it says so in info).
+  auto red = f.info.find("reduction");
+  if (red != f.info.end())
+    for (const char* r : {"fixed_point", "cas_rgba8", "exact_mean"})
+      if (red->second.rfind(r, 0) == 0) set.reduction = r;
   for (size_t i = 0; i < f.shadow_maps.size(); ++i) put(set.images, "shadow_map." + std::to_string(i), f.shadow_maps[i].depth);
   const GBuffer& g = f.gbuffer;
   put(set.images, "gbuffer.coverage", g.coverage);

@@ -19,7 +19,14 @@ struct ImageModel {
   // Beyond-bound pixels away from edges: up to this fraction -> warn, more -> fail.
   double interior_fraction = 0.0;
   std::string bound_text;  // for run.json / the report
+  // Rasterised attributes: vertices snap to a 2^-8 pixel grid (GL_SUBPIXEL_BITS = 8 on llvmpipe
+  // and current GPUs; GL requires >= 4), so an interpolated value may move by that much times
+  // its screen-space slope: bound += slope_factor * (|d/dx| + |d/dy|) from the reference.
+  double slope_factor = 0.0;
 };
+
+/// Cone-traced stages (they sample the voxels, so voxel ties upstream move them).
+bool is_cone_traced(const std::string& stage);
 
 ImageModel image_model(const std::string& stage);
 
@@ -32,7 +39,9 @@ struct VoxelModel {
   std::string bound_text;
 };
 
-VoxelModel voxel_model(const std::string& storage, const std::string& reduction);
+/// `ref_reduction`: how the reference reduced (fixed point is exact only against fixed point).
+VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
+                       const std::string& ref_reduction = "fixed_point");
 
 /// Bound for mip level `level` (>= 1), propagated from the base model: the box filter is an
 /// average of non-negative values, so an abs+rel bound passes through unchanged and each level

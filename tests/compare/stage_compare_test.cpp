@@ -1,0 +1,107 @@
+// Per-stage verdicts on hand-made stage sets: exact occupancy, the CAS interval, image edges.
+#include <gtest/gtest.h>
+
+#include "compare/stage_compare.h"
+
+namespace vct::cmp {
+namespace {
+
+StageSet voxel_set(const std::string& reduction) {
+  StageSet s;
+  s.backend = "test";
+  s.storage = "rgba8";
+  s.reduction = reduction;
+  Volume v(8, 8, 8, 4);
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x) v.set_rgba(x, 2, z, vec4(0.5f, 0.25f, 0.125f, 1.0f));  // a floor
+  s.volumes["voxel.radiance"] = v;
+  return s;
+}
+
+const StageVerdict& find(const Report& r, const std::string& stage) {
+  for (const auto& s : r.stages)
+    if (s.stage == stage) return s;
+  throw std::runtime_error("no stage " + stage);
+}
+
+TEST(StageCompare, IdenticalPasses) {
+  const StageSet a = voxel_set("fixed_point");
+  const Report r = compare_stage_sets(a, a);
+  EXPECT_EQ(r.overall(), Verdict::Pass);
+  EXPECT_EQ(r.first_failing(), "");
+}
+
+TEST(StageCompare, MissingVoxelFailsOccupancyAndIsListed) {
+  const StageSet a = voxel_set("fixed_point");
+  StageSet b = a;
+  b.volumes["voxel.radiance"].set_rgba(3, 2, 5, vec4(0.0f));
+  const Report r = compare_stage_sets(a, b);
+  const StageVerdict& occ = find(r, "voxel.occupancy");
+  EXPECT_EQ(occ.verdict, Verdict::Fail);
+  ASSERT_EQ(occ.worst.size(), 1u);
+  EXPECT_EQ(occ.worst[0].at, (std::array<int, 3>{3, 2, 5}));
+  EXPECT_EQ(r.first_failing(), "voxel.occupancy");
+}
+
+TEST(StageCompare, FixedPointIsExactOneUlpFails) {
+  const StageSet a = voxel_set("fixed_point");
+  StageSet b = a;
+  b.volumes["voxel.radiance"].voxel(1, 2, 1)[0] += 1.0f / 255.0f;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
+  // The same difference is inside the RGBA8 exact-mean model (+-1/255).
+  StageSet c = b;
+  c.reduction = "exact_mean";
+  EXPECT_EQ(find(compare_stage_sets(a, c), "voxel.radiance").verdict, Verdict::Pass);
+}
+
+TEST(StageCompare, CasIntervalAcceptsAnyOrderRejectsOutside) {
+  StageSet a = voxel_set("cas_rgba8");
+  Volume lo = a.volumes["voxel.radiance"], hi = lo;
+  hi.voxel(4, 2, 4)[0] = 0.6f;  // fragment orders may give anything in [0.5, 0.6]
+  a.volumes["voxel.cas_lo"] = lo;
+  a.volumes["voxel.cas_hi"] = hi;
+  StageSet b = a;
+  b.volumes["voxel.radiance"].voxel(4, 2, 4)[0] = 0.6f + 0.5f / 255.0f;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Pass);
+  b.volumes["voxel.radiance"].voxel(4, 2, 4)[0] = 0.6f + 3.0f / 255.0f;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
+}
+
+TEST(StageCompare, ConservativeReferenceTurnsMissingIntoHoles) {
+  StageSet a = voxel_set("fixed_point");
+  a.settings = {{"voxelizer", "conservative"}};
+  Volume cons(8, 8, 8, 1);
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x) cons.voxel(x, 2, z)[0] = 1.0f;
+  a.volumes["voxel.conservative"] = cons;
+  StageSet b = a;
+  b.volumes.erase("voxel.conservative");
+  b.volumes["voxel.radiance"].set_rgba(0, 2, 0, vec4(0.0f));
+  const Report r = compare_stage_sets(a, b);
+  EXPECT_EQ(find(r, "voxel.occupancy").verdict, Verdict::Warn);
+  const StageVerdict& holes = find(r, "voxel.holes");
+  EXPECT_EQ(holes.verdict, Verdict::Pass);  // reported, not failed
+  EXPECT_EQ(holes.out_of_bound, 1u);
+  // An extra voxel outside the conservative set is a GPU bug.
+  b.volumes["voxel.radiance"].set_rgba(0, 6, 0, vec4(1.0f));
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Fail);
+}
+
+TEST(StageCompare, DepthEdgeTiesWarnInteriorDifferencesFail) {
+  Image ref(64, 64, 1, 1.0f);
+  for (int y = 16; y < 48; ++y)
+    for (int x = 16; x < 48; ++x) ref.at(x, y, 0) = 0.9f;  // a square occluder
+  Image tie = ref;
+  tie.at(16, 20, 0) = 1.0f;  // one edge texel lost to the fill rule
+  CompareOptions opt;
+  EXPECT_EQ(compare_image_stage("shadow_map.0", ref, tie, nullptr, opt).verdict, Verdict::Warn);
+  Image inside = ref;
+  inside.at(30, 30, 0) += 1e-3f;  // far beyond 2^-16, away from any edge
+  EXPECT_EQ(compare_image_stage("shadow_map.0", ref, inside, nullptr, opt).verdict, Verdict::Fail);
+  Image ulp = ref;
+  ulp.at(30, 30, 0) += 4e-6f;  // inside the bound
+  EXPECT_EQ(compare_image_stage("shadow_map.0", ref, ulp, nullptr, opt).verdict, Verdict::Pass);
+}
+
+}  // namespace
+}  // namespace vct::cmp
