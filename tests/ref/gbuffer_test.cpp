@@ -59,5 +59,36 @@ void check_quad(bool facing) {
 TEST(GBuffer, OneQuadMatchesTheAnalyticView) { check_quad(true); }
 TEST(GBuffer, BackFacingQuadNormalIsFlippedTowardTheCamera) { check_quad(false); }
 
+// Tangent-space normal maps in both encodings: a 1x1 texel (192, 128, 255) tilts the normal toward
+// the tangent. Three-channel: tn = (2*192/255-1, 2*128/255-1, 1); two-channel: z reconstructed.
+void check_normal_map(bool two_channel) {
+  Scene s = quad_scene(true);
+  Texture t;
+  t.width = t.height = 1;
+  t.rgba8 = {192, 128, 255, 255};
+  s.textures.push_back(t);
+  s.materials[0].normal_texture.texture = 0;
+  s.materials[0].normal_two_channel = two_channel;
+  s.tangents.assign(s.positions.size(), vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  VctSettings st;
+  st.width = 16;
+  st.height = 12;
+  const GBuffer g = render_gbuffer(s, st);
+  const float x = 192.0f / 255.0f * 2.0f - 1.0f, y = 128.0f / 255.0f * 2.0f - 1.0f;
+  const float z = two_channel ? std::sqrt(1.0f - x * x - y * y) : 1.0f;
+  const vec3 expected = glm::normalize(vec3(x, y, z));  // tangent = +x, bitangent = +y, normal = +z
+  int n = 0;
+  for (int row = 0; row < 12; ++row)
+    for (int px = 0; px < 16; ++px)
+      if (g.coverage.at(px, row, 0) > 0.0f) {
+        EXPECT_NEAR(glm::distance(g.normal.rgb(px, row), expected), 0.0f, 1e-5f);
+        ++n;
+      }
+  EXPECT_GT(n, 30);
+}
+
+TEST(GBuffer, NormalMapThreeChannel) { check_normal_map(false); }
+TEST(GBuffer, NormalMapTwoChannelReconstructsZ) { check_normal_map(true); }
+
 }  // namespace
 }  // namespace vct
