@@ -561,7 +561,7 @@ def tiny_triangles():
 
 def thin_wall():
     """Two closed rooms (x < 0 lit by a spot light, x > 0 dark) separated by a 2 cm wall, far
-    thinner than a voxel (grid 64 over the ~4.4 m volume: 69 mm). Any light seen in the dark
+    thinner than a voxel (grid 64 over the 4.35 m volume: 68 mm). Any light seen in the dark
     room is leakage through the wall. The camera stands in the dark room, facing the wall."""
     g = Gltf("thin wall between a lit and a dark room")
     white = g.material("white", (0.75, 0.75, 0.75), lambert=True)
