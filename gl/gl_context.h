@@ -31,4 +31,7 @@ class GlContext {
 /// Throws std::runtime_error("GL error 0x.. after <where>") if glGetError reports anything.
 void check_gl(const char* where);
 
+/// Forgets debug-output errors already reported another way (shader compile / link logs).
+void discard_debug_errors();
+
 }  // namespace vct::gl

@@ -101,6 +101,7 @@ Program::Program(const std::vector<ShaderSource>& stages) {
     if (!ok) {
       const std::string log = shader_log(sh);
       glDeleteShader(sh);
+      discard_debug_errors();  // the same message is in the exception
       throw std::runtime_error("shader " + s.name + ": compile failed:\n" + log);
     }
     glAttachShader(id_, sh);
@@ -113,6 +114,7 @@ Program::Program(const std::vector<ShaderSource>& stages) {
   if (!ok) {
     std::string names;
     for (const auto& s : stages) names += (names.empty() ? "" : " + ") + s.name;
+    discard_debug_errors();
     throw std::runtime_error("shader program " + names + ": link failed:\n" + program_log(id_));
   }
   check_gl("program build");

@@ -1,7 +1,9 @@
 // Anisotropic mip level for one march direction: along the direction's axis the two children are
 // composited front to back (front = the one a cone marching that way meets first), and the four
 // such pairs across the other two axes are averaged. Alpha is clamped to 1.
+#include "half_round.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+uniform int u_half_storage;  // 1: RGBA16F, rounded to nearest even here (half_round.glsl)
 layout(binding = 0) uniform sampler3D u_src;
 layout(binding = 0) uniform writeonly image3D u_dst;
 uniform int u_src_level;
@@ -32,5 +34,5 @@ void main() {
   }
   vec4 r = sum * 0.25f;
   r.a = min(r.a, 1.0f);
-  imageStore(u_dst, c, r);
+  imageStore(u_dst, c, u_half_storage != 0 ? round_to_half(r) : r);
 }

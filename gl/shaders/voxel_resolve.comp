@@ -1,6 +1,7 @@
 // Resolve pass: per voxel, the mean of its fragments (fixed-point sums / count, or the unpacked
 // CAS RGBA8 value), opacity 1 where any fragment landed, plus the additive particle light.
 #include "voxel_fixed.glsl"
+#include "half_round.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(binding = 0, r32ui) uniform readonly uimage3D u_sum_r;
 layout(binding = 1, r32ui) uniform readonly uimage3D u_sum_g;
@@ -12,6 +13,7 @@ layout(binding = 6, r32ui) uniform readonly uimage3D u_particle_b;
 layout(binding = 7) uniform writeonly image3D u_out;
 uniform int u_grid;
 uniform int u_reduction;  // 0 fixed point, 1 CAS RGBA8
+uniform int u_half_storage;  // 1: the target is RGBA16F
 
 void main() {
   ivec3 c = ivec3(gl_GlobalInvocationID);
@@ -30,5 +32,5 @@ void main() {
   }
   uvec3 ps = uvec3(imageLoad(u_particle_r, c).r, imageLoad(u_particle_g, c).r, imageLoad(u_particle_b, c).r);
   v.rgb += vec3(ps) * FIXED_POINT_INV_SCALE;
-  imageStore(u_out, c, v);
+  imageStore(u_out, c, u_half_storage != 0 ? round_to_half(v) : v);
 }

@@ -1,5 +1,6 @@
 // One fragment = one surface sample in one voxel: the in-plane voxel indices are the pixel's, the
-// depth index is floor(N x interpolated texture coordinate) along the projection axis (clamped).
+// depth index is floor of the interpolated voxel-space coordinate along the projection axis
+// (clamped to the grid).
 // Writes: fragment count (imageAtomicAdd), then either fixed-point sums (deterministic) or the
 // OpenGL Insights ch. 22 compare-and-swap running average on packed RGBA8.
 #include "voxel_value.glsl"
@@ -12,6 +13,8 @@ in vec2 v_uv1;
 in vec3 v_tex;
 flat in int v_axis;
 flat in vec3 v_geometric_normal;
+flat in dvec3 v_axis_depth;
+noperspective in vec3 v_bary;
 
 uniform int u_reduction;  // 0 fixed point, 1 CAS RGBA8
 layout(binding = 0, r32ui) uniform coherent volatile uimage3D u_sum_r;  // CAS: the packed value
@@ -22,7 +25,9 @@ layout(binding = 3, r32ui) uniform coherent volatile uimage3D u_count;
 ivec3 voxel_coords() {
   int n = u_grid;
   ivec2 px = ivec2(gl_FragCoord.xy);
-  int d = clamp(int(floor(v_tex[v_axis] * float(n))), 0, n - 1);
+  double depth = double(v_bary.x) * v_axis_depth.x + double(v_bary.y) * v_axis_depth.y +
+                 double(v_bary.z) * v_axis_depth.z;
+  int d = int(clamp(floor(depth), 0.0lf, double(n - 1)));
   if (v_axis == 2) return ivec3(px.x, px.y, d);
   if (v_axis == 0) return ivec3(d, px.x, px.y);
   return ivec3(px.x, d, px.y);

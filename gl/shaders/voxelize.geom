@@ -19,6 +19,14 @@ out vec2 v_uv1;
 out vec3 v_tex;
 flat out int v_axis;
 flat out vec3 v_geometric_normal;
+// Depth along the projection axis, as the CPU computes it: the vertices' voxel-space coordinate
+// in double, interpolated by the barycentrics (a plane lying on a voxel boundary then falls on
+// the same side in both backends; float interpolation of a rounded coordinate did not).
+flat out dvec3 v_axis_depth;
+noperspective out vec3 v_bary;
+uniform vec3 u_volume_origin;
+uniform float u_volume_size;
+uniform int u_grid;
 
 void main() {
   vec3 pos[3] = vec3[3](gl_in[0].gl_Position.xyz, gl_in[1].gl_Position.xyz, gl_in[2].gl_Position.xyz);
@@ -27,6 +35,11 @@ void main() {
   vec3 p = abs(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
   int axis = (p.z > p.x && p.z > p.y) ? 2 : (p.x > p.y ? 0 : 1);
   vec3 gn = normalize(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
+  dvec3 depth;
+  for (int i = 0; i < 3; ++i) {
+    dvec3 vox = (dvec3(vg_position[i]) - dvec3(u_volume_origin)) / double(u_volume_size) * double(u_grid);
+    depth[i] = vox[axis];
+  }
   for (int i = 0; i < 3; ++i) {
     if (axis == 2) gl_Position = vec4(pos[i].x, pos[i].y, 0.0f, 1.0f);
     else if (axis == 0) gl_Position = vec4(pos[i].y, pos[i].z, 0.0f, 1.0f);
@@ -39,6 +52,8 @@ void main() {
     v_tex = vg_tex[i];
     v_axis = axis;
     v_geometric_normal = gn;
+    v_axis_depth = depth;
+    v_bary = vec3(i == 0 ? 1.0f : 0.0f, i == 1 ? 1.0f : 0.0f, i == 2 ? 1.0f : 0.0f);
     EmitVertex();
   }
   EndPrimitive();
