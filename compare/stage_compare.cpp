@@ -297,7 +297,8 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
   }
   // If the reference voxelized conservatively, the GPU's sample rule must give a SUBSET of it
   // (every covered sample lies on the triangle inside its voxel); missing voxels are holes.
-  const bool conservative_ref = rs.settings.is_object() && rs.settings.value("voxelizer", "") == "conservative";
+  const auto vz = rs.settings.is_object() ? rs.settings.find("voxelizer") : rs.settings.end();
+  const bool conservative_ref = vz != rs.settings.end() && *vz == "conservative";
   v.model = conservative_ref ? "subset-of-conservative" : "gpu-rule-exact";
   v.bound = conservative_ref
                 ? "no voxel outside the conservative set (except boundary ties); missing voxels are holes (warn)"
