@@ -35,15 +35,14 @@ bool finite(const PathSample& s) {
   return true;
 }
 
-/// Shading frame at a hit: ng turned toward the viewer, the shading normal turned to ng's side
-/// and, if it still faces away from the viewer (a bent normal at a silhouette), tilted just far
-/// enough that n.v > 0 so the BRDF is defined. Light below ng's plane is rejected elsewhere.
+/// Shading frame at a hit, as the G-buffer orients it: ng turned toward the viewer and the shading
+/// normal negated with it on back faces (GL: gl_FrontFacing ? n : -n). A shading normal that
+/// still faces away from the viewer (bent normals at silhouettes) makes cook_torrance 0 there, as
+/// in the pipelines. Light arriving below ng's plane is rejected in eval_bsdf (no leaks).
 void orient_normals(const SurfacePoint& sp, const SurfaceMaterial& m, const vec3& wo, vec3& ng, vec3& ns) {
-  ng = glm::dot(sp.geometric_normal, wo) < 0.0f ? -sp.geometric_normal : sp.geometric_normal;
-  ns = glm::dot(m.shading_normal, ng) < 0.0f ? -m.shading_normal : m.shading_normal;
-  const float nv = glm::dot(ns, wo);
-  constexpr float kMinCos = 1e-4f;
-  if (nv < kMinCos) ns = glm::normalize(ns + wo * (kMinCos - nv));
+  const bool back = glm::dot(sp.geometric_normal, wo) < 0.0f;
+  ng = back ? -sp.geometric_normal : sp.geometric_normal;
+  ns = back ? -m.shading_normal : m.shading_normal;
 }
 
 }  // namespace
