@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <stdexcept>
 
 #include "core/parallel.h"
 
@@ -28,6 +29,19 @@ void for_each_slice(const Volume& out, const std::function<void(int64_t)>& body)
 // Child index 2i + o along an axis, clamped for levels of size 1.
 int child(int i, int o, int n) { return std::min(2 * i + o, n - 1); }
 
+// RGBA access without Volume::rgba's per-channel loop (the pyramids are always 4 channels).
+vec4 load4(const Volume& v, int x, int y, int z) {
+  const float* p = v.voxel(x, y, z);
+  return vec4(p[0], p[1], p[2], p[3]);
+}
+void store4(Volume& v, int x, int y, int z, const vec4& c) {
+  float* p = v.voxel(x, y, z);
+  p[0] = c.r;
+  p[1] = c.g;
+  p[2] = c.b;
+  p[3] = c.a;
+}
+
 }  // namespace
 
 Volume downsample_iso(const Volume& v) {
@@ -38,8 +52,8 @@ Volume downsample_iso(const Volume& v) {
       for (int x = 0; x < out.nx; ++x) {
         vec4 sum(0.0f);
         for (int o = 0; o < 8; ++o)
-          sum += v.rgba(child(x, o & 1, v.nx), child(y, (o >> 1) & 1, v.ny), child(z, o >> 2, v.nz));
-        out.set_rgba(x, y, z, sum * 0.125f);
+          sum += load4(v, child(x, o & 1, v.nx), child(y, (o >> 1) & 1, v.ny), child(z, o >> 2, v.nz));
+        store4(out, x, y, z, sum * 0.125f);
       }
   });
   return out;
@@ -63,18 +77,19 @@ Volume downsample_aniso(const Volume& v, int d) {
           front[w_axis] = back[w_axis] = child(o[w_axis], p >> 1, dims[w_axis]);
           front[axis] = child(o[axis], positive ? 0 : 1, dims[axis]);
           back[axis] = child(o[axis], positive ? 1 : 0, dims[axis]);
-          const vec4 f = v.rgba(front.x, front.y, front.z), b = v.rgba(back.x, back.y, back.z);
+          const vec4 f = load4(v, front.x, front.y, front.z), b = load4(v, back.x, back.y, back.z);
           sum += f + (1.0f - f.a) * b;
         }
         vec4 r = sum * 0.25f;
         r.a = std::min(r.a, 1.0f);
-        out.set_rgba(o.x, o.y, o.z, r);
+        store4(out, o.x, o.y, o.z, r);
       }
   });
   return out;
 }
 
 VoxelMips build_mips(const Volume& base_rgba, bool anisotropic) {
+  if (base_rgba.channels != 4) throw std::invalid_argument("build_mips needs an RGBA volume");
   VoxelMips m;
   m.iso.push_back(base_rgba);
   while (m.iso.back().nx > 1 || m.iso.back().ny > 1 || m.iso.back().nz > 1) m.iso.push_back(downsample_iso(m.iso.back()));

@@ -12,7 +12,7 @@ namespace vct {
 
 /// iso[0] = base; iso[k+1] = 2x2x2 mean of iso[k] (RGBA, opacity averaged) down to 1^3. Level
 /// sizes follow GL: max(1, floor(n/2)). If `anisotropic`, aniso[d][k-1] is level k of direction d
-/// (levels 1..L; level 0 is the shared base).
+/// (levels 1..L; level 0 is the shared base). Throws std::invalid_argument unless 4 channels.
 VoxelMips build_mips(const Volume& base_rgba, bool anisotropic);
 
 /// One isotropic reduction step.
