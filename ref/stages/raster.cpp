@@ -59,6 +59,8 @@ void emit_triangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
                    uint32_t source, std::vector<RasterTriangle>& out) {
   RasterTriangle t;
   const ClipVertex* v[3] = {&v0, &v1, &v2};
+  for (int i = 0; i < 3; ++i)
+    if (!(v[i]->c.w > 0.0)) return;  // only possible for non-perspective w; nothing to draw
   for (int i = 0; i < 3; ++i) {
     const double inv_w = 1.0 / v[i]->c.w;
     const double wx = (v[i]->c.x * inv_w * 0.5 + 0.5) * double(width);

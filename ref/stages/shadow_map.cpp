@@ -24,7 +24,7 @@ mat4 spot_light_view_proj(const SpotLight& light, const Bounds3& scene_bounds) {
     far_plane = std::max(d * 1.01f, 1e-3f);
   }
   const float near_plane = far_plane / 20.0f;
-  const float fov = std::min(2.0f * light.outer_cone_angle, glm::radians(170.0f));
+  const float fov = std::clamp(2.0f * light.outer_cone_angle, glm::radians(1.0f), glm::radians(170.0f));
   return glm::perspective(fov, 1.0f, near_plane, far_plane) * view;
 }
 

@@ -13,7 +13,7 @@ namespace vct {
 /// World -> light clip space for one spot: glm::lookAt from the light along its direction with a
 /// robust up vector (+z unless the direction is within ~8 degrees of it, then +x: the seed's
 /// rule), and a square perspective whose full field of view is twice the outer cone angle
-/// (capped at 170 degrees). far = distance to the farthest corner of `scene_bounds` (x1.01),
+/// (clamped to [1, 170] degrees). far = distance to the farthest corner of `scene_bounds` (x1.01),
 /// near = far / 20 (keeps the constant NDC depth bias meaningful; see docs).
 mat4 spot_light_view_proj(const SpotLight& light, const Bounds3& scene_bounds);
 
