@@ -9,7 +9,8 @@
 namespace vct::gl {
 namespace {
 
-GLuint framebuffer(const std::vector<GLuint>& colour, GLuint depth) {
+// A framebuffer over `colour` (+ depth); `clear` zeroes the colour attachments first.
+GLuint framebuffer(const std::vector<GLuint>& colour, GLuint depth, bool clear = true) {
   GLuint fbo = 0;
   glCreateFramebuffers(1, &fbo);
   std::vector<GLenum> bufs;
@@ -20,7 +21,8 @@ GLuint framebuffer(const std::vector<GLuint>& colour, GLuint depth) {
   if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
   glNamedFramebufferDrawBuffers(fbo, GLsizei(bufs.size()), bufs.data());
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (GLint i = 0; i < GLint(colour.size()); ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
+  if (clear)
+    for (GLint i = 0; i < GLint(colour.size()); ++i) glClearNamedFramebufferfv(fbo, GL_COLOR, i, zero);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   return fbo;
 }
@@ -83,7 +85,7 @@ void particle_pass(GlFrame& f) {
   const Program prog = Program::from_files({"particles.vert", "particles.frag"});
   ScopedTimer timer(f.timers, "particles");
   // Depth-tested against the opaque surfaces, never writing depth, blended additively.
-  framebuffer({f.particles, f.shading[4]}, f.gbuffer_depth);
+  framebuffer({f.particles, f.shading[4]}, f.gbuffer_depth, false);  // keep the final image: add onto it
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearTexImage(f.particles, 0, GL_RGBA, GL_FLOAT, zero);
   glViewport(0, 0, f.s.width, f.s.height);
