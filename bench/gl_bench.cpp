@@ -1,0 +1,127 @@
+// GL stage times (GPU timer queries) beside the CPU reference's (wall clock) for the same scene
+// and settings. The two pipelines cut stages slightly differently, so times are also summed into
+// common groups (e.g. GL's voxelize + resolve + mips vs the CPU's voxelize + inject/mips), and the
+// CPU/GL ratio is printed per group. Prints; never passes or fails.
+// Usage: gl_bench [SCENE] [--width W] [--height H] [--grid N] [--runs K] [--threads T]
+// On llvmpipe the "GPU" is the same CPU, so ratios compare two CPU implementations.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "gl/gl_context.h"
+#include "gl/gl_pipeline.h"
+#include "scene/gltf_loader.h"
+#include "stages/pipeline.h"
+
+namespace {
+
+using namespace vct;
+
+using Timings = std::map<std::string, double>;
+
+// Median over runs of each stage's time.
+Timings median(const std::vector<Timings>& runs) {
+  std::map<std::string, std::vector<double>> all;
+  for (const auto& r : runs)
+    for (const auto& [k, v] : r) all[k].push_back(v);
+  Timings out;
+  for (auto& [k, v] : all) {
+    std::sort(v.begin(), v.end());
+    out[k] = v[v.size() / 2];
+  }
+  return out;
+}
+
+struct Group {
+  const char* name;
+  std::vector<const char*> gl, ref;
+};
+
+const std::vector<Group>& groups() {
+  static const std::vector<Group> g = {
+      {"shadow maps", {"shadow_maps"}, {"shadow_maps"}},
+      {"g-buffer", {"depth_prepass", "gbuffer"}, {"gbuffer"}},
+      // The CPU's "voxelize" is the conservative voxelizer (always run, for the holes map).
+      {"voxelize+inject+mips", {"voxelize", "resolve", "mips", "particles_voxels"},
+       {"voxelize", "voxelize_gpu_rule", "holes", "inject", "mips", "particles_voxels", "inject_mips_multibounce"}},
+      {"direct", {"direct"}, {"direct", "direct_soft_shadows"}},
+      {"indirect+composite", {"indirect_cones"}, {"indirect_cones", "composite"}},
+      {"particles", {"particles"}, {"particles"}},
+      {"total", {"total"}, {"total"}},
+  };
+  return g;
+}
+
+double sum(const Timings& t, const std::vector<const char*>& keys) {
+  double s = 0.0;
+  for (const char* k : keys) {
+    const auto it = t.find(k);
+    if (it != t.end()) s += it->second;
+  }
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string scene_path;
+  Settings s;
+  s.vct.width = s.vct.height = 128;
+  s.vct.grid = 64;
+  s.vct.shadow_map_size = 512;
+  s.vct.msaa_samples = 4;
+  s.vct.voxelizer = Voxelizer::GpuEmulation;
+  s.vct.reduction = Reduction::FixedPoint;
+  int runs = 3;
+  for (int i = 1; i < argc; ++i) {
+    auto next = [&](const char* flag) {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "gl_bench: %s needs a value\n", flag);
+        std::exit(2);
+      }
+      return std::atoi(argv[++i]);
+    };
+    if (!std::strcmp(argv[i], "--width")) s.vct.width = next("--width");
+    else if (!std::strcmp(argv[i], "--height")) s.vct.height = next("--height");
+    else if (!std::strcmp(argv[i], "--grid")) s.vct.grid = next("--grid");
+    else if (!std::strcmp(argv[i], "--runs")) runs = std::max(1, next("--runs"));
+    else if (!std::strcmp(argv[i], "--threads")) s.threads = next("--threads");
+    else scene_path = argv[i];
+  }
+  try {
+    set_thread_count(s.threads);
+    const Scene scene = load_scene(scene_path);
+    gl::GlContext ctx;
+    std::printf("scene %s, %dx%d, grid %d^3, shadow map %d^2, MSAA %d, fixed-point reduction, %d runs (median)\n",
+                scene.source.c_str(), s.vct.width, s.vct.height, s.vct.grid, s.vct.shadow_map_size, s.vct.msaa_samples,
+                runs);
+    std::printf("GL: %s | %s\n\n", ctx.renderer().c_str(), ctx.version().c_str());
+    gl::render_gl_frame(ctx, scene, s);  // warm-up: shader compilation, driver caches
+    std::vector<Timings> gl_runs, ref_runs;
+    for (int r = 0; r < runs; ++r) gl_runs.push_back(gl::render_gl_frame(ctx, scene, s).timings_ms);
+    for (int r = 0; r < runs; ++r) ref_runs.push_back(render_ref_frame(scene, s).timings_ms);
+    const Timings gl_t = median(gl_runs), ref_t = median(ref_runs);
+    std::printf("%-24s %12s %12s %10s\n", "stage group", "GL ms", "CPU ref ms", "CPU/GL");
+    for (const Group& g : groups()) {
+      const double a = sum(gl_t, g.gl), b = sum(ref_t, g.ref);
+      std::printf("%-24s %12.2f %12.2f %10.2f\n", g.name, a, b, a > 0.0 ? b / a : 0.0);
+    }
+    std::printf("\nGL stages (GPU timer queries):\n");
+    for (const auto& [k, v] : gl_t) std::printf("  %-26s %10.2f ms\n", k.c_str(), v);
+    std::printf("CPU reference stages (wall clock):\n");
+    for (const auto& [k, v] : ref_t) std::printf("  %-26s %10.2f ms\n", k.c_str(), v);
+  } catch (const EnvironmentError& e) {
+    std::fprintf(stderr, "gl_bench: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gl_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
