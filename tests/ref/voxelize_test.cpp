@@ -89,6 +89,20 @@ TEST(Voxelize, FacesOnVoxelBoundariesBelongToTheUpperVoxel) {
   EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, 1)), gpu);
 }
 
+TEST(Voxelize, MsaaFragmentUsesTheExtrapolatedPixelCentreDepth) {
+  Scene s = unit_grid_scene(8);
+  // In pixel (1,1) only the 4x sample (1.375, 1.125) lies in x + y <= 2.625; the centre does not.
+  // Plane z = 2.9 + 0.3 (x - 1): the centre's (extrapolated) depth is 3.05 -> layer 3.
+  // (Dyadic x, y so snapping to 1/256 pixel is exact.)
+  test::add_triangle(s, {1.0f, 1.0f, 2.9f}, {1.625f, 1.0f, 3.0875f}, {1.0f, 1.625f, 2.9f}, 0);
+  EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, 1)), VoxelSet{});
+  const Voxelization g = voxelize_gpu_rule(s, 8, 4);
+  ASSERT_EQ(voxels(g), (VoxelSet{{1, 1, 3}}));
+  EXPECT_NEAR(g.fragments[0].position.x, 1.5f, 1e-5f);  // evaluated at the centre, outside the triangle
+  EXPECT_NEAR(g.fragments[0].position.z, 3.05f, 1e-5f);
+  EXPECT_EQ(voxels(voxelize_conservative(s, 8)), (VoxelSet{{1, 1, 2}, {1, 1, 3}}));
+}
+
 TEST(Voxelize, DominantAxisTieBreakingFollowsTheSeed) {
   // p = |cross|: strictly largest z -> z; else x if p.x > p.y; else y.
   EXPECT_EQ(dominant_axis({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), 2);
