@@ -21,8 +21,9 @@ void main() {
   ivec2 px = ivec2(gl_FragCoord.xy);
   GSample g = read_gbuffer(px);
   o_direct = vec4(0.0f);
-  o_soft_shadow = vec4(0.0f);
+  o_soft_shadow = vec4(1.0f);  // as the CPU: 1 where nothing is covered, else the mean over lights
   if (!g.covered) return;
+  float vis_sum = 0.0f;
   vec3 v = normalize(u_camera_position - g.position);
   vec3 sum = vec3(0.0f);
   for (int i = 0; i < u_light_count; ++i) {
@@ -31,7 +32,7 @@ void main() {
     float vis;
     if (u_soft_shadows != 0) {
       vis = cone_visibility(g.position, u_light_position[i]);
-      if (i == 0) o_soft_shadow = vec4(vis);
+      vis_sum += vis;
     } else {
       vis = shadow_visibility(i, g.position);
     }
@@ -39,4 +40,5 @@ void main() {
     sum += cook_torrance(g.pbr, g.normal, v, l) * light_irradiance(i, g.position) * n_dot_l * vis;
   }
   o_direct = vec4(sum, 0.0f);
+  if (u_soft_shadows != 0 && u_light_count > 0) o_soft_shadow = vec4(vis_sum / float(u_light_count));
 }
