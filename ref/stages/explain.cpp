@@ -144,10 +144,14 @@ Image draw_picture(const Volume& base, const vec3& origin_tex, const vec3& norma
   }
   for (const TracedCone& cone : cones) {
     const vec3 colour = cone_colour(cone);
+    // Samples after the cone is (almost) opaque change nothing visible: draw up to a >= 0.99 so
+    // the picture shows where the cone effectively stopped (the JSON keeps every sample).
+    float reach = 0.0f;
     for (const ConeSample& s : cone.samples) {
       draw_circle(img, view.to_pixel(s.position), 0.5f * s.diameter * float(size), colour * 0.6f);
+      reach = s.distance;
+      if (s.accumulated.a >= 0.99f) break;
     }
-    const float reach = cone.samples.empty() ? 0.0f : cone.samples.back().distance;
     draw_line(img, view.to_pixel(cone.cone.origin), view.to_pixel(cone.cone.origin + cone.cone.direction * reach),
               colour);
   }
