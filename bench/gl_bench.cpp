@@ -8,66 +8,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "compare/stage_timings.h"
 #include "core/parallel.h"
 #include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
 #include "scene/gltf_loader.h"
 #include "stages/pipeline.h"
 
-namespace {
-
 using namespace vct;
-
-using Timings = std::map<std::string, double>;
-
-// Median over runs of each stage's time.
-Timings median(const std::vector<Timings>& runs) {
-  std::map<std::string, std::vector<double>> all;
-  for (const auto& r : runs)
-    for (const auto& [k, v] : r) all[k].push_back(v);
-  Timings out;
-  for (auto& [k, v] : all) {
-    std::sort(v.begin(), v.end());
-    out[k] = v[v.size() / 2];
-  }
-  return out;
-}
-
-struct Group {
-  const char* name;
-  std::vector<const char*> gl, ref;
-};
-
-const std::vector<Group>& groups() {
-  static const std::vector<Group> g = {
-      {"shadow maps", {"shadow_maps"}, {"shadow_maps"}},
-      {"g-buffer", {"depth_prepass", "gbuffer"}, {"gbuffer"}},
-      // The CPU's "voxelize" is the conservative voxelizer (always run, for the holes map).
-      {"voxelize+inject+mips", {"voxelize", "resolve", "mips", "particles_voxels"},
-       {"voxelize", "voxelize_gpu_rule", "holes", "inject", "mips", "particles_voxels", "inject_mips_multibounce"}},
-      {"direct", {"direct"}, {"direct", "direct_soft_shadows"}},
-      {"indirect+composite", {"indirect_cones"}, {"indirect_cones", "composite"}},
-      {"particles", {"particles"}, {"particles"}},
-      {"total", {"total"}, {"total"}},
-  };
-  return g;
-}
-
-double sum(const Timings& t, const std::vector<const char*>& keys) {
-  double s = 0.0;
-  for (const char* k : keys) {
-    const auto it = t.find(k);
-    if (it != t.end()) s += it->second;
-  }
-  return s;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   std::string scene_path;
@@ -103,14 +55,14 @@ int main(int argc, char** argv) {
                 runs);
     std::printf("GL: %s | %s\n\n", ctx.renderer().c_str(), ctx.version().c_str());
     gl::render_gl_frame(ctx, scene, s);  // warm-up: shader compilation, driver caches
-    std::vector<Timings> gl_runs, ref_runs;
+    std::vector<StageTimes> gl_runs, ref_runs;
     for (int r = 0; r < runs; ++r) gl_runs.push_back(gl::render_gl_frame(ctx, scene, s).timings_ms);
     for (int r = 0; r < runs; ++r) ref_runs.push_back(render_ref_frame(scene, s).timings_ms);
-    const Timings gl_t = median(gl_runs), ref_t = median(ref_runs);
+    const StageTimes gl_t = median_times(gl_runs), ref_t = median_times(ref_runs);
     std::printf("%-24s %12s %12s %10s\n", "stage group", "GL ms", "CPU ref ms", "CPU/GL");
-    for (const Group& g : groups()) {
-      const double a = sum(gl_t, g.gl), b = sum(ref_t, g.ref);
-      std::printf("%-24s %12.2f %12.2f %10.2f\n", g.name, a, b, a > 0.0 ? b / a : 0.0);
+    for (const StageGroup& g : stage_groups()) {
+      const double a = sum_stages(gl_t, g.gl), b = sum_stages(ref_t, g.ref);
+      std::printf("%-24s %12.2f %12.2f %10.2f\n", g.name.c_str(), a, b, a > 0.0 ? b / a : 0.0);
     }
     std::printf("\nGL stages (GPU timer queries):\n");
     for (const auto& [k, v] : gl_t) std::printf("  %-26s %10.2f ms\n", k.c_str(), v);

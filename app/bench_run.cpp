@@ -1,0 +1,204 @@
+#include "bench_run.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "compare/stage_timings.h"
+#include "core/error.h"
+#include "core/memory_budget.h"
+#include "core/parallel.h"
+#include "io/run_dir.h"
+#include "pt/ray_throughput.h"
+#include "stages/pipeline.h"
+
+#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
+#include "gl/gl_context.h"
+#include "gl/gl_pipeline.h"
+#define VCT_BENCH_GL 1
+#endif
+
+namespace vct::app {
+
+namespace {
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  }
+  return "unknown";
+}
+
+double load_average() {
+  std::ifstream in("/proc/loadavg");
+  double l = 0.0;
+  in >> l;
+  return l;
+}
+
+nlohmann::json machine() {
+  return {{"cpu", cpu_model()},
+          {"hardware_threads", std::thread::hardware_concurrency()},
+          {"worker_threads", thread_count()},
+          {"memory", format_bytes(physical_memory_bytes())},
+          {"load_average_1min", load_average()},
+          {"environment", environment_info()}};
+}
+
+nlohmann::json ref_times(const Scene& scene, const Settings& s, int repeat) {
+  std::vector<StageTimes> runs;
+  for (int r = 0; r < repeat; ++r) runs.push_back(render_ref_frame(scene, s).timings_ms);
+  return median_times(runs);
+}
+
+// GL stage times (GPU timer queries) after one warm-up frame (shader compilation, driver caches);
+// null with the reason in `note` when there is no GL.
+nlohmann::json gl_times(const Scene& scene, const Settings& s, int repeat, std::string& note, std::string& renderer) {
+#ifdef VCT_BENCH_GL
+  try {
+    gl::GlContext ctx;
+    renderer = ctx.renderer() + " | " + ctx.version();
+    gl::render_gl_frame(ctx, scene, s);
+    std::vector<StageTimes> runs;
+    for (int r = 0; r < repeat; ++r) runs.push_back(gl::render_gl_frame(ctx, scene, s).timings_ms);
+    return median_times(runs);
+  } catch (const EnvironmentError& e) {
+    note = std::string("GL unavailable: ") + e.what();
+  }
+#else
+  (void)scene, (void)s, (void)repeat, (void)renderer;
+  note = "GL backend not built";
+#endif
+  return nullptr;
+}
+
+nlohmann::json groups(const nlohmann::json& ref, const nlohmann::json& gl) {
+  const StageTimes r = ref.get<StageTimes>();
+  const StageTimes g = gl.is_null() ? StageTimes{} : gl.get<StageTimes>();
+  nlohmann::json out = nlohmann::json::array();
+  for (const StageGroup& grp : stage_groups()) {
+    nlohmann::json row = {{"name", grp.name}, {"ref_ms", sum_stages(r, grp.ref)}};
+    if (!gl.is_null()) {
+      const double gms = sum_stages(g, grp.gl);
+      row["gl_ms"] = gms;
+      row["ref_over_gl"] = gms > 0.0 ? nlohmann::json(row["ref_ms"].get<double>() / gms) : nlohmann::json(nullptr);
+    }
+    out.push_back(row);
+  }
+  return out;
+}
+
+nlohmann::json path_tracer(const Scene& scene, const Settings& s, const BenchOptions& o) {
+  const pt::RawRayRates raw = pt::measure_raw_embree(scene, o.raw_rays);
+  PtSettings ps = s.pt;
+  ps.width = s.vct.width;
+  ps.height = s.vct.height;
+  auto rate_json = [&](const pt::TracerRate& t) {
+    return nlohmann::json{{"rays_per_second", t.rays_per_second}, {"seconds", t.seconds},
+                          {"primary", t.counts.primary},      {"secondary", t.counts.secondary},
+                          {"shadow", t.counts.shadow},        {"fraction_of_raw_intersect", t.rays_per_second / raw.intersect}};
+  };
+  PtSettings primary = ps;
+  primary.max_depth = 0;  // camera ray + first-hit shading only
+  return {{"raw_rays", raw.rays},
+          {"raw_intersect_rays_per_second", raw.intersect},
+          {"raw_occluded_rays_per_second", raw.occluded},
+          {"spp", o.pt_spp},
+          {"width", ps.width},
+          {"height", ps.height},
+          {"primary_only", rate_json(pt::measure_path_tracer(scene, primary, o.pt_spp))},
+          {"full_paths", rate_json(pt::measure_path_tracer(scene, ps, o.pt_spp))}};
+}
+
+}  // namespace
+
+nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptions& o) {
+  nlohmann::json j;
+  j["machine"] = machine();
+  j["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()}};
+  j["settings"] = s;
+  j["repeat"] = o.repeat;
+  j["memory_estimate"] = format_bytes(estimate_memory(s).total());
+  j["ref"] = ref_times(scene, s, o.repeat);
+  std::string note, renderer;
+  j["gl"] = o.gl ? gl_times(scene, s, o.repeat, note, renderer) : nlohmann::json(nullptr);
+  if (!o.gl) note = "GL not measured (--no-gl)";
+  if (!note.empty()) j["gl_note"] = note;
+  if (!renderer.empty()) j["machine"]["gl_renderer"] = renderer;
+  j["groups"] = groups(j["ref"], j["gl"]);
+  if (o.pt) j["path_tracer"] = path_tracer(scene, s, o);
+  return j;
+}
+
+namespace {
+
+__attribute__((format(printf, 1, 2))) std::string line(const char* fmt, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  return buf;
+}
+
+std::string stage_table(const char* title, const nlohmann::json& t) {
+  std::string out = line("%s\n", title);
+  for (const auto& [k, v] : t.items()) out += line("  %-26s %10.2f ms\n", k.c_str(), v.get<double>());
+  return out;
+}
+
+std::string format_path_tracer(const nlohmann::json& p) {
+  const double raw = p["raw_intersect_rays_per_second"].get<double>();
+  std::string out = line("\npath tracer vs raw Embree (%dx%d, %d spp):\n", p["width"].get<int>(),
+                         p["height"].get<int>(), p["spp"].get<int>());
+  out += line("  raw rtcIntersect1 (random rays) %8.2f Mrays/s\n", raw * 1e-6);
+  out += line("  raw rtcOccluded1  (random rays) %8.2f Mrays/s\n",
+              p["raw_occluded_rays_per_second"].get<double>() * 1e-6);
+  for (const char* k : {"primary_only", "full_paths"}) {
+    const auto& r = p[k];
+    out += line("  path tracer, %-18s %8.2f Mrays/s  = %5.1f %% of raw intersect\n", k,
+                r["rays_per_second"].get<double>() * 1e-6, 100.0 * r["fraction_of_raw_intersect"].get<double>());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string format_bench(const nlohmann::json& j) {
+  const auto& v = j["settings"]["vct"];
+  std::string out = line("scene %s (%zu triangles), %dx%d, grid %d^3, %d threads, median of %d runs\n",
+                         j["scene"]["source"].get<std::string>().c_str(), j["scene"]["triangles"].get<size_t>(),
+                         v["width"].get<int>(), v["height"].get<int>(), v["grid"].get<int>(),
+                         j["machine"]["worker_threads"].get<int>(), j["repeat"].get<int>());
+  out += line("CPU: %s\n", j["machine"]["cpu"].get<std::string>().c_str());
+  if (j["machine"].contains("gl_renderer"))
+    out += line("GL:  %s\n", j["machine"]["gl_renderer"].get<std::string>().c_str());
+  if (j.contains("gl_note")) out += line("note: %s (CPU column only)\n", j["gl_note"].get<std::string>().c_str());
+  const bool gl = !j["gl"].is_null();
+  out += gl ? line("\n%-24s %12s %12s %10s\n", "stage group", "CPU ref ms", "GL ms", "CPU/GL")
+            : line("\n%-24s %12s\n", "stage group", "CPU ref ms");
+  for (const auto& g : j["groups"]) {
+    const double r = g["ref_ms"].get<double>();
+    if (!gl) {
+      out += line("%-24s %12.2f\n", g["name"].get<std::string>().c_str(), r);
+    } else {
+      const double ratio = g["ref_over_gl"].is_null() ? 0.0 : g["ref_over_gl"].get<double>();
+      out += line("%-24s %12.2f %12.2f %10.2f\n", g["name"].get<std::string>().c_str(), r, g["gl_ms"].get<double>(),
+                  ratio);
+    }
+  }
+  out += "\n" + stage_table("CPU reference stages (wall clock, median):", j["ref"]);
+  if (gl) out += stage_table("GL stages (GPU timer queries, median):", j["gl"]);
+  if (j.contains("path_tracer")) out += format_path_tracer(j["path_tracer"]);
+  return out;
+}
+
+}  // namespace vct::app

@@ -1,0 +1,85 @@
+#include "pt/ray_throughput.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/parallel.h"
+#include "pt/accumulator.h"
+#include "pt/embree_scene.h"
+#include "pt/path_tracer.h"
+#include "pt/rng.h"
+
+namespace vct::pt {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Rays {
+  std::vector<vec3> org, dir;
+};
+
+Rays random_rays(const Bounds3& b, size_t n) {
+  Rays r;
+  r.org.reserve(n);
+  r.dir.reserve(n);
+  Pcg32 rng(42u, 7u);
+  for (size_t i = 0; i < n; ++i) {
+    r.org.push_back(b.lo + b.extent() * vec3(rng.next_float(), rng.next_float(), rng.next_float()));
+    const float z = 1.0f - 2.0f * rng.next_float(), phi = 2.0f * kPi * rng.next_float();
+    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    r.dir.push_back(vec3(s * std::cos(phi), s * std::sin(phi), z));
+  }
+  return r;
+}
+
+/// Rays per second of `fn(i)` over all rays, in chunks of 4096 over the workers; best of 3 runs
+/// (the machine is shared, the best run is the least disturbed one).
+template <class Fn>
+double rays_per_second(size_t n, Fn fn) {
+  constexpr int64_t kChunk = 4096;
+  const int64_t chunks = int64_t((n + kChunk - 1) / kChunk);
+  double best = 0.0;
+  for (int run = 0; run < 3; ++run) {
+    std::vector<int> sink(size_t(chunks), 0);  // keeps the queries from being optimized away
+    const auto t0 = std::chrono::steady_clock::now();
+    parallel_for(chunks, [&](int64_t c) {
+      int hits = 0;
+      for (size_t i = size_t(c * kChunk); i < std::min(n, size_t((c + 1) * kChunk)); ++i) hits += fn(i) ? 1 : 0;
+      sink[size_t(c)] = hits;
+    });
+    best = std::max(best, double(n) / seconds_since(t0));
+  }
+  return best;
+}
+
+}  // namespace
+
+RawRayRates measure_raw_embree(const Scene& scene, size_t n) {
+  const EmbreeScene rt(scene);
+  const Rays rays = random_rays(scene.bounds, n);
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  RawRayRates r;
+  r.rays = n;
+  r.intersect = rays_per_second(n, [&](size_t i) { return rt.intersect(rays.org[i], rays.dir[i], 0.0f, kInf).hit; });
+  r.occluded = rays_per_second(n, [&](size_t i) { return rt.occluded(rays.org[i], rays.dir[i], 0.0f, kInf); });
+  return r;
+}
+
+TracerRate measure_path_tracer(const Scene& scene, const PtSettings& ps, int spp) {
+  const PathTracer tracer(scene, ps);
+  Accumulator acc(ps.width, ps.height);
+  TracerRate r;
+  const auto t0 = std::chrono::steady_clock::now();
+  r.counts = tracer.render(acc, uint32_t(spp));
+  r.seconds = seconds_since(t0);
+  r.rays_per_second = r.seconds > 0.0 ? double(r.counts.total()) / r.seconds : 0.0;
+  return r;
+}
+
+}  // namespace vct::pt
