@@ -106,6 +106,8 @@ def verdict_table(p):
         worst = st.get("worst", [])[:5]
         wtxt = "<br>".join("%s: %s / %s" % (E(str(w["at"])), E(", ".join("%.4g" % x for x in w["reference"])),
                                              E(", ".join("%.4g" % x for x in w["test"]))) for w in worst)
+        if worst:
+            wtxt = "<details><summary>%d listed</summary><div class='offenders'>%s</div></details>" % (len(st.get("worst", [])), wtxt)
         mask = st.get("mask")
         mpath = os.path.join(p.run.path, mask) if mask else None
         mcell = '<a href="%s"><img src="%s" style="width:64px"></a>' % (E(p.rel(mpath)), E(p.rel(mpath))) if mpath and os.path.exists(mpath) else ""
