@@ -102,7 +102,7 @@ void resolve(GlFrame& f, GLuint target) {
   prog.use();
   prog.set("u_grid", f.s.grid);
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
-  prog.set("u_half_storage", f.voxel_format == GL_RGBA16F ? 1 : 0);
+  prog.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
   for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_ONLY, GL_R32UI);
   for (GLuint c = 0; c < 3; ++c) bind_image(4 + c, f.particle_sums[c], 0, GL_READ_ONLY, GL_R32UI);
   bind_image(7, target, 0, GL_WRITE_ONLY, f.voxel_format);
@@ -115,7 +115,7 @@ void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso)
   ScopedTimer timer(f.timers, "mips");
   const Program iso = Program::from_files({"mip_iso.comp"});
   iso.use();
-  iso.set("u_half_storage", f.voxel_format == GL_RGBA16F ? 1 : 0);
+  iso.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
   glBindTextureUnit(0, radiance);
   for (int l = 1, size = f.s.grid / 2; l < f.levels; ++l, size /= 2) {
     iso.set("u_src_level", l - 1);
@@ -127,7 +127,7 @@ void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso)
   if (f.s.anisotropic) {
     const Program an = Program::from_files({"mip_aniso.comp"});
     an.use();
-    an.set("u_half_storage", f.voxel_format == GL_RGBA16F ? 1 : 0);
+    an.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
     for (int d = 0; d < 6; ++d) {
       an.set("u_axis", d / 2);
       an.set("u_positive", d % 2 == 0 ? 1 : 0);

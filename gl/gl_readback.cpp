@@ -24,6 +24,10 @@ Image rgb(GLuint tex, int w, int h) {
 
 }  // namespace
 
+static Volume read_voxels(const GlFrame& f, GLuint tex, int level, int n) {
+  return f.voxel_format == GL_RGBA8 ? read_volume_unorm8(tex, level, n) : read_volume(tex, level, n, 4);
+}
+
 void read_back(GlFrame& f) {
   FrameResult& r = f.out;
   const int w = f.s.width, h = f.s.height, n = f.s.grid;
@@ -47,13 +51,13 @@ void read_back(GlFrame& f) {
   g.depth = read_depth(f.gbuffer_depth, w, h);
 
   r.voxels.n = n;
-  r.voxels.radiance = read_volume(f.radiance, 0, n, 4);
+  r.voxels.radiance = read_voxels(f, f.radiance, 0, n);
   r.voxels.fragments = read_volume_uint(f.sums[3], n);
-  for (int l = 0, size = n; l < f.levels; ++l, size /= 2) r.mips.iso.push_back(read_volume(f.radiance, l, size, 4));
+  for (int l = 0, size = n; l < f.levels; ++l, size /= 2) r.mips.iso.push_back(read_voxels(f, f.radiance, l, size));
   if (f.s.anisotropic)
     for (size_t d = 0; d < 6; ++d)
       for (int l = 0, size = n / 2; l < f.levels - 1; ++l, size /= 2)
-        r.mips.aniso[d].push_back(read_volume(f.aniso[d], l, size, 4));
+        r.mips.aniso[d].push_back(read_voxels(f, f.aniso[d], l, size));
 
   FrameImages& im = r.images;
   im.direct = rgb(f.direct, w, h);

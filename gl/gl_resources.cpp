@@ -102,6 +102,17 @@ Volume read_volume(GLuint tex, int level, int n, int channels) {
   return v;
 }
 
+Volume read_volume_unorm8(GLuint tex, int level, int n) {
+  std::vector<uint8_t> raw(size_t(n) * size_t(n) * size_t(n) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(tex, level, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(raw.size()), raw.data());
+  check_gl("volume readback (unorm8)");
+  Volume v(n, n, n, 4);
+  for (size_t i = 0; i < raw.size(); ++i) v.data[i] = float(raw[i]) / 255.0f;
+  v.channel_names = {"R", "G", "B", "A"};
+  return v;
+}
+
 Volume read_volume_uint(GLuint tex, int n) {
   std::vector<uint32_t> raw(size_t(n) * size_t(n) * size_t(n));
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

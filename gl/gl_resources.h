@@ -24,5 +24,8 @@ Image read_depth(GLuint tex, int w, int h, int layer = -1);
 /// Reads one level of a 3D texture (float RGBA or R32UI) into a Volume.
 Volume read_volume(GLuint tex, int level, int n, int channels);
 Volume read_volume_uint(GLuint tex, int n);
+/// Reads one level of an RGBA8 3D texture as bytes and converts with c / 255 (GL's definition; a
+/// driver's own float readback may compute c * (1/255), one ulp away).
+Volume read_volume_unorm8(GLuint tex, int level, int n);
 
 }  // namespace vct::gl

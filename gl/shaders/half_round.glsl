@@ -1,3 +1,4 @@
+// Pinning GL's store conversions (docs/gl_backend.md, "Formats").
 // Round-to-nearest-even to binary16, computed exactly in float: the result is representable in
 // half precision, so the driver's own float->half conversion on imageStore (whose rounding GL
 // leaves to the implementation; llvmpipe truncates) has nothing left to round. This pins RGBA16F
@@ -20,3 +21,14 @@ float round_to_half(float v) {
 vec4 round_to_half(vec4 v) {
   return vec4(round_to_half(v.x), round_to_half(v.y), round_to_half(v.z), round_to_half(v.w));
 }
+
+// RGBA8 stores: GL's float->unorm8 conversion may round or truncate (llvmpipe truncates). The
+// value is rounded here (to nearest even, as the CPU's quantize_unorm8) and a quarter step is
+// added, so either conversion lands on the same integer.
+vec4 unorm8_store_value(vec4 v) {
+  vec4 q = roundEven(clamp(v, vec4(0.0f), vec4(1.0f)) * 255.0f);
+  return (q + 0.25f) / 255.0f;
+}
+
+// The value to imageStore for the voxel storage format: u_storage_format 0 = RGBA16F, 1 = RGBA8.
+vec4 storage_value(vec4 v, int format) { return format == 1 ? unorm8_store_value(v) : round_to_half(v); }

@@ -3,7 +3,7 @@
 // such pairs across the other two axes are averaged. Alpha is clamped to 1.
 #include "half_round.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-uniform int u_half_storage;  // 1: RGBA16F, rounded to nearest even here (half_round.glsl)
+uniform int u_storage_format;  // 0 RGBA16F, 1 RGBA8: rounded here (half_round.glsl)
 layout(binding = 0) uniform sampler3D u_src;
 layout(binding = 0) uniform writeonly image3D u_dst;
 uniform int u_src_level;
@@ -34,5 +34,5 @@ void main() {
   }
   vec4 r = sum * 0.25f;
   r.a = min(r.a, 1.0f);
-  imageStore(u_dst, c, u_half_storage != 0 ? round_to_half(r) : r);
+  imageStore(u_dst, c, storage_value(r, u_storage_format));
 }

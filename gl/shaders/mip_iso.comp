@@ -1,7 +1,7 @@
 // Isotropic mip level l from level l-1: the box filter over the 2x2x2 children.
 #include "half_round.glsl"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-uniform int u_half_storage;  // 1: RGBA16F, rounded to nearest even here (half_round.glsl)
+uniform int u_storage_format;  // 0 RGBA16F, 1 RGBA8: rounded here (half_round.glsl)
 layout(binding = 0) uniform sampler3D u_src;
 layout(binding = 0) uniform writeonly image3D u_dst;
 uniform int u_src_level;
@@ -15,5 +15,5 @@ void main() {
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) sum += texelFetch(u_src, 2 * c + ivec3(i, j, k), u_src_level);
   vec4 r = sum * 0.125f;
-  imageStore(u_dst, c, u_half_storage != 0 ? round_to_half(r) : r);
+  imageStore(u_dst, c, storage_value(r, u_storage_format));
 }

@@ -13,7 +13,7 @@ layout(binding = 6, r32ui) uniform readonly uimage3D u_particle_b;
 layout(binding = 7) uniform writeonly image3D u_out;
 uniform int u_grid;
 uniform int u_reduction;  // 0 fixed point, 1 CAS RGBA8
-uniform int u_half_storage;  // 1: the target is RGBA16F
+uniform int u_storage_format;  // 0 RGBA16F, 1 RGBA8 (half_round.glsl)
 
 void main() {
   ivec3 c = ivec3(gl_GlobalInvocationID);
@@ -32,5 +32,5 @@ void main() {
   }
   uvec3 ps = uvec3(imageLoad(u_particle_r, c).r, imageLoad(u_particle_g, c).r, imageLoad(u_particle_b, c).r);
   v.rgb += vec3(ps) * FIXED_POINT_INV_SCALE;
-  imageStore(u_out, c, u_half_storage != 0 ? round_to_half(v) : v);
+  imageStore(u_out, c, storage_value(v, u_storage_format));
 }

@@ -55,7 +55,7 @@ Stats image_stats(const Frames& f, const Image& gl, const Image& ref, float tol)
         s.max = std::max(s.max, d);
         s.sum += d;
         s.ref_sum += std::abs(double(ref.at(x, y, c)));
-        s.over += d > tol;
+        s.over += d > double(tol);
         ++s.n;
       }
     }
@@ -348,6 +348,35 @@ TEST(GlCrossBackend, FinalImageBounded) {
   print("final", fin);
   EXPECT_LE(d.mean(), 0.05 * d.ref_mean());
   EXPECT_LE(fin.mean(), 0.05 * fin.ref_mean());
+}
+
+}  // namespace vct::gl::test
+
+namespace vct::gl::test {
+
+TEST(GlCrossBackend, FixedPointRgba8StorageExact) {
+  if (!shared_context()) GTEST_SKIP() << "no OpenGL 4.5 context";
+  Settings s = small_settings();
+  s.vct.storage = VoxelStorage::Rgba8;
+  const FrameResult g = render_gl_frame(*shared_context(), emission_only_box(), s);
+  const FrameResult r = render_ref_frame(emission_only_box(), s);
+  size_t compared = 0, exact = 0;
+  for (size_t k = 0; k < g.voxels.radiance.voxel_count(); ++k) {
+    if (g.voxels.fragments.data[k] != r.voxels.fragments.data[k] || r.voxels.fragments.data[k] == 0.0f) continue;
+    ++compared;
+    bool same = true;
+    for (size_t c = 0; c < 4; ++c) same = same && g.voxels.radiance.data[k * 4 + c] == r.voxels.radiance.data[k * 4 + c];
+    exact += same;
+    if (!same && std::getenv("VCT_GL_DEBUG") && compared - exact < 5)
+      std::printf("  voxel %zu: gl %.9g %.9g %.9g %.9g ref %.9g %.9g %.9g %.9g\n", k, double(g.voxels.radiance.data[k * 4]),
+                  double(g.voxels.radiance.data[k * 4 + 1]), double(g.voxels.radiance.data[k * 4 + 2]),
+                  double(g.voxels.radiance.data[k * 4 + 3]), double(r.voxels.radiance.data[k * 4]),
+                  double(r.voxels.radiance.data[k * 4 + 1]), double(r.voxels.radiance.data[k * 4 + 2]),
+                  double(r.voxels.radiance.data[k * 4 + 3]));
+  }
+  std::printf("[gl vs ref] fixed-point RGBA8 voxels (emission only): %zu of %zu bit-identical\n", exact, compared);
+  EXPECT_GT(compared, 1000u);
+  EXPECT_EQ(exact, compared);
 }
 
 }  // namespace vct::gl::test
