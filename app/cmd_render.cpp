@@ -149,7 +149,14 @@ void write_ref_extras(RunDir& run, const FrameResult& frame, const Scene& scene,
 void run_render(const std::string& scene_path, const CommonOptions& common, const VctFlags& flags) {
   const Settings settings = apply_vct_flags(resolve_settings(common), flags);
   std::optional<ivec2> explain;
-  if (!flags.explain.empty()) explain = parse_pixel(flags.explain);
+  if (!flags.explain.empty()) {
+    explain = parse_pixel(flags.explain);
+    // Checked before the frame is rendered, so a typo costs nothing.
+    if (explain->x < 0 || explain->y < 0 || explain->x >= settings.vct.width || explain->y >= settings.vct.height) {
+      throw InputError("--explain", "pixel " + flags.explain + " is outside the " + std::to_string(settings.vct.width) +
+                                        "x" + std::to_string(settings.vct.height) + " image");
+    }
+  }
   const Scene scene = load_scene(scene_path);
   const FrameResult frame = render_frame(scene, settings, flags.backend);
   if (frame.images.final_image.empty()) throw EnvironmentError("backend '" + flags.backend + "' produced no frame");

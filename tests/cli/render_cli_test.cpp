@@ -1,0 +1,79 @@
+// `vct render` end to end through the real binary: the built-in scene renders with the run
+// directory contract (final + run.json always, stages with --dump, the explained pixel), flags
+// reach the settings, and bad input is one stderr line with exit 2.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "../ref/gltf_test_doc.h"
+
+namespace vct {
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Result vct(const std::string& args) {
+  const std::string out = (test::temp_dir() / "render_stdout.txt").string();
+  const std::string err = (test::temp_dir() / "render_stderr.txt").string();
+  const std::string cmd = std::string("'") + VCT_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = slurp(err);
+  return r;
+}
+
+const char* kSmall = "--width 40 --height 32 --grid 16 --threads 2";
+
+TEST(RenderCli, BuiltinSceneWritesTheRunDirectory) {
+  const std::filesystem::path dir = test::temp_dir() / "render_builtin";
+  const Result r = vct(std::string("render ") + kSmall + " --bounces 2 --aniso --dump --explain 20,20 --out '" +
+                       dir.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"final.exr", "final.png", "run.json", "indirect_diffuse.exr", "diffuse_term.exr",
+                        "diffuse_cone_0.exr", "multibounce_frame_1.nrrd", "explain_20_20.json", "explain_20_20.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  }
+  const nlohmann::json run = nlohmann::json::parse(slurp((dir / "run.json").string()));
+  EXPECT_EQ(run["settings"]["vct"]["grid"], 16);
+  EXPECT_EQ(run["settings"]["vct"]["anisotropic"], true);
+  EXPECT_EQ(run["multibounce_energy"]["ref"].size(), 2u);
+  EXPECT_GT(run["timings_ms"]["ref"]["indirect_cones"].get<double>(), 0.0);
+  const nlohmann::json ex = nlohmann::json::parse(slurp((dir / "explain_20_20.json").string()));
+  ASSERT_TRUE(ex["covered"].get<bool>());
+  EXPECT_GE(ex["cones"].size(), 6u);  // 5 diffuse + specular + one shadow cone per light
+  EXPECT_EQ(ex["cones"][0]["kind"], "diffuse");
+  EXPECT_FALSE(ex["cones"][0]["samples"].empty());
+}
+
+TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
+  const std::string out = " --out '" + (test::temp_dir() / "render_bad").string() + "'";
+  for (const std::string& args : {std::string("render --explain 5") + out, std::string("render --light-model nope") + out,
+                                 std::string("render --explain 9999,1 ") + kSmall + out,
+                                 std::string("render /no/such/scene.gltf") + out}) {
+    const Result r = vct(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace vct
