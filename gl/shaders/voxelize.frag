@@ -25,8 +25,11 @@ layout(binding = 3, r32ui) uniform coherent volatile uimage3D u_count;
 ivec3 voxel_coords() {
   int n = u_grid;
   ivec2 px = ivec2(gl_FragCoord.xy);
-  double depth = double(v_bary.x) * v_axis_depth.x + double(v_bary.y) * v_axis_depth.y +
-                 double(v_bary.z) * v_axis_depth.z;
+  // Relative to vertex 0, so a triangle of constant depth (a wall lying exactly on a voxel
+  // boundary, e.g. a plane through the volume's centre) gets exactly that depth whatever the
+  // barycentrics' rounding: b0*d0 + b1*d1 + b2*d2 splits such a wall between two layers.
+  double depth = v_axis_depth.x + double(v_bary.y) * (v_axis_depth.y - v_axis_depth.x) +
+                 double(v_bary.z) * (v_axis_depth.z - v_axis_depth.x);
   int d = int(clamp(floor(depth), 0.0lf, double(n - 1)));
   if (v_axis == 2) return ivec3(px.x, px.y, d);
   if (v_axis == 0) return ivec3(d, px.x, px.y);
