@@ -6,7 +6,6 @@
 
 #include "pt/bsdf_sampling.h"
 #include "pt/camera_ray.h"
-#include "pt/rng.h"
 #include "scene/surface.h"
 #include "shared/vct_shared.h"
 
@@ -15,6 +14,9 @@ namespace vct::pt {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
+// Directions within rounding of a surface's plane carry no light; cutting them avoids 1/cos
+// blow-ups from float noise (and a triangle never lights itself).
+constexpr float kMinCos = 1e-5f;
 
 float scene_scale(const Scene& s) {
   float m = 1.0f;
@@ -45,7 +47,48 @@ void orient_normals(const SurfacePoint& sp, const SurfaceMaterial& m, const vec3
   ns = back ? -m.shading_normal : m.shading_normal;
 }
 
+// ---- Which AOVs a contribution feeds: decided by where its light source sits (see
+// docs/pathtracer.md). Every contribution also goes into pt_full.
+
+/// Light that emission at vertex `depth` >= 2 sends back along the path (c = Le * MIS weight).
+void credit_emission(PathSample& out, const Integrator::Throughput& tp, int depth, const vec3& c) {
+  out.aov[kFull] += tp.beta * c;
+  if (depth == 2) {
+    out.aov[kIndirectDiffuse] += tp.lobe_d * c;
+    out.aov[kIndirectSpecular] += tp.lobe_s * c;
+  }
+}
+
+/// A spot light's contribution f * E * cos at vertex `depth`: at the first hit it is VCT's
+/// "direct"; lighting the second vertex it is one bounce of light.
+void credit_spot(PathSample& out, const Integrator::Throughput& tp, int depth, const vec3& c) {
+  if (depth == 1) {
+    out.aov[kDirect] += c;
+    out.aov[kFull] += c;
+  } else {
+    credit_emission(out, tp, depth, c);
+  }
+}
+
+/// An emitter's or particle's light f * k at vertex `depth`: lighting the first hit it is one
+/// bounce (the VCT cones see emitters and particles in the voxels), split by f's lobes.
+void credit_nee(PathSample& out, const Integrator::Throughput& tp, int depth, const BsdfValue& f, const vec3& k) {
+  out.aov[kFull] += tp.beta * f.total() * k;
+  if (depth == 1) {
+    out.aov[kIndirectDiffuse] += f.diffuse * k;
+    out.aov[kIndirectSpecular] += f.specular * k;
+  }
+}
+
 }  // namespace
+
+struct Integrator::Vertex {
+  BsdfPoint bp;
+  vec3 pos;  // on the surface: light geometry is evaluated here
+  vec3 p;    // lifted along ng: rays start here
+  uint32_t triangle;
+  int depth;
+};
 
 Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights,
                        const PtSettings& s, const ParticleLights* particles, const Image* particle_layer)
@@ -58,6 +101,61 @@ Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const Emissive
       light_model_(s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF),
       eps_(1e-4f * scene_scale(scene)) {}
 
+void Integrator::nee_spots(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const {
+  for (const SpotLight& light : scene_.spot_lights) {
+    const vec3 to_light = light.position - v.pos;
+    const float dist = glm::length(to_light);
+    if (!(dist > 0.0f)) continue;
+    const vec3 l = to_light / dist;
+    const BsdfValue f = eval_bsdf(v.bp, l);
+    if (f.total() == vec3(0.0f)) continue;
+    const vec3 e = sh::spot_irradiance(light_model_, light.color, light.intensity, dist, glm::dot(light.direction, -l),
+                                       std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle),
+                                       light.range);
+    if (e == vec3(0.0f)) continue;
+    ++counts.shadow;
+    if (rt_.occluded(v.p, light.position - v.p, 0.0f, 1.0f)) continue;
+    credit_spot(out, tp, v.depth, f.total() * e * glm::dot(v.bp.n, l));
+  }
+}
+
+void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out,
+                              RayCounts& counts) const {
+  const float u_sel = rng.next_float();
+  const EmissiveTriangles::Sample ls = lights_.sample(u_sel, rng.next_2d());
+  const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
+  const vec3 to_light = lp.position - v.pos;
+  const float dist2 = glm::dot(to_light, to_light);
+  const float dist = std::sqrt(dist2);
+  if (!(dist > 0.0f)) return;
+  const vec3 l = to_light / dist;
+  const float cos_l = std::abs(glm::dot(lp.geometric_normal, l));
+  if (ls.triangle == v.triangle || glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
+  const BsdfValue f = eval_bsdf(v.bp, l);
+  if (f.total() == vec3(0.0f)) return;
+  const vec3 le = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
+  if (le == vec3(0.0f)) return;
+  ++counts.shadow;
+  if (rt_.occluded(v.p, lp.position - v.p, 0.0f, 1.0f - eps_ / dist)) return;
+  const float pdf_light = ls.pdf_area * dist2 / cos_l;
+  const float w = power_heuristic(pdf_light, bsdf_pdf(v.bp, l));
+  credit_nee(out, tp, v.depth, f, le * (glm::dot(v.bp.n, l) * w / pdf_light));
+}
+
+void Integrator::nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out,
+                               RayCounts& counts) const {
+  const ParticleLights::Sample ps = particles_->sample(rng.next_float());
+  const vec3 to_light = ps.position - v.pos;
+  const float dist2 = glm::dot(to_light, to_light);
+  if (!(dist2 > 0.0f) || !(ps.pmf > 0.0f)) return;
+  const vec3 l = to_light / std::sqrt(dist2);
+  const BsdfValue f = eval_bsdf(v.bp, l);
+  if (f.total() == vec3(0.0f)) return;
+  ++counts.shadow;
+  if (rt_.occluded(v.p, ps.position - v.p, 0.0f, 1.0f)) return;
+  credit_nee(out, tp, v.depth, f, ps.intensity * (glm::dot(v.bp.n, l) / (dist2 * ps.pmf)));
+}
+
 PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) const {
   PathSample out;
   Pcg32 rng = sample_rng(uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
@@ -65,9 +163,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
   ++counts.primary;
   Hit hit = rt_.intersect(cam.org, cam.dir, cam.tnear, cam.tfar);
   vec3 dir = cam.dir;
-  // beta: throughput from the camera to the current vertex. lobe_d / lobe_s: the parts of beta
-  // that left the first vertex through its diffuse / specular lobe (used for the one-bounce AOVs).
-  vec3 beta(1.0f), lobe_d(0.0f), lobe_s(0.0f);
+  Throughput tp;
   float prev_pdf = 0.0f;
   if (particle_layer_) {
     out.aov[kParticles] = particle_layer_->rgb(x, y);
@@ -79,7 +175,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     const SurfaceMaterial mat = evaluate_material(scene_, sp);
     const vec3 wo = -dir;
 
-    // Emission seen from the previous vertex (or the camera).
+    // Emission seen from the previous vertex (or the camera); MIS against step 3's sampling.
     const vec3 le = emitted_radiance(scene_, sp, mat, wo);
     if (le != vec3(0.0f)) {
       if (depth == 1) {
@@ -88,12 +184,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
       } else {
         const float cos_l = std::abs(glm::dot(sp.geometric_normal, wo));
         const float pdf_light = lights_.pdf_area(hit.triangle) * hit.t * hit.t / std::max(cos_l, 1e-8f);
-        const vec3 c = le * power_heuristic(prev_pdf, pdf_light);
-        out.aov[kFull] += beta * c;
-        if (depth == 2) {
-          out.aov[kIndirectDiffuse] += lobe_d * c;
-          out.aov[kIndirectSpecular] += lobe_s * c;
-        }
+        credit_emission(out, tp, depth, le * power_heuristic(prev_pdf, pdf_light));
       }
     }
     if (depth > settings_.max_depth) break;
@@ -102,123 +193,40 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     orient_normals(sp, mat, wo, ng, ns);
     const sh::SurfacePbr pbr =
         sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
-    const BsdfPoint bp = make_bsdf_point(pbr, ns, ng, wo);
     // Light geometry is evaluated at the true surface point; only rays start from the point
     // lifted off the surface (along ng, the side every accepted direction leaves on).
-    const vec3 pos = sp.position;
-    const vec3 p = pos + ng * eps_;
+    const Vertex v{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, hit.triangle, depth};
 
-    // Next-event estimation: spot lights (delta, exact visibility by a shadow ray).
-    for (const SpotLight& light : scene_.spot_lights) {
-      const vec3 to_light = light.position - pos;
-      const float dist = glm::length(to_light);
-      if (!(dist > 0.0f)) continue;
-      const vec3 l = to_light / dist;
-      const BsdfValue f = eval_bsdf(bp, l);
-      if (f.total() == vec3(0.0f)) continue;
-      const vec3 e = sh::spot_irradiance(light_model_, light.color, light.intensity, dist,
-                                         glm::dot(light.direction, -l), std::cos(light.inner_cone_angle),
-                                         std::cos(light.outer_cone_angle), light.range);
-      if (e == vec3(0.0f)) continue;
-      ++counts.shadow;
-      if (rt_.occluded(p, light.position - p, 0.0f, 1.0f)) continue;
-      const vec3 c = f.total() * e * glm::dot(ns, l);
-      if (depth == 1) {
-        out.aov[kDirect] += c;
-        out.aov[kFull] += c;
-      } else {
-        out.aov[kFull] += beta * c;
-        if (depth == 2) {
-          out.aov[kIndirectDiffuse] += lobe_d * c;
-          out.aov[kIndirectSpecular] += lobe_s * c;
-        }
-      }
-    }
-
-    // Next-event estimation: one point on the emissive triangles, MIS-weighted against BSDF
-    // sampling (which finds the same emitters below).
-    if (!lights_.empty()) {
-      const float u_sel = rng.next_float();
-      const EmissiveTriangles::Sample ls = lights_.sample(u_sel, rng.next_2d());
-      const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
-      const vec3 to_light = lp.position - pos;
-      const float dist2 = glm::dot(to_light, to_light);
-      const float dist = std::sqrt(dist2);
-      if (dist > 0.0f) {
-        const vec3 l = to_light / dist;
-        const BsdfValue f = eval_bsdf(bp, l);
-        const float cos_l = std::abs(glm::dot(lp.geometric_normal, l));
-        // Directions within rounding of either plane carry no light (and a triangle never
-        // lights itself); cutting them avoids 1/cos blow-ups from float noise.
-        constexpr float kMinCos = 1e-5f;
-        if (ls.triangle != hit.triangle && glm::dot(ng, l) > kMinCos && cos_l > kMinCos &&
-            f.total() != vec3(0.0f)) {
-          const vec3 lle = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
-          if (lle != vec3(0.0f)) {
-            ++counts.shadow;
-            if (!rt_.occluded(p, lp.position - p, 0.0f, 1.0f - eps_ / dist)) {
-              const float pdf_light = ls.pdf_area * dist2 / cos_l;
-              const float w = power_heuristic(pdf_light, bsdf_pdf(bp, l));
-              const vec3 k = lle * (glm::dot(ns, l) * w / pdf_light);
-              out.aov[kFull] += beta * f.total() * k;
-              if (depth == 1) {
-                out.aov[kIndirectDiffuse] += f.diffuse * k;
-                out.aov[kIndirectSpecular] += f.specular * k;
-              }
-            }
-          }
-        }
-      }
-    }
-
-    // Next-event estimation: one fire particle (an isotropic point light; delta, no MIS).
-    if (particles_) {
-      const ParticleLights::Sample ps = particles_->sample(rng.next_float());
-      const vec3 to_light = ps.position - pos;
-      const float dist2 = glm::dot(to_light, to_light);
-      if (dist2 > 0.0f && ps.pmf > 0.0f) {
-        const vec3 l = to_light / std::sqrt(dist2);
-        const BsdfValue f = eval_bsdf(bp, l);
-        if (f.total() != vec3(0.0f)) {
-          ++counts.shadow;
-          if (!rt_.occluded(p, ps.position - p, 0.0f, 1.0f)) {
-            const vec3 k = ps.intensity * (glm::dot(ns, l) / (dist2 * ps.pmf));
-            out.aov[kFull] += beta * f.total() * k;
-            if (depth == 1) {
-              out.aov[kIndirectDiffuse] += f.diffuse * k;
-              out.aov[kIndirectSpecular] += f.specular * k;
-            }
-          }
-        }
-      }
-    }
+    nee_spots(v, tp, out, counts);
+    if (!lights_.empty()) nee_emitters(v, tp, rng, out, counts);
+    if (particles_) nee_particles(v, tp, rng, out, counts);
 
     // Continue by BSDF sampling (also when depth == max_depth: the next vertex's emission
-    // completes paths of max_depth bounces, the MIS partner of the NEE above).
+    // completes paths of max_depth bounces, the MIS partner of the emitter NEE above).
     const float u_lobe = rng.next_float();
-    const BsdfSample bs = sample_bsdf(bp, u_lobe, rng.next_2d());
+    const BsdfSample bs = sample_bsdf(v.bp, u_lobe, rng.next_2d());
     if (!bs.valid) break;
-    const BsdfValue f = eval_bsdf(bp, bs.l);
+    const BsdfValue f = eval_bsdf(v.bp, bs.l);
     if (f.total() == vec3(0.0f)) break;
     const float k = glm::dot(ns, bs.l) / bs.pdf;
     if (depth == 1) {
-      lobe_d = f.diffuse * k;
-      lobe_s = f.specular * k;
-      beta = lobe_d + lobe_s;
+      tp.lobe_d = f.diffuse * k;
+      tp.lobe_s = f.specular * k;
+      tp.beta = tp.lobe_d + tp.lobe_s;
     } else {
-      beta *= f.total() * k;
+      tp.beta *= f.total() * k;
     }
-    if (depth >= settings_.rr_start_depth) {
-      const float q = std::min(1.0f, max_component(beta));
+    if (depth >= settings_.rr_start_depth) {  // Russian roulette
+      const float q = std::min(1.0f, max_component(tp.beta));
       if (rng.next_float() >= q) break;
-      beta /= q;
-      lobe_d /= q;
-      lobe_s /= q;
+      tp.beta /= q;
+      tp.lobe_d /= q;
+      tp.lobe_s /= q;
     }
     prev_pdf = bs.pdf;
     dir = bs.l;
     ++counts.secondary;
-    hit = rt_.intersect(p, dir, 0.0f, kInf);
+    hit = rt_.intersect(v.p, dir, 0.0f, kInf);
   }
 
   if (!finite(out)) {

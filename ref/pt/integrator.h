@@ -11,6 +11,7 @@
 #include "pt/emissive_lights.h"
 #include "pt/embree_scene.h"
 #include "pt/particle_lights.h"
+#include "pt/rng.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
@@ -48,7 +49,18 @@ class Integrator {
   /// Sample `sample` of pixel (x, y); deterministic in (x, y, sample, settings.seed).
   PathSample trace(int x, int y, uint32_t sample, RayCounts& counts) const;
 
+  /// Throughput from the camera to the current vertex, and the parts of it that left the first
+  /// vertex through its diffuse / specular lobe (for the one-bounce AOVs).
+  struct Throughput {
+    vec3 beta{1.0f}, lobe_d{0.0f}, lobe_s{0.0f};
+  };
+
  private:
+  struct Vertex;  // a shading point: BSDF, true position, lifted ray origin, depth
+  void nee_spots(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
+  void nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
+  void nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
+
   const Scene& scene_;
   const EmbreeScene& rt_;
   const EmissiveTriangles& lights_;
