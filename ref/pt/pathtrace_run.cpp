@@ -112,7 +112,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
                     {"render_seconds", result.render_seconds},
                     {"rays_per_second", result.render_seconds > 0.0 ? rays / result.render_seconds : 0.0},
                     {"aovs", std::vector<std::string>(kAovNames, kAovNames + kAovCount)}};
-  dir.add_timing("pt", "bvh_build", build_ms);
+  dir.add_timing("pt", "setup", build_ms);  // BVH, emitter tables, particle layer
   dir.add_timing("pt", "render", result.render_seconds * 1e3);
   dir.save();
   return result;
