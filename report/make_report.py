@@ -370,10 +370,24 @@ def performance(p):
             o = ours_cone.get(g, (None, None))
             out.append("<tr><td>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td></tr>" % (E(g), E(ms), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
         out.append("</table>")
+    def ours_pair(key, stage):
+        """Our frame/stage times for a false,true sweep of `key`, as table rows (ref, gl)."""
+        rows = ""
+        for sw in j.get("sweeps", []):
+            if sw.get("key") != key:
+                continue
+            by = {str(r["value"]).lower(): r for r in sw["rows"]}
+            for side in ("ref", "gl"):
+                vals = [by.get(v, {}).get(side + "_timings_ms", {}).get(stage) for v in ("false", "true")]
+                rows += "<tr><td>ours %s (%s)</td><td class=num>%s</td><td class=num>%s</td></tr>" % (
+                    side, E(stage), fmt(vals[0], "%.2f"), fmt(vals[1], "%.2f"))
+        return rows
     if "aniso" in seed:
-        out.append("<table><tr><th></th><th>isotropic</th><th>anisotropic</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr></table>" % tuple(E(c) for c in seed["aniso"][:2]))
+        out.append("<table><tr><th></th><th>isotropic</th><th>anisotropic</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr>%s</table>" % (
+            E(seed["aniso"][0]), E(seed["aniso"][1]), ours_pair("anisotropic", "indirect_cones")))
     if "culling" in seed:
-        out.append("<table><tr><th></th><th>no occlusion culling</th><th>with depth pre-pass</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr></table>" % tuple(E(c) for c in seed["culling"][:2]))
+        out.append("<table><tr><th></th><th>no occlusion culling</th><th>with depth pre-pass</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr>%s</table>" % (
+            E(seed["culling"][0]), E(seed["culling"][1]), ours_pair("depth_prepass", "total")))
     out.append("<p>Ours for these rows: <code>vct bench</code> and <code>vct validate --sweep grid=32,64,128,256</code> / "
                "<code>--sweep anisotropic=false,true</code> / <code>--sweep depth_prepass=false,true</code> fill them.</p>")
     return "".join(out)
