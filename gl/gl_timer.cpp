@@ -16,6 +16,9 @@ void GpuTimers::begin(const std::string& stage) {
 
 void GpuTimers::end() {
   if (!open_) return;
+  // llvmpipe bins draws and rasterizes them at flush time, so without a finish a stage's work is
+  // billed to whichever later stage flushes. One sync per stage is cheap for a validation tool.
+  glFinish();
   glQueryCounter(queries_.back().end, GL_TIMESTAMP);
   open_ = false;
 }
