@@ -31,6 +31,11 @@ ImageModel image_model(const std::string& stage) {
     m = {"interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, 0.01, 0.001,
          "|d| <= 1e-4 + 2^-12 |ref| + 2^-8 (|d/dx|+|d/dy|) (float interpolation, subpixel snapping); edges up to 1%"};
     m.slope_factor = std::ldexp(1.0, -8);
+  } else if (stage == "gbuffer.normal") {
+    // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice the
+    // error) and renormalising a filtered (shortened) tangent-space normal scales it further.
+    m = {"normal-map-8bit-weights", std::ldexp(1.0, -6), std::ldexp(1.0, -7), 0.0, 0.005, 0.0,
+         "|d| <= 2^-6 + 2^-7 |ref| (8-bit sub-texel + LOD weights on [-1,1] normal-map texels, renormalised); edges up to 0.5%"};
   } else if (stage.rfind("gbuffer.", 0) == 0) {
     // Textured attributes: bilinear/trilinear weights with 8 sub-texel bits (D3D11 7.18.16.1,
     // dEQP LookupPrecision) and an 8-bit mip blend: |d| <= (2+1)*2^-9*range + 8-bit texel step.
