@@ -27,6 +27,8 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     result.info["msaa_note"] = "requested " + std::to_string(settings.vct.msaa_samples) +
                                " samples; the driver's GL_MAX_FRAMEBUFFER_SAMPLES is " +
                                std::to_string(context.max_framebuffer_samples());
+  if (settings.vct.voxelizer == Voxelizer::Conservative)
+    result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; GL has no conservative rasterization on this path)";
   if (settings.vct.reduction == Reduction::ExactMean)
     result.info["reduction"] = "fixed_point (GL has no exact mean; the fixed-point sum is its deterministic twin)";
   glCreateVertexArrays(1, &f.empty_vao);

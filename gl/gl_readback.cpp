@@ -1,6 +1,8 @@
 // Every stage's GPU result read back into the reference's types (stage_types.h conventions:
 // images row 0 = top, volumes x fastest, G-buffer channels as documented there).
 #include <algorithm>
+#include <cstdint>
+#include <string>
 
 #include "gl_context.h"
 #include "gl_frame.h"
@@ -53,6 +55,15 @@ void read_back(GlFrame& f) {
   r.voxels.n = n;
   r.voxels.radiance = read_voxels(f, f.radiance, 0, n);
   r.voxels.fragments = read_volume_uint(f.sums[3], n);
+  r.voxels.fragments.channel_names = {"fragments"};
+  double fragments = 0.0;
+  int64_t covered = 0;
+  for (float c : r.voxels.fragments.data) {
+    fragments += double(c);
+    covered += c > 0.0f;
+  }
+  r.info["fragments"] = std::to_string(int64_t(fragments));
+  r.info["covered_voxels"] = std::to_string(covered);
   for (int l = 0, size = n; l < f.levels; ++l, size /= 2) r.mips.iso.push_back(read_voxels(f, f.radiance, l, size));
   if (f.s.anisotropic)
     for (size_t d = 0; d < 6; ++d)
