@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/error.h"
 #include "gl_context.h"
 #include "gl_frame.h"
 #include "stages/shadow_map.h"
@@ -16,6 +17,9 @@ mat4 light_view_proj(const Scene& scene, const SpotLight& light) {
 }
 
 FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings) {
+  if (scene.spot_lights.size() > size_t(kMaxLights))
+    throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " spot lights, the scene has " +
+                                       std::to_string(scene.spot_lights.size()));
   FrameResult result;
   result.backend = "gl";
   result.info["GL_RENDERER"] = context.renderer();
