@@ -145,8 +145,8 @@ void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso)
   check_gl("mips");
 }
 
-double total_radiance(GLuint radiance, int n) {
-  const Volume v = read_volume(radiance, 0, n, 4);
+double total_radiance(const GlFrame& f, GLuint radiance, int n) {
+  const Volume v = f.voxel_format == GL_RGBA8 ? read_volume_unorm8(radiance, 0, n) : read_volume(radiance, 0, n, 4);
   double sum = 0.0;
   for (size_t i = 0; i < v.voxel_count(); ++i)
     for (size_t c = 0; c < 3; ++c) sum += double(v.data[i * 4 + c]);
@@ -193,7 +193,7 @@ void voxel_passes(GlFrame& f) {
     voxelize(f, prog, b, radiance[prev], aniso[prev]);
     resolve(f, radiance[cur]);
     build_mips(f, radiance[cur], aniso[cur]);
-    f.out.multibounce_energy.push_back(total_radiance(radiance[cur], n));
+    f.out.multibounce_energy.push_back(total_radiance(f, radiance[cur], n));
     const size_t k = f.out.multibounce_energy.size();
     if (f.s.convergence_tolerance > 0.0f && k >= 2) {
       const double a = f.out.multibounce_energy[k - 2], e = f.out.multibounce_energy[k - 1];
