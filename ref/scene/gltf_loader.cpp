@@ -32,13 +32,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tinygltf reports several lines; we report one.
+// tinygltf reports several lines and parsers echo raw file bytes; we report one printable line.
 std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   std::string out;
   for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
     if (c == '\n') out += "; ";
-    else if (c != '\r') out += c;
+    else if (u >= 0x20 && u < 0x7f) out += c;
+    else if (c != '\r') out += '?';
   }
   return out;
 }
@@ -71,7 +73,7 @@ nlohmann::json precheck_json(const std::string& text, const std::string& name, s
   } catch (const nlohmann::json::parse_error& e) {
     std::string what = e.what();
     const size_t cut = what.find("] ");
-    throw InputError(name, "broken JSON: " + (cut == std::string::npos ? what : what.substr(cut + 2)));
+    throw InputError(name, "broken JSON: " + one_line(cut == std::string::npos ? what : what.substr(cut + 2)));
   }
   if (!j.is_object() || !j.contains("asset") || !j["asset"].is_object()) {
     throw InputError(name, "not a glTF file (no \"asset\" object)");

@@ -2,6 +2,7 @@
 // at something that exists, every byte range lies inside its buffer, and the node graph is a
 // forest. tinygltf parses but does not check these, and reading unchecked indices would crash.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "scene/gltf_internal.h"
@@ -29,7 +30,7 @@ void check_buffer_views(const Context& ctx) {
     const uint64_t have = m.buffers[static_cast<size_t>(v.buffer)].data.size();
     const uint64_t end = uint64_t(v.byteOffset) + uint64_t(v.byteLength);
     if (v.byteLength == 0) fail(ctx, owner + " has byteLength 0");
-    if (end > have) {
+    if (v.byteOffset > have || v.byteLength > have - v.byteOffset) {  // (no overflow on huge values)
       fail(ctx, owner + " covers bytes " + std::to_string(v.byteOffset) + ".." + std::to_string(end) +
                     " of buffer " + std::to_string(v.buffer) + ", which has only " + std::to_string(have) +
                     " bytes (missing or short buffer)");
@@ -47,7 +48,10 @@ void check_accessors(const Context& ctx) {
     if (comp_size <= 0 || comps <= 0) fail(ctx, owner + " has an invalid componentType or type");
     if (a.sparse.isSparse) fail(ctx, owner + " is sparse; sparse accessors are not supported");
     if (a.count == 0) fail(ctx, owner + " has count 0");
-    if (a.bufferView == -1) continue;  // all zeros, as glTF defines
+    if (a.bufferView == -1) {  // all zeros, as glTF defines; but no allocation bomb
+      if (a.count > (1u << 24)) fail(ctx, owner + " has no bufferView and an implausible count " + std::to_string(a.count));
+      continue;
+    }
     check_ref(ctx, a.bufferView, m.bufferViews.size(), owner, "bufferView", false);
     const auto& view = m.bufferViews[static_cast<size_t>(a.bufferView)];
     const uint64_t elem = uint64_t(comp_size) * uint64_t(comps);
@@ -55,9 +59,13 @@ void check_accessors(const Context& ctx) {
     if (stride <= 0 || (view.byteStride != 0 && view.byteStride < elem)) {
       fail(ctx, owner + " has a byteStride that does not fit its element size");
     }
-    const uint64_t end = uint64_t(a.byteOffset) + uint64_t(stride) * (uint64_t(a.count) - 1) + elem;
-    if (end > view.byteLength) {
-      fail(ctx, owner + " needs " + std::to_string(end) + " bytes of bufferView " + std::to_string(a.bufferView) +
+    // Checked in steps so huge counts or offsets cannot overflow the arithmetic.
+    const uint64_t len = view.byteLength;
+    const bool fits = a.byteOffset <= len && a.count <= len && uint64_t(stride) * (uint64_t(a.count) - 1) <= len &&
+                      uint64_t(a.byteOffset) + uint64_t(stride) * (uint64_t(a.count) - 1) + elem <= len;
+    if (!fits) {
+      const double end = double(a.byteOffset) + double(stride) * (double(a.count) - 1.0) + double(elem);
+      fail(ctx, owner + " needs " + std::to_string(uint64_t(std::min(end, 1.8e19))) + " bytes of bufferView " + std::to_string(a.bufferView) +
                     ", which has " + std::to_string(view.byteLength) + " (accessor out of range)");
     }
   }
