@@ -142,7 +142,7 @@ def final_images(p):
         arr = runio.read_exr(exr) if exr else None
         if arr is not None:
             floats[name] = runio.half_b64(arr)
-    out.append('<h3>Difference view</h3><div class="viewer"><div class="controls">'
+    out.append('<h3 id="diff">Difference view</h3><div class="viewer"><div class="controls">'
                '<label>A <select id="viewer-a"></select></label><label>B <select id="viewer-b"></select></label>'
                '<label>view <select id="viewer-mode"><option value="a">A</option><option value="b">B</option>'
                '<option value="flip">flip A/B (click or auto)</option><option value="diff">|A-B| heat</option>'

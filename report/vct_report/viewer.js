@@ -85,7 +85,11 @@
       const before = canvas.getAttribute("data-drawn");
       mode.value = "diff"; draw();
       const diffOk = canvas.getAttribute("data-drawn") === "|A-B|";
-      mode.value = "a"; draw();
+      // index.html#diff (or #flip, #reldiff, #b) opens the viewer in that mode: links and tests.
+      const wanted = location.hash.replace("#", "");
+      mode.value = ["a", "b", "flip", "diff", "reldiff"].indexOf(wanted) >= 0 ? wanted : "a";
+      if (wanted === "diff" && names.length > 1) selB.value = names[names.length - 1];
+      draw();
       status.viewer = diffOk && before ? "ok" : "error";
     } catch (e) { status.viewer = "error"; status.viewerError = String(e); }
   }
