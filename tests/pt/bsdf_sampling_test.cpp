@@ -15,45 +15,15 @@
 #include "pt/bsdf_sampling.h"
 #include "pt/rng.h"
 #include "shared/vct_shared.h"
+#include "chi2.h"
 
 namespace vct::pt {
 namespace {
 
-// Regularized upper incomplete gamma Q(a, x) (Numerical Recipes' gammq): the chi^2 p-value is
-// Q(dof/2, chi2/2).
-double gamma_q(double a, double x) {
-  if (x <= 0.0) return 1.0;
-  const double gln = std::lgamma(a);
-  if (x < a + 1.0) {
-    double sum = 1.0 / a, del = sum, ap = a;
-    for (int n = 0; n < 10000; ++n) {
-      ap += 1.0;
-      del *= x / ap;
-      sum += del;
-      if (std::abs(del) < std::abs(sum) * 1e-15) break;
-    }
-    return 1.0 - sum * std::exp(-x + a * std::log(x) - gln);
-  }
-  double b = x + 1.0 - a, c = 1.0 / 1e-300, d = 1.0 / b, h = d;
-  for (int i = 1; i < 10000; ++i) {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    if (std::abs(d) < 1e-300) d = 1e-300;
-    c = b + an / c;
-    if (std::abs(c) < 1e-300) c = 1e-300;
-    d = 1.0 / d;
-    const double del = d * c;
-    h *= del;
-    if (std::abs(del - 1.0) < 1e-15) break;
-  }
-  return std::exp(-x + a * std::log(x) - gln) * h;
-}
-
 TEST(Chi2, GammaQMatchesKnownValues) {
   // chi^2 with 10 dof: P(X > 18.307) = 0.05; with 1 dof: P(X > 3.841) = 0.05.
-  EXPECT_NEAR(gamma_q(5.0, 18.307 / 2.0), 0.05, 1e-4);
-  EXPECT_NEAR(gamma_q(0.5, 3.841 / 2.0), 0.05, 1e-4);
+  EXPECT_NEAR(test::gamma_q(5.0, 18.307 / 2.0), 0.05, 1e-4);
+  EXPECT_NEAR(test::gamma_q(0.5, 3.841 / 2.0), 0.05, 1e-4);
 }
 
 BsdfPoint make_point(const vec3& albedo, float metallic, float roughness, float theta_v_deg) {
@@ -125,7 +95,7 @@ TEST_P(BsdfChi2, SamplesFollowPdf) {
     chi2 += (pool_o - pool_e) * (pool_o - pool_e) / std::max(pool_e, 5.0);
     ++dof;
   }
-  const double p = gamma_q(0.5 * dof, 0.5 * chi2);
+  const double p = test::gamma_q(0.5 * dof, 0.5 * chi2);
   std::printf("[chi2 roughness=%.2f theta_v=%.0f metallic=%.1f] chi2=%.1f dof=%d p=%.4f valid=%.4f\n",
               double(c.roughness), double(c.theta_v), double(c.metallic), chi2, dof, p, frac);
   // 12 cases at an overall significance of 1 %: Sidak-corrected per-case level ~ 8.4e-4.
