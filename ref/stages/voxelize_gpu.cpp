@@ -38,7 +38,10 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
     auto& out = per_tri[size_t(ti)];
     for (const RasterTriangle& r : rt) {
       rasterize(r, samples, 0, n - 1, 0, n - 1, [&](const RasterFragment& f) {
-        const double depth = double(f.bary.x) * v[0][axis] + double(f.bary.y) * v[1][axis] + double(f.bary.z) * v[2][axis];
+        // Relative to vertex 0, as GL interpolates: a triangle lying in one plane of constant
+        // depth gets exactly that depth (the absolute b0*d0+b1*d1+b2*d2 form rounds across it).
+        const double depth = v[0][axis] + double(f.bary.y) * (v[1][axis] - v[0][axis]) +
+                             double(f.bary.z) * (v[2][axis] - v[0][axis]);
         ivec3 voxel;
         voxel[pu] = f.x;
         voxel[pv] = f.y;

@@ -46,7 +46,9 @@ TEST(Voxelize, OneTriangleHandCheckedSet) {
   EXPECT_EQ(c.fragments[0].position, vec3(0.5f));
   // Voxel (1,1): centre (1.5,1.5) projects inside the triangle (x + y = 3 is the edge): on it.
   for (const VoxelFragment& f : c.fragments)
-    if (f.voxel == ivec3(1, 1, 0)) EXPECT_EQ(f.position, vec3(1.5f, 1.5f, 0.5f));
+    if (f.voxel == ivec3(1, 1, 0)) {
+      EXPECT_EQ(f.position, vec3(1.5f, 1.5f, 0.5f));
+    }
   EXPECT_EQ(*c.occupancy.voxel(2, 1, 0), 1.0f);
   EXPECT_EQ(*c.occupancy.voxel(2, 2, 0), 0.0f);
   // The GPU rule, 1 sample: every candidate pixel centre lies on an edge. (0.5,1.5) is on the
@@ -89,6 +91,19 @@ TEST(Voxelize, FacesOnVoxelBoundariesBelongToTheUpperVoxel) {
   EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, 1)), gpu);
 }
 
+TEST(Voxelize, ConstantDepthTriangleStaysInOneLayerUnderTheGpuRule) {
+  // A wide floor exactly on the boundary y = 32 of a 64^3 grid, with irregular corners so the
+  // barycentrics are inexact: every fragment must land in layer 32 (GL interpolates the depth
+  // relative to vertex 0; b0*d0 + b1*d1 + b2*d2 in float put some into layer 31).
+  Scene s = unit_grid_scene(64);
+  test::add_quad(s, {0.37f, 32, 0.91f}, {63.3f, 32, 1.7f}, {62.9f, 32, 63.13f}, {0.71f, 32, 62.4f}, {0, 1, 0}, 0);
+  for (int samples : {1, 4, 8}) {
+    const Voxelization v = voxelize_gpu_rule(s, 64, samples);
+    ASSERT_GT(v.fragments.size(), 3000u);
+    for (const VoxelFragment& f : v.fragments) ASSERT_EQ(f.voxel.y, 32) << samples << " samples";
+  }
+}
+
 TEST(Voxelize, MsaaFragmentUsesTheExtrapolatedPixelCentreDepth) {
   Scene s = unit_grid_scene(8);
   // In pixel (1,1) only the 4x sample (1.375, 1.125) lies in x + y <= 2.625; the centre does not.
@@ -129,7 +144,9 @@ TEST(Voxelize, GpuRuleWithOneSampleLiesInsideTheConservativeSet) {
     const Voxelization g = voxelize_gpu_rule(s, 16, samples);
     int outside = 0;
     for (const VoxelFragment& f : g.fragments) outside += *c.occupancy.voxel(f.voxel.x, f.voxel.y, f.voxel.z) == 0.0f;
-    if (samples == 1) EXPECT_EQ(outside, 0);  // the centre sample is a point of the triangle
+    if (samples == 1) {
+      EXPECT_EQ(outside, 0);  // the centre sample is a point of the triangle
+    }
     EXPECT_LE(g.covered, c.covered);
     std::printf("random triangles, %d samples: gpu %lld voxels, conservative %lld, gpu outside %d\n", samples,
                 static_cast<long long>(g.covered), static_cast<long long>(c.covered), outside);
