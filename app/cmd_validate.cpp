@@ -131,7 +131,10 @@ int run(const ValidateOptions& o) {
   const Settings s = resolve(o.common);
   const Scene scene = load_scene(o.scene);
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
-  for (const auto& sw : o.sweeps) parse_sweep(sw);  // bad specs fail before any rendering
+  for (const auto& sw : o.sweeps) {  // bad specs and values fail before any rendering
+    const auto [key, values] = parse_sweep(sw);
+    for (const auto& v : values) apply_sweep_value(s, key, v);
+  }
   RunDir run(out);
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()},

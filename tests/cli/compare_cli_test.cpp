@@ -63,3 +63,19 @@ TEST_F(CompareCli, ExternalManifestAgainstItselfPasses) {
 
 }  // namespace
 }  // namespace vct
+
+namespace vct {
+namespace {
+
+TEST(ValidateCli, BadSweepIsExitTwoBeforeRendering) {
+  const std::string out = (std::filesystem::temp_directory_path() / "vct_bad_sweep").string();
+  EXPECT_EQ(run_vct("validate --no-report --out " + out + " --sweep grid"), 2);
+  EXPECT_FALSE(std::filesystem::exists(out + "/run.json"));
+  EXPECT_EQ(run_vct("validate --no-report --out " + out + " --sweep nosuchkey=1,2"), 2);
+  EXPECT_EQ(run_vct("validate --no-report --out " + out + " --sweep grid=64,7"), 2);  // 7 is not a valid grid
+  EXPECT_FALSE(std::filesystem::exists(out + "/run.json"));
+  std::filesystem::remove_all(out);
+}
+
+}  // namespace
+}  // namespace vct
