@@ -17,6 +17,7 @@ const std::vector<std::pair<std::string, std::string>>& bias_pairs() {
       {"image.diffuse_term", "pt_indirect_diffuse"},
       {"image.specular_term", "pt_indirect_specular"},
       {"image.emission", "pt_emission"},
+      {"image.particles", "pt_particles"},
       {"image.final", "pt_full"}};
   return kPairs;
 }
