@@ -224,6 +224,7 @@ class Flattener {
     }
     m.uv0 = read_uv(ctx_, prim, "TEXCOORD_0", count, owner);
     m.uv1 = read_uv(ctx_, prim, "TEXCOORD_1", count, owner);
+    if (m.uv1.empty() && uses_uv1(prim)) warn(owner + ": its material samples TEXCOORD_1, which it lacks (reads (0, 0))");
     if (det < 0.0f) {
       for (uvec3& t : m.tris) std::swap(t.y, t.z);
     }
@@ -243,6 +244,15 @@ class Flattener {
     if (!have_normals) unweld_with_flat_normals(m);
     if (m.tan.empty()) m.tan = generate_tangents(m.pos, m.nrm, tangent_uv_set(prim, m), m.tris);
     append(m, material_of(prim));
+  }
+
+  bool uses_uv1(const tinygltf::Primitive& prim) const {
+    if (prim.material < 0) return false;
+    const Material& m = scene_.materials[size_t(prim.material)];
+    for (const TextureRef* r : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture, &m.emissive_texture}) {
+      if (r->present() && r->texcoord == 1) return true;
+    }
+    return false;
   }
 
   // Tangents follow the UV set the normal map samples (TEXCOORD_0 unless it says otherwise).
