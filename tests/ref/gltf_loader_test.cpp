@@ -143,7 +143,7 @@ TEST(GltfLoader, MaterialExtensionsAndTextureTransform) {
        {{"baseColorFactor", {0.5, 0.6, 0.7, 1.0}}, {"baseColorTexture", {{"index", 0}, {"extensions", xf}}},
         {"metallicFactor", 0.25}, {"roughnessFactor", 0.75}, {"metallicRoughnessTexture", {{"index", 0}}}}},
       {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
-      {"emissiveTexture", {{"index", 0}}},
+      {"emissiveTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}}},
       {"emissiveFactor", {1.0, 0.5, 0.25}},
       {"doubleSided", true},
       {"extras", {{"vct_normal_two_channel", true}}},
@@ -180,6 +180,13 @@ TEST(GltfLoader, MaterialExtensionsAndTextureTransform) {
   EXPECT_EQ(m.specular_factor, 0.0f);
   EXPECT_EQ(m.specular_color_factor, vec3(0.9f, 0.8f, 0.7f));
   EXPECT_TRUE(m.double_sided);
+  // The transform's texCoord overrides the slot's; the quad has no TEXCOORD_1, which is a warning.
+  EXPECT_EQ(m.emissive_texture.texcoord, 1);
+  EXPECT_EQ(m.base_color_texture.texcoord, 0);
+  ASSERT_EQ(s.stats.warnings.size(), 1u);
+  EXPECT_NE(s.stats.warnings[0].find("TEXCOORD_1"), std::string::npos);
+  d.j["materials"][0]["emissiveTexture"]["extensions"]["KHR_texture_transform"]["texCoord"] = 2;
+  EXPECT_THROW(load(d), InputError);
 }
 
 TEST(GltfLoader, SpotLightTakesPositionAndMinusZFromItsNode) {
