@@ -4,6 +4,12 @@
 
 #include <omp.h>
 
+#ifdef VCT_TSAN_THREADS
+#include <atomic>
+#include <thread>
+#include <vector>
+#endif
+
 namespace vct {
 
 namespace {
@@ -13,6 +19,24 @@ int g_threads = 0;
 // shared counter is touched n/chunk times instead of n times (with dynamic,1 and more workers
 // than cores, small loops spent ~100x their work contending for it).
 int64_t chunk_size(int64_t n, int workers) { return std::max<int64_t>(1, n / (int64_t(workers) * 8)); }
+
+#ifdef VCT_TSAN_THREADS
+// ThreadSanitizer builds: GCC's libgomp is not instrumented, so TSan cannot see its barriers and
+// reports every write-in-loop / read-after-loop pair as a race. The same dynamic chunked schedule
+// on std::thread + an atomic counter is fully visible to TSan, so what it reports is ours.
+void run_on_std_threads(int64_t n, int workers, int64_t chunk, const std::function<void(int64_t)>& body) {
+  std::atomic<int64_t> next{0};
+  auto work = [&] {
+    for (int64_t begin; (begin = next.fetch_add(chunk)) < n;) {
+      for (int64_t i = begin; i < std::min(n, begin + chunk); ++i) body(i);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+#endif
 }  // namespace
 
 void set_thread_count(int threads) {
@@ -32,6 +56,10 @@ void parallel_for(int64_t n, const std::function<void(int64_t)>& body) {
     return;
   }
   const int64_t chunk = chunk_size(n, workers);
+#ifdef VCT_TSAN_THREADS
+  run_on_std_threads(n, workers, chunk, body);
+  return;
+#endif
 #pragma omp parallel for schedule(dynamic, chunk) num_threads(workers)
   for (int64_t i = 0; i < n; ++i) body(i);
 }

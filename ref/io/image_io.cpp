@@ -61,6 +61,9 @@ void write_exr(const std::string& path, const Image& img) {
     OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::FLOAT);
     if (int(img.channel_names.size()) == img.channels) spec.channelnames = img.channel_names;
     spec.attribute("compression", "zip");
+    // OIIO stamps the current time otherwise; fixed so equal images are equal files (the run's
+    // date is in run.json), which the byte-level determinism tests rely on.
+    spec.attribute("DateTime", "");
     write_with_oiio(tmp, spec, img.data.data(), path);
   });
 }

@@ -1,0 +1,68 @@
+// Helpers for the CLI tests that run the real `vct` binary in a subprocess and compare the files
+// it writes byte for byte (determinism_cli_test.cpp, kill_resume_test.cpp).
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace vct::test {
+
+namespace fs = std::filesystem;
+
+/// A fresh directory under the system temp dir, removed with the process's other test dirs.
+inline fs::path fresh_dir(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("vct_cli_" + std::to_string(::getpid())) / name;
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+/// Runs `VCT_BINARY args` with `env` prefixed (e.g. "LP_NUM_THREADS=2"), output discarded.
+inline int run_vct(const std::string& args, const std::string& env = "") {
+  const std::string cmd = env + " '" + VCT_BINARY + "' " + args + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Every regular file below `dir` (relative path -> bytes), leaving out run.json (timings,
+/// thread counts) and anything whose name matches `skip` (a substring) if given.
+inline std::map<std::string, std::string> files_below(const fs::path& dir, const std::string& skip = "") {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (e.path().filename() == "run.json") continue;
+    if (!skip.empty() && rel.find(skip) != std::string::npos) continue;
+    out[rel] = slurp(e.path());
+  }
+  return out;
+}
+
+/// Names of files that differ or exist on one side only ("" if the two sets are identical).
+inline std::string differences(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b) {
+  std::string d;
+  for (const auto& [k, v] : a) {
+    const auto it = b.find(k);
+    if (it == b.end()) d += " missing:" + k;
+    else if (it->second != v) d += " differs:" + k;
+  }
+  for (const auto& [k, v] : b)
+    if (!a.count(k)) d += " extra:" + k;
+  return d;
+}
+
+}  // namespace vct::test
