@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Builds and runs the libFuzzer targets (fuzz/): installs clang-14, libclang-rt-14-dev (libFuzzer)
+# and libomp-14-dev (OpenMP for clang) if missing, builds with ASan+UBSan in build-fuzz, and runs
+# each target for SECONDS (default 600) on a working copy of its committed seed corpus.
+# Crashes are written to fuzz/regressions/<target>/ (replayed by the test suite).
+#   scripts/fuzz.sh [SECONDS] [gltf|stage_set]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECS=${1:-600}
+ONLY=${2:-}
+missing=()
+for p in clang-14 libclang-rt-14-dev libomp-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+if [ ! -f build-fuzz/build.ninja ]; then
+  CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DVCT_FUZZ=ON -DVCT_SANITIZE=ON -DVCT_BUILD_GL=OFF \
+    -DVCT_BUILD_TESTS=OFF -DVCT_BUILD_BENCH=OFF
+fi
+cmake --build build-fuzz -j "$(nproc)" --target gltf_fuzz stage_set_fuzz
+
+# Seeds: fuzz/corpus/ (committed; fuzz/make_seeds.py RUN_DIR/ref regenerates them).
+export ASAN_OPTIONS="detect_leaks=0:allocator_may_return_null=1"  # leaks: process-lifetime caches only
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+for t in gltf stage_set; do
+  [ -z "$ONLY" ] || [ "$ONLY" = "$t" ] || continue
+  work=build-fuzz/corpus_$t
+  mkdir -p "$work" "fuzz/regressions/$t"
+  cp -n fuzz/corpus/$t/* "$work/" 2>/dev/null || true
+  echo "fuzz: $t for $SECS s"
+  build-fuzz/bin/${t}_fuzz "$work" -max_total_time="$SECS" -max_len=200000 -rss_limit_mb=4096 -timeout=20 \
+    -artifact_prefix="fuzz/regressions/$t/" -print_final_stats=1 2>&1 | tail -25
+done
