@@ -126,7 +126,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   j["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()}};
   j["settings"] = s;
   j["repeat"] = o.repeat;
-  j["memory_estimate"] = format_bytes(estimate_memory(s).total());
+  j["memory"]["predicted"] = format_bytes(estimate_memory(s).total());
   j["ref"] = ref_times(scene, s, o.repeat);
   std::string note, renderer;
   j["gl"] = o.gl ? gl_times(scene, s, o.repeat, note, renderer) : nlohmann::json(nullptr);
@@ -135,6 +135,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   if (!renderer.empty()) j["machine"]["gl_renderer"] = renderer;
   j["groups"] = groups(j["ref"], j["gl"]);
   if (o.pt) j["path_tracer"] = path_tracer(scene, s, o);
+  j["memory"]["peak_rss"] = format_bytes(peak_rss_bytes());
   return j;
 }
 
@@ -198,6 +199,8 @@ std::string format_bench(const nlohmann::json& j) {
   out += "\n" + stage_table("CPU reference stages (wall clock, median):", j["ref"]);
   if (gl) out += stage_table("GL stages (GPU timer queries, median):", j["gl"]);
   if (j.contains("path_tracer")) out += format_path_tracer(j["path_tracer"]);
+  out += line("\nmemory: predicted %s (CPU reference), peak RSS %s\n", j["memory"]["predicted"].get<std::string>().c_str(),
+              j["memory"]["peak_rss"].get<std::string>().c_str());
   return out;
 }
 

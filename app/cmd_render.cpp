@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/run_dir.h"
@@ -179,6 +180,13 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     if (frame.backend != "ref") throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");
     write_explain(run, scene, frame, settings.vct, *explain);
   }
+  // Predicted up front (validate_settings refuses what cannot fit) beside what the run used.
+  const MemoryEstimate predicted = estimate_memory(settings);
+  run.json()["memory"] = {{"predicted_bytes", predicted.total()},
+                          {"predicted_voxel_bytes", predicted.voxels},
+                          {"predicted", format_bytes(predicted.total())},
+                          {"peak_rss_bytes", peak_rss_bytes()},
+                          {"peak_rss", format_bytes(peak_rss_bytes())}};
   run.save();
   std::printf("vct render: %s frame of %s in %.0f ms -> %s\n", frame.backend.c_str(), scene.source.c_str(),
               frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0, run.path().c_str());

@@ -1,5 +1,6 @@
 #include "core/memory_budget.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -33,6 +34,12 @@ MemoryEstimate estimate_memory(const Settings& s) {
 uint64_t physical_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) : 0;
+}
+
+uint64_t peak_rss_bytes() {
+  rusage u{};
+  if (getrusage(RUSAGE_SELF, &u) != 0) return 0;
+  return uint64_t(u.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
 std::string format_bytes(uint64_t bytes) {

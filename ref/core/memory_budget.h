@@ -27,6 +27,9 @@ uint64_t physical_memory_bytes();
 /// (default: physical memory). Does nothing if `available` is 0 (unknown).
 void check_memory_budget(const Settings& s, uint64_t available = physical_memory_bytes());
 
+/// Peak resident set size of this process so far in bytes (getrusage); 0 if unknown.
+uint64_t peak_rss_bytes();
+
 /// "1.5 GiB", "300 MiB", ...
 std::string format_bytes(uint64_t bytes);
 
