@@ -194,7 +194,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   v.note = buf;
   v.extra = {{"edge_fraction", fe}, {"interior_fraction", fi}, {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", allow_e}, {"allowed_interior_fraction", allow_i}};
-  if (allow_i > m.interior_fraction) v.note += "; allowance widened by upstream voxel ties";
+  if (allow_i > m.interior_fraction && v.out_of_bound) v.note += "; allowance widened by upstream voxel ties";
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_image_mask(opt, v, ref, state);

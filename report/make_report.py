@@ -157,24 +157,20 @@ def final_images(p):
 
 # ---------------------------------------------------------------- bias
 def flip_for(run, comp, vct_exr, pt_exr, out_dir):
-    try:
-        import flip_evaluator
-    except ImportError:
+    """Mean HDR-FLIP and its map, computed in a child process (see vct_report/flip_one.py)."""
+    if not vct_exr or not pt_exr:
         return None, None
-    a, b = runio.read_exr(pt_exr), runio.read_exr(vct_exr)
-    if a is None or b is None or a.shape != b.shape:
-        return None, None
-    a = np.clip(np.nan_to_num(a[:, :, :3]), 0, None)
-    b = np.clip(np.nan_to_num(b[:, :, :3]), 0, None)
-    if a.max() <= 0 and b.max() <= 0:
-        return 0.0, None
-    try:
-        emap, mean, _ = flip_evaluator.evaluate(a, b, "HDR")
-    except Exception:  # noqa: BLE001
-        return None, None
+    import subprocess
     path = os.path.join(out_dir, "flip_%s.png" % comp)
-    runio.write_png(path, np.asarray(emap, dtype=np.float32))
-    return float(mean), path
+    try:
+        r = subprocess.run([sys.executable, os.path.join(HERE, "vct_report", "flip_one.py"), pt_exr, vct_exr, path],
+                           capture_output=True, text=True, timeout=180)
+        mean = float(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 and r.stdout.strip() else None
+    except (subprocess.TimeoutExpired, ValueError, IndexError):
+        mean = None
+    if mean is None:
+        return None, None
+    return mean, path if os.path.exists(path) else None
 
 
 def bias_section(p):
