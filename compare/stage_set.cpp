@@ -137,7 +137,8 @@ void write_stage_set(const std::string& dir, StageSet& set) {
   write_text_atomically(rd.file("vct-stages.json"), m.dump(2) + "\n");
 }
 
-StageSet read_stage_set(const std::string& path) {
+namespace {
+StageSet read_stage_set_unguarded(const std::string& path) {
   fs::path manifest = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
   if (!fs::exists(manifest)) throw InputError(path, "no vct-stages.json manifest here (docs/external_format.md)");
   nlohmann::json m;
@@ -147,7 +148,7 @@ StageSet read_stage_set(const std::string& path) {
   } catch (const std::exception& e) {
     throw InputError(manifest.string(), std::string("not valid JSON: ") + e.what());
   }
-  if (m.value("format", "") != "vct-stages")
+  if (!m.is_object() || m.value("format", "") != "vct-stages")
     throw InputError(manifest.string(), "\"format\" must be \"vct-stages\"");
   if (!m.contains("stages") || !m["stages"].is_object())
     throw InputError(manifest.string(), "\"stages\" must be an object of stage name -> {file, kind}");
@@ -180,6 +181,19 @@ StageSet read_stage_set(const std::string& path) {
     set.files[name] = rel;
   }
   return set;
+}
+}  // namespace
+
+StageSet read_stage_set(const std::string& path) {
+  // A manifest field of the wrong JSON type (e.g. "kind": 3) or an unusable file name (too long,
+  // ...) is bad input like any other: one InputError, never another exception (found by fuzz/).
+  try {
+    return read_stage_set_unguarded(path);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path, std::string("bad vct-stages.json: ") + e.what());
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(path, std::string("bad file in vct-stages.json: ") + e.what());
+  }
 }
 
 std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {

@@ -35,5 +35,6 @@ for t in gltf stage_set; do
   cp -n fuzz/corpus/$t/* "$work/" 2>/dev/null || true
   echo "fuzz: $t for $SECS s"
   build-fuzz/bin/${t}_fuzz "$work" -max_total_time="$SECS" -max_len=200000 -rss_limit_mb=4096 -timeout=20 \
-    -artifact_prefix="fuzz/regressions/$t/" -print_final_stats=1 2>&1 | tail -25
+    -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 -artifact_prefix="fuzz/regressions/$t/" \
+    -print_final_stats=1 2>&1 | tee "build-fuzz/fuzz_$t.log" | grep -E "^#[0-9]+: cov|DONE|crash-|oom-|timeout-|stat::" | tail -30
 done

@@ -70,7 +70,7 @@ nlohmann::json precheck_json(const std::string& text, const std::string& name, s
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for numbers like 1E999
     std::string what = e.what();
     const size_t cut = what.find("] ");
     throw InputError(name, "broken JSON: " + one_line(cut == std::string::npos ? what : what.substr(cut + 2)));
