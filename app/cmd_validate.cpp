@@ -97,7 +97,9 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
     std::printf("  sweep %s=%s ...\n", key.c_str(), value.c_str());
     std::fflush(stdout);
     nlohmann::json row = {{"key", key}, {"value", value}};
-    const BackendRun ref = run_ref_backend(scene, s);
+    // GL first: the reference then emulates the coverage rule the driver actually ran.
+    const BackendRun gl = gl_available ? run_gl_backend(scene, s) : BackendRun{};
+    const BackendRun ref = run_ref_backend(scene, settings_as_run_by_gl(s, gl));
     row["ref_status"] = ref.status;
     row["ref_ms"] = ref.ms;
     if (ref.ok()) row["ref_timings_ms"] = ref.frame->timings_ms;
@@ -109,7 +111,6 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
       row["bias"] = bias_json(bias);
     }
     if (gl_available) {
-      const BackendRun gl = run_gl_backend(scene, s);
       row["gl_status"] = gl.status;
       row["gl_ms"] = gl.ms;
       if (gl.ok()) {
@@ -145,14 +146,21 @@ int run(const ValidateOptions& o) {
               s.vct.height, s.vct.grid, s.pt.spp, thread_count(), out.c_str());
   std::fflush(stdout);
 
-  const BackendRun ref = run_ref_backend(scene, s);
-  record_frame(run, ref, "ref");
-  std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
-  std::fflush(stdout);
+  // GL first: the reference then emulates the coverage rule the driver actually ran.
   const BackendRun gl = run_gl_backend(scene, s);
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
               gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
+  std::fflush(stdout);
+  const Settings ref_settings = settings_as_run_by_gl(s, gl);
+  if (ref_settings.vct.msaa_samples != s.vct.msaa_samples) {
+    std::printf("  note: GL ran %d MSAA samples (asked %d); the reference emulates %d\n",
+                ref_settings.vct.msaa_samples, s.vct.msaa_samples, ref_settings.vct.msaa_samples);
+    run.json()["settings_effective"] = ref_settings;
+  }
+  const BackendRun ref = run_ref_backend(scene, ref_settings);
+  record_frame(run, ref, "ref");
+  std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
   std::fflush(stdout);
   const PtRun pt = run_pt_backend(scene, s);
   run.json()["backends"]["pt"] = {{"status", pt.status}, {"ms", pt.ms}, {"spp", pt.spp}};

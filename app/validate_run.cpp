@@ -76,6 +76,14 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
   return r;
 }
 
+Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
+  Settings out = s;
+  if (!gl.ok()) return out;
+  const auto it = gl.frame->info.find("msaa_samples");
+  if (it != gl.frame->info.end()) out.vct.msaa_samples = std::stoi(it->second);
+  return out;
+}
+
 PtRun run_pt_backend(const Scene& scene, const Settings& s) {
   PtRun r;
 #ifdef VCT_HAVE_PT

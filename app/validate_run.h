@@ -34,6 +34,10 @@ struct PtRun {
 
 BackendRun run_ref_backend(const Scene& scene, const Settings& s);
 BackendRun run_gl_backend(const Scene& scene, const Settings& s);
+/// The settings the GL run actually used: a driver may clamp the MSAA sample count (llvmpipe
+/// allows 4), and the CPU reference must then emulate the same coverage rule, or every voxel
+/// stage differs for a reason that is not a GPU bug. Unchanged when GL did not run.
+Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl);
 PtRun run_pt_backend(const Scene& scene, const Settings& s);
 
 /// Settings validate starts from (before --config and flags): small enough that the default

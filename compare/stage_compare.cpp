@@ -284,6 +284,7 @@ bool face_neighbour_in(const Volume& v, const std::vector<uint8_t>& set, size_t 
 }
 
 constexpr double kTieFraction = 0.01;  // ties beyond 1% of occupied voxels are not ties
+constexpr double kShadingTieFraction = 0.005;  // shadow-test ties beyond 0.5% of voxels are not ties
 
 StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
   const Volume& ref = rs.volumes.at("voxel.radiance");
@@ -417,7 +418,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const Volume* frags = rs.volumes.count("voxel.fragments") ? &rs.volumes.at("voxel.fragments") : nullptr;
   const Volume* tfrags = ts.volumes.count("voxel.fragments") ? &ts.volumes.at("voxel.fragments") : nullptr;
   if (tfrags && (!frags || !same_size(*tfrags, ref))) tfrags = nullptr;
-  size_t count_ties = 0;
+  size_t count_ties = 0, shading_ties = 0;
   const auto ro = occupancy(ref), to = occupancy(test);
   taint.assign(ro.size(), 0);
   Volume mask(ref.nx, ref.ny, ref.nz, 1);
@@ -439,6 +440,8 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
         bound = m.abs;
       } else if (m.name == "rgba16f-ulp") {
         bound = 2.0 * half_ulp(r) + n * m.per_fragment_rel * std::abs(r);
+      } else if (m.name == "fixed-point-exact+shading" && ts.storage == "rgba16f") {
+        bound += 2.0 * half_ulp(r);
       }
       se += (t - r) * (t - r);
       v.max_abs = std::max(v.max_abs, std::abs(t - r));
@@ -457,10 +460,17 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
       ++v.allowed;
       continue;
     }
+    ++shading_ties, taint[i] = 1;
     int x, y, z;
     xyz_of(ref, i, x, y, z);
     offenders.push_back(voxel_offender(ref, test, x, y, z, we, wb));
   }
+  // Shadow-test ties: a fragment whose light-space depth ties the shadow map flips a PCF tap on
+  // one side only, moving that fragment by 1/taps of its light. They are rare and sit on shadow
+  // edges; up to kShadingTieFraction of the voxels they warn, beyond that they fail.
+  const bool shading_ties_tolerated =
+      double(shading_ties) <= kShadingTieFraction * double(std::max<size_t>(v.checked, 1));
+  if (shading_ties_tolerated) v.allowed += shading_ties;
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const bool too_many = double(count_ties) > 2.0 * kTieFraction * double(std::max<size_t>(v.checked, 1));
   v.verdict = v.out_of_bound > v.allowed || too_many ? Verdict::Fail : v.allowed ? Verdict::Warn : Verdict::Pass;
@@ -468,6 +478,10 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   if (tfrags) v.note += "; " + std::to_string(count_ties) + " with a different fragment count (coverage ties" +
                         std::string(too_many ? ": more than 2%, not ties)" : ", tolerated)");
   v.extra["fragment_count_ties"] = count_ties;
+  v.extra["shading_ties"] = shading_ties;
+  if (shading_ties)
+    v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound (shadow-test ties" +
+              (shading_ties_tolerated ? ", tolerated up to 0.5%)" : ": more than 0.5%, not ties)");
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_volume_mask(opt, v, mask);

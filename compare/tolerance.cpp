@@ -69,8 +69,15 @@ VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
          "|d| <= 2^-14 + storage rounding (2 half-ulp or 1/255): fixed-point quanta against the exact mean"};
     if (storage == "rgba8") m.abs += 1.0 / 255.0;
   } else if (reduction == "fixed_point") {
-    m = {"fixed-point-exact", 0.0, 0.0, 0.0, false,
-         "exact: integer sums are order-independent and both sides convert with the same rounding"};
+    // The reduction itself is exact (integer sums, same rounding on both sides: bit-identical
+    // when fragment values agree, see tests/gl). The fragment values are each backend's own
+    // float shading at its own interpolated position, so they carry a shading error; stored as
+    // binary16 that shows as one half-ulp flip, plus 2^-10 relative for the shading itself.
+    // A shading difference also moves a fragment's rounding to the fixed-point grid by one
+    // quantum (2^-14), which is all that shows on near-black voxels.
+    m = {"fixed-point-exact+shading", std::ldexp(1.0, -14), std::ldexp(1.0, -10), 0.0, false,
+         "exact reduction; |d| <= 2^-14 + 2^-10 |ref| (+ 2 half-ulp for RGBA16F, 1/255 for RGBA8) for the float shading of each fragment"};
+    if (storage == "rgba8") m.abs += 1.0 / 255.0;
   } else if (reduction == "cas_rgba8") {
     m = {"cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, true,
          "within the reference's [cas_lo, cas_hi] (any fragment order) +- 1/255"};

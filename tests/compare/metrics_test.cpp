@@ -44,11 +44,13 @@ TEST(Tolerance, HalfUlpMatchesBinary16) {
 
 TEST(Tolerance, MipBoundGrowsOneRoundingPerLevel) {
   const VoxelModel fp = voxel_model("rgba8", "fixed_point");
-  EXPECT_EQ(fp.name, "fixed-point-exact");
+  EXPECT_EQ(fp.name, "fixed-point-exact+shading");
+  const double base = std::ldexp(1.0, -14) + 1.0 / 255.0;
+  EXPECT_NEAR(fp.abs, base, 1e-12);
   const MipBound b2 = mip_bound(fp, "rgba8", 2, false);
-  EXPECT_NEAR(b2.abs, 2.0 / 255.0, 1e-12);
+  EXPECT_NEAR(b2.abs, base + 2.0 / 255.0, 1e-12);  // one 8-bit rounding per level
   const MipBound a2 = mip_bound(fp, "rgba8", 2, true);
-  EXPECT_NEAR(a2.abs, 3.0 / 255.0, 1e-12);  // (2*(1/255) + 1/255)
+  EXPECT_NEAR(a2.abs, 4.0 * base + 3.0 / 255.0, 1e-12);  // 2*(2*base + 1/255) + 1/255
 }
 
 }  // namespace
