@@ -1,6 +1,7 @@
 // Determinism end to end (issue 9 item 5): `vct render --dump` (final frame and every stage dump)
 // and `vct pathtrace` (every AOV and the checkpoint) write the same bytes with --threads 1, 2, 8.
 // 8 threads oversubscribe the 2-core CI machine, which shuffles the order work is done in.
+// The GL build (fixed-point voxels) writes the same bytes under llvmpipe with LP_NUM_THREADS=1, 2, 4.
 #include <gtest/gtest.h>
 
 #include "cli_run_util.h"
@@ -43,6 +44,26 @@ TEST(DeterminismCli, PathtraceSameBytesFor1_2_8Threads) {
       ASSERT_GT(first.size(), 3u);
     } else {
       EXPECT_EQ(differences(first, files), "") << t << " threads";
+    }
+  }
+}
+
+TEST(GlDeterminismCli, GlDumpsSameBytesForLlvmpipeThreads1_2_4) {
+  std::map<std::string, std::string> first;
+  for (const char* t : {"1", "2", "4"}) {
+    const auto dir = test::fresh_dir(std::string("gl_lp") + t);
+    const int rc = test::run_vct("render --backend gl --width 48 --height 40 --grid 16 --shadow-map-size 128 --dump "
+                                 "--voxelizer gpu --reduction fixed --out '" + dir.string() + "'",
+                                 std::string("LP_NUM_THREADS=") + t);
+    if (rc == 3) GTEST_SKIP() << "no GL context";
+    ASSERT_EQ(rc, 0);
+    const auto files = files_below(dir);
+    if (first.empty()) {
+      first = files;
+      ASSERT_TRUE(first.count("voxels_radiance_L0.nrrd"));
+      ASSERT_GT(first.size(), 20u);
+    } else {
+      EXPECT_EQ(differences(first, files), "") << "LP_NUM_THREADS=" << t;
     }
   }
 }
