@@ -73,10 +73,12 @@ VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
     // when fragment values agree, see tests/gl). The fragment values are each backend's own
     // float shading at its own interpolated position, so they carry a shading error; stored as
     // binary16 that shows as one half-ulp flip, plus 2^-10 relative for the shading itself.
-    // A shading difference also moves a fragment's rounding to the fixed-point grid by one
-    // quantum (2^-14), which is all that shows on near-black voxels.
-    m = {"fixed-point-exact+shading", std::ldexp(1.0, -14), std::ldexp(1.0, -10), 0.0, false,
-         "exact reduction; |d| <= 2^-14 + 2^-10 |ref| (+ 2 half-ulp for RGBA16F, 1/255 for RGBA8) for the float shading of each fragment"};
+    // Textured albedo and emission carry the G-buffer's texture bound (8-bit sub-texel weights,
+    // 2^-7 relative: the "texture-8bit-weights" model). A shading difference also moves a
+    // fragment's rounding to the fixed-point grid by one quantum (2^-14), which is all that shows
+    // on near-black voxels.
+    m = {"fixed-point-exact+shading", std::ldexp(1.0, -14), std::ldexp(1.0, -7), 0.0, false,
+         "exact reduction; |d| <= 2^-14 + 2^-7 |ref| (+ 2 half-ulp for RGBA16F, 1/255 for RGBA8): each fragment's float shading and 8-bit texture filtering weights"};
     if (storage == "rgba8") m.abs += 1.0 / 255.0;
   } else if (reduction == "cas_rgba8") {
     m = {"cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, true,

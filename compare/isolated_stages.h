@@ -1,0 +1,28 @@
+// Judging each cone-traced stage on the test backend's own inputs.
+//
+// End to end, a legitimate tie upstream (a fragment on a voxel boundary landing one voxel over,
+// as the GL spec allows) can open or close a one-voxel gap, and every cone through it then sees
+// different light: the cone images differ although both marchers are right. A conformance suite
+// judges each stage on identical inputs, so the oracle re-runs the reference's cone tracing and
+// composite on the test's G-buffer, direct image and mips, and judges the test's cone images
+// against that. The end-to-end difference stays in the report as context.
+#pragma once
+
+#include "compare/verdict.h"
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/stage_types.h"
+
+namespace vct::cmp {
+
+/// The reference's cone-traced images computed from `test`'s G-buffer, direct light, particles
+/// and mips; the other stages are copied from `test`. Soft shadows (cone-traced direct light)
+/// are re-traced too when enabled.
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s);
+
+/// For every cone-traced stage, replaces the end-to-end verdict by the isolated one (stage judged
+/// on the test's own inputs) and keeps the end-to-end verdict in the note and in
+/// extra["end_to_end"], so a cone stage fails only when the test's marcher is wrong.
+void apply_isolated_verdicts(Report& end_to_end, const Report& isolated);
+
+}  // namespace vct::cmp
