@@ -45,7 +45,8 @@ void run(const BenchFlags& f) {
 }  // namespace
 
 void register_bench(CLI::App& app, int& exit_code) {
-  auto* f = new BenchFlags;  // lives as long as the process (CLI11 binds by reference)
+  static BenchFlags storage;  // lives as long as the process (CLI11 binds by reference)
+  auto* f = &storage;
   CLI::App* cmd = app.add_subcommand("bench", "Stage times CPU ref vs GL (ratios), path tracer vs raw Embree");
   cmd->add_option("--scene,scene", f->scene, "glTF 2.0 file (default: built-in scene)");
   add_common_flags(cmd, f->common);

@@ -68,8 +68,10 @@ int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
 }  // namespace
 
 void register_pathtrace(CLI::App& app, int& exit_code) {
-  auto* common = new CommonOptions;  // live as long as the process (CLI11 binds by reference)
-  auto* flags = new PtFlags;
+  static CommonOptions common_storage;  // live as long as the process (CLI11 binds by reference);
+  static PtFlags flags_storage;         // static, not new, so LeakSanitizer sees no leak
+  auto* common = &common_storage;
+  auto* flags = &flags_storage;
   CLI::App* cmd = app.add_subcommand(
       "pathtrace", "Path-traced ground truth with AOVs (resumes from a checkpoint in --out; no SCENE = built-in)");
   cmd->add_option("scene", flags->scene, "glTF 2.0 file (.gltf or .glb); empty = built-in default scene");

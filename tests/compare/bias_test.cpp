@@ -58,7 +58,8 @@ TEST(Bias, NoiseAloneIsNotBias) {
 
 TEST(Bias, FivePercentBiasIsCaught) {
   const Synthetic s = make(0.05f, 7);
-  const BiasComponent& b = full(measure_bias(s.vct, s.pt));
+  const std::vector<BiasComponent> components = measure_bias(s.vct, s.pt);  // outlives b
+  const BiasComponent& b = full(components);
   EXPECT_TRUE(b.significant) << b.note;
   EXPECT_NEAR(b.metrics.relative_bias, 0.05, 0.005);
 }
@@ -66,7 +67,8 @@ TEST(Bias, FivePercentBiasIsCaught) {
 TEST(Bias, MissingAovIsReportedNotThrown) {
   Synthetic s = make(0.0f, 1);
   s.pt.erase("pt_full");
-  const BiasComponent& b = full(measure_bias(s.vct, s.pt));
+  const std::vector<BiasComponent> components = measure_bias(s.vct, s.pt);  // outlives b
+  const BiasComponent& b = full(components);
   EXPECT_FALSE(b.available);
   EXPECT_NE(b.note.find("pt_full"), std::string::npos);
 }
