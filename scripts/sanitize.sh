@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The sanitizer part of CI (.ci/run calls it after scripts/test.sh):
-#  1. ASan + UBSan build (-DVCT_SANITIZE=ON) in build-asan, the whole ctest suite there;
+#  1. ASan + UBSan build (-DVCT_SANITIZE=ON) in build-asan, the whole ctest suite there (LSan on);
 #  2. TSan build (-DVCT_TSAN=ON, parallel_for on std::thread so TSan sees every sync) in
 #     build-tsan, the CPU reference and path tracer test binaries (ref_tests, pt_tests).
 # Prints the wall time of each part. Assumes scripts/setup.sh has installed the packages.
@@ -29,13 +29,9 @@ timed() {  # label, command...
 asan() {
   configure build-asan -DVCT_SANITIZE=ON
   timed "ASan+UBSan build" cmake --build build-asan -j "$JOBS"
-  # Our code leak-checked; the GL tests run with detect_leaks=0 because Mesa's llvmpipe keeps
-  # driver allocations (LLVM JIT, screen caches) past process exit, which LSan reports as leaks
-  # in libgallium that are not ours. ASan's other checks stay on for them.
-  timed "ASan+UBSan tests (non-GL)" env ASAN_OPTIONS="detect_leaks=1:abort_on_error=0" \
-    ctest --test-dir build-asan --output-on-failure -j "$JOBS" -E '^(Gl|gl_)|report_browser'
-  timed "ASan+UBSan tests (GL, detect_leaks=0)" env ASAN_OPTIONS="detect_leaks=0" \
-    ctest --test-dir build-asan --output-on-failure -j "$JOBS" -R '^(Gl|gl_)'
+  # Everything, LeakSanitizer on (GL tests included: Mesa llvmpipe passes it too).
+  timed "ASan+UBSan tests" env ASAN_OPTIONS="detect_leaks=1" \
+    ctest --test-dir build-asan --output-on-failure -j "$JOBS"
 }
 
 tsan() {
