@@ -54,6 +54,7 @@ void register_bench(CLI::App& app, int& exit_code) {
   add_grid_flag(cmd, f->common);
   cmd->add_option("--repeat", f->bench.repeat, "Frames per backend (median reported)")->check(CLI::Range(1, 100));
   cmd->add_option("--pt-spp", f->bench.pt_spp, "Path tracer passes to time")->check(CLI::Range(1, 4096));
+  cmd->add_option("--raw-rays", f->bench.raw_rays, "Random rays for the raw Embree rate")->check(CLI::Range(1000, 100000000));
   cmd->add_flag("--no-gl", f->no_gl, "Measure the CPU reference only");
   cmd->add_flag("--no-pt", f->no_pt, "Skip the path tracer and raw Embree measurement");
   cmd->callback([f, &exit_code]() {

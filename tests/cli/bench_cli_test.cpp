@@ -1,0 +1,44 @@
+// `vct bench` end to end at a tiny size: bench.json holds every CPU stage time, the stage groups
+// (ratio = CPU / GL when GL ran, or a note when it did not) and the path tracer beside raw Embree.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run_util.h"
+
+namespace vct {
+namespace {
+
+TEST(BenchCli, WritesBenchJsonWithRatios) {
+  const auto dir = test::fresh_dir("bench");
+  ASSERT_EQ(test::run_vct("bench --grid 16 --width 32 --height 24 --repeat 1 --pt-spp 1 --raw-rays 100000 --threads 2 --out '" +
+                          dir.string() + "'"),
+            0);
+  const nlohmann::json j = nlohmann::json::parse(test::slurp(dir / "bench.json"));
+  EXPECT_EQ(j["settings"]["vct"]["grid"], 16);
+  const double total = j["ref"]["total"].get<double>();
+  EXPECT_GT(total, 0.0);
+  EXPECT_GT(j["ref"]["indirect_cones"].get<double>(), 0.0);
+  EXPECT_LE(j["ref"]["indirect_cones"].get<double>(), total);
+  ASSERT_EQ(j["groups"].size(), 7u);
+  const auto& last = j["groups"][6];
+  EXPECT_EQ(last["name"], "total");
+  EXPECT_DOUBLE_EQ(last["ref_ms"].get<double>(), total);
+  if (j["gl"].is_null()) {
+    EXPECT_TRUE(j.contains("gl_note"));
+  } else {
+    EXPECT_NEAR(last["ref_over_gl"].get<double>(), total / j["gl"]["total"].get<double>(), 1e-9);
+  }
+  const auto& pt = j["path_tracer"];
+  EXPECT_EQ(pt["raw_rays"], 100000);
+  EXPECT_GT(pt["raw_intersect_rays_per_second"].get<double>(), 0.0);
+  EXPECT_EQ(pt["primary_only"]["primary"], 32 * 24);  // one camera ray per pixel and pass
+  EXPECT_EQ(pt["primary_only"]["secondary"], 0);      // max_depth 0: no continuation rays
+  const double f = pt["full_paths"]["fraction_of_raw_intersect"].get<double>();
+  EXPECT_GT(f, 0.0);
+  EXPECT_NEAR(f, pt["full_paths"]["rays_per_second"].get<double>() / pt["raw_intersect_rays_per_second"].get<double>(),
+              1e-9);
+}
+
+}  // namespace
+}  // namespace vct
