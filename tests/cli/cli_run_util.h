@@ -16,9 +16,22 @@ namespace vct::test {
 
 namespace fs = std::filesystem;
 
-/// A fresh directory under the system temp dir, removed with the process's other test dirs.
+/// This process's scratch root under the system temp dir, removed when the process exits.
+inline const fs::path& scratch_root() {
+  struct Root {
+    fs::path path = fs::temp_directory_path() / ("vct_cli_" + std::to_string(::getpid()));
+    ~Root() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const Root root;
+  return root.path;
+}
+
+/// A fresh (emptied) directory under scratch_root().
 inline fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("vct_cli_" + std::to_string(::getpid())) / name;
+  const fs::path p = scratch_root() / name;
   fs::remove_all(p);
   fs::create_directories(p);
   return p;
