@@ -7,6 +7,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
 BUILD_TYPE=${BUILD_TYPE:-Release}
+# ccache keys on relative paths under the checkout, so clones in other folders (CI) hit it too.
+export CCACHE_BASEDIR="$PWD"
 
 APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git python3 python3-venv
