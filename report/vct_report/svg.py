@@ -25,11 +25,16 @@ def line_plot(title, xs, series, xlabel="", ylabel="", logy=False, w=420, h=240)
     out.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="#888"/>' % (L, T, L, h - B))
     for i, x in enumerate(xs):
         out.append('<text x="%.1f" y="%d" text-anchor="middle">%s</text>' % (X(i), h - B + 14, html.escape(str(x))))
+    # Enough significant digits that neighbouring ticks differ (a narrow range around a large
+    # value, e.g. a converged energy curve, would otherwise print five equal labels).
+    span = (10 ** hi - 10 ** lo) if logy else (hi - lo)
+    top = max(abs(10 ** lo if logy else lo), abs(10 ** hi if logy else hi), 1e-300)
+    digits = max(3, min(10, int(math.ceil(math.log10(top / max(span / 4, 1e-300)))) + 1))
     for t in range(5):
         fv = lo + (hi - lo) * t / 4
         v = 10 ** fv if logy else fv
         y = T + (h - T - B) * (1 - t / 4)
-        out.append('<text x="%d" y="%.1f" text-anchor="end">%.3g</text>' % (L - 4, y + 4, v))
+        out.append('<text x="%d" y="%.1f" text-anchor="end">%.*g</text>' % (L - 4, y + 4, digits, v))
         out.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (L, y, w - R, y))
     for k, (name, ys) in enumerate(series):
         c = COLORS[k % len(COLORS)]
