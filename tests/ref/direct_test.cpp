@@ -112,7 +112,9 @@ TEST(Direct, ShadeDirectThroughGBufferAndShadowMaps) {
         }
       }
     EXPECT_GT(lit, 500);
-    if (occluder) EXPECT_GT(shadowed, 0);
+    if (occluder) {
+      EXPECT_GT(shadowed, 0);
+    }
   }
 }
 
