@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gl_context.h"
 #include "gl_frame.h"
+#include "gl_program.h"
 #include "stages/shadow_map.h"
 
 namespace vct::gl {
@@ -20,8 +21,10 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
   if (scene.spot_lights.size() > size_t(kMaxLights))
     throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " spot lights, the scene has " +
                                        std::to_string(scene.spot_lights.size()));
+  const ScopedShaderFault fault(settings.vct.gl_fault);  // "" = the correct shaders
   FrameResult result;
   result.backend = "gl";
+  if (!settings.vct.gl_fault.empty()) result.info["gl_fault"] = settings.vct.gl_fault;
   result.info["GL_RENDERER"] = context.renderer();
   result.info["GL_VERSION"] = context.version();
   GlFrame f(scene, settings.vct, result);

@@ -1,6 +1,7 @@
 #include "gl_program.h"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 #include <stdexcept>
 
@@ -76,13 +77,22 @@ std::string program_log(GLuint program) {
   return log.c_str();
 }
 
+// One GL context per thread renders one frame at a time, so the switch is per thread.
+thread_local std::string g_fault_define;
+
 }  // namespace
+
+void set_shader_fault(const std::string& name) {
+  std::string upper = name;
+  for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+  g_fault_define = name.empty() ? "" : "#define VCT_FAULT_" + upper + " 1\n";
+}
 
 std::string assemble_shader(const std::string& file) {
   std::vector<std::string> seen{file};
   // "#line 1 1" makes the driver's line numbers count from the top of the shader file itself
   // (source string 1), after the shared header (source string 0).
-  return "#version 450\n#define VCT_GLSL 1\n#line 1 0\n" + embedded("vct_shared.h") + "\n#line 1 1\n" +
+  return "#version 450\n#define VCT_GLSL 1\n" + g_fault_define + "#line 1 0\n" + embedded("vct_shared.h") + "\n#line 1 1\n" +
          expand_includes(file, embedded(file), seen, 0);
 }
 

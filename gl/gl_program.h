@@ -22,6 +22,17 @@ struct ShaderSource {
   std::string source;
 };
 
+/// Debug fault switch (VctSettings::gl_fault): while set to a non-empty name, every assembled
+/// shader starts with `#define VCT_FAULT_<NAME> 1` (upper case), which turns on that shader's
+/// deliberate bug. render_gl_frame sets it for the frame (ScopedShaderFault) and clears it after.
+void set_shader_fault(const std::string& name);
+struct ScopedShaderFault {
+  explicit ScopedShaderFault(const std::string& name) { set_shader_fault(name); }
+  ~ScopedShaderFault() { set_shader_fault(""); }
+  ScopedShaderFault(const ScopedShaderFault&) = delete;
+  ScopedShaderFault& operator=(const ScopedShaderFault&) = delete;
+};
+
 /// The complete source of an embedded shader file (prelude + shared header + includes).
 std::string assemble_shader(const std::string& file);
 

@@ -49,6 +49,9 @@ vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float max_distance, float
   vec3 color = vec3(0.0f);
   float alpha = 0.0f;
   float t = u_cone_start;
+#ifdef VCT_FAULT_CONE_STEP
+  t += max(voxel, 2.0f * t * tan_half) * u_cone_quality;  // fault: the march starts one step late
+#endif
   while (alpha < 1.0f && t < max_distance) {
     vec3 pos = origin + dir * t;
     if (!inside_unit_cube(pos)) break;

@@ -28,11 +28,17 @@ void main() {
       vec4 far_v = texelFetch(u_src, u_positive != 0 ? lo + along : lo, u_src_level);
       vec4 comp;
       comp.rgb = near_v.rgb + (1.0f - near_v.a) * far_v.rgb;
+#ifdef VCT_FAULT_ALPHA_UNCLAMPED
+      comp.a = near_v.a + far_v.a;  // fault: opacities added, not composited, and never clamped
+#else
       comp.a = near_v.a + (1.0f - near_v.a) * far_v.a;
+#endif
       sum += comp;
     }
   }
   vec4 r = sum * 0.25f;
+#ifndef VCT_FAULT_ALPHA_UNCLAMPED
   r.a = min(r.a, 1.0f);
+#endif
   imageStore(u_dst, c, storage_value(r, u_storage_format));
 }

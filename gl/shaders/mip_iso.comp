@@ -13,7 +13,12 @@ void main() {
   vec4 sum = vec4(0.0f);
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
+#ifdef VCT_FAULT_WRONG_MIP
+      // fault: reads level l-2 (the grandchildren's level) at the children's coordinates
+      for (int i = 0; i < 2; ++i) sum += texelFetch(u_src, 2 * c + ivec3(i, j, k), max(u_src_level - 1, 0));
+#else
       for (int i = 0; i < 2; ++i) sum += texelFetch(u_src, 2 * c + ivec3(i, j, k), u_src_level);
+#endif
   vec4 r = sum * 0.125f;
   imageStore(u_dst, c, storage_value(r, u_storage_format));
 }

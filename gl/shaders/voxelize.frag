@@ -30,6 +30,9 @@ ivec3 voxel_coords() {
   // barycentrics' rounding: b0*d0 + b1*d1 + b2*d2 splits such a wall between two layers.
   double depth = v_axis_depth.x + double(v_bary.y) * (v_axis_depth.y - v_axis_depth.x) +
                  double(v_bary.z) * (v_axis_depth.z - v_axis_depth.x);
+#ifdef VCT_FAULT_HALF_TEXEL
+  depth += 0.5lf;  // fault: voxel coordinate offset by half a voxel
+#endif
   int d = int(clamp(floor(depth), 0.0lf, double(n - 1)));
   if (v_axis == 2) return ivec3(px.x, px.y, d);
   if (v_axis == 0) return ivec3(d, px.x, px.y);
@@ -46,6 +49,20 @@ vec4 unpack_rgba8(uint v) {
 
 void cas_average(ivec3 c, vec3 value) {
   vec4 add = vec4(value * 255.0f, 1.0f);
+#ifdef VCT_FAULT_LOST_UPDATE
+  imageStore(u_sum_r, c, uvec4(pack_rgba8(add)));  // fault: the race's outcome, every update lost
+  return;
+#endif
+#ifdef VCT_FAULT_RACY_AVERAGE
+  {  // fault: plain load / average / store; concurrent fragments overwrite each other
+    vec4 r = unpack_rgba8(imageLoad(u_sum_r, c).x);
+    r.rgb *= r.a;
+    vec4 sum = r + add;
+    sum.rgb /= sum.a;
+    imageStore(u_sum_r, c, uvec4(pack_rgba8(sum)));
+    return;
+  }
+#endif
   uint next = pack_rgba8(add);
   uint prev = 0u;
   uint cur;
@@ -69,8 +86,20 @@ void main() {
     cas_average(c, clamp(value, vec3(0.0f), vec3(1.0f)));
   } else {
     uvec3 q = voxel_fixed_encode(value);
+#if defined(VCT_FAULT_LOST_UPDATE)
+    // fault: the race's outcome made deterministic: last writer wins, earlier fragments lost
+    imageStore(u_sum_r, c, uvec4(q.r));
+    imageStore(u_sum_g, c, uvec4(q.g));
+    imageStore(u_sum_b, c, uvec4(q.b));
+#elif defined(VCT_FAULT_RACY_AVERAGE)
+    // fault: non-atomic read-modify-write of the sums
+    imageStore(u_sum_r, c, imageLoad(u_sum_r, c) + uvec4(q.r));
+    imageStore(u_sum_g, c, imageLoad(u_sum_g, c) + uvec4(q.g));
+    imageStore(u_sum_b, c, imageLoad(u_sum_b, c) + uvec4(q.b));
+#else
     imageAtomicAdd(u_sum_r, c, q.r);
     imageAtomicAdd(u_sum_g, c, q.g);
     imageAtomicAdd(u_sum_b, c, q.b);
+#endif
   }
 }

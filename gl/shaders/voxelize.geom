@@ -33,7 +33,11 @@ void main() {
   // On world positions, as ref/stages/voxelize.cpp's dominant_axis (the [-1,1] mapping is a
   // uniform scale, so only rounding at exact ties could differ from the seed's clip-space test).
   vec3 p = abs(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
+#ifdef VCT_FAULT_WRONG_AXIS
+  int axis = (p.z > p.x && p.z > p.y) ? 2 : (p.y > p.x ? 0 : 1);  // fault: x/y test swapped
+#else
   int axis = (p.z > p.x && p.z > p.y) ? 2 : (p.x > p.y ? 0 : 1);
+#endif
   vec3 gn = normalize(cross(vg_position[1] - vg_position[0], vg_position[2] - vg_position[0]));
   dvec3 depth;
   for (int i = 0; i < 3; ++i) {

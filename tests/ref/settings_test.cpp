@@ -37,6 +37,22 @@ TEST(Settings, BadEnumNamesTheAllowedValues) {
   }
 }
 
+TEST(Settings, GlFaultRoundTripsAndUnknownNamesAreRefused) {
+  Settings s;
+  s.vct.gl_fault = "wrong_mip";
+  const Settings back = nlohmann::json(s).get<Settings>();
+  EXPECT_EQ(back.vct.gl_fault, "wrong_mip");
+  nlohmann::json j = {{"vct", {{"gl_fault", "wrong_mips"}}}};
+  try {
+    (void)j.get<Settings>();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wrong_mips"), std::string::npos) << e.what();
+  }
+  s.vct.gl_fault = "nope";
+  EXPECT_THROW(validate_settings(s), InputError);
+}
+
 TEST(Settings, ValidationRejectsNonPowerOfTwoGrid) {
   Settings s;
   s.vct.grid = 100;

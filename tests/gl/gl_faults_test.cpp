@@ -1,0 +1,128 @@
+// Real faults in the GL build (VctSettings::gl_fault compiles a deliberate bug into the shaders,
+// docs/compare.md "Faults"): for each, the stage comparison against the CPU reference must fail
+// the stage where the bug lives first, as `vct validate` judges it (cone stages judged on the GL
+// frame's own inputs). A correct run must fail no stage. Cornell box, 32^3, 64^2, 4x MSAA.
+#include <cstdio>
+#include <map>
+
+#include "compare/isolated_stages.h"
+#include "compare/stage_compare.h"
+#include "compare/stage_set.h"
+#include "gl_test_util.h"
+#include "stages/pipeline.h"
+
+namespace vct::gl::test {
+namespace {
+
+Settings fault_settings(const std::string& fault, Reduction reduction, bool anisotropic) {
+  Settings s = small_settings();
+  s.vct.reduction = reduction;
+  s.vct.anisotropic = anisotropic;
+  s.vct.gl_fault = fault;
+  return s;
+}
+
+// The CPU reference for one settings combination (it ignores gl_fault), cached: several faults
+// share one.
+const FrameResult& reference(const Settings& s) {
+  static std::map<std::string, FrameResult> cache;
+  const std::string key = to_string(s.vct.reduction) + (s.vct.anisotropic ? "/aniso" : "/iso");
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(key, render_ref_frame(cornell_box(), s)).first;
+  return it->second;
+}
+
+std::string failing_stages(const cmp::Report& rep) {
+  std::string out;
+  for (const auto& st : rep.stages)
+    if (st.verdict == cmp::Verdict::Fail) out += st.stage + " ";
+  return out;
+}
+
+// The report `vct validate` would print for the GL frame with the fault switched on.
+cmp::Report judge(GlContext& ctx, const Settings& s) {
+  const FrameResult gl = render_gl_frame(ctx, cornell_box(), s);
+  const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
+  cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(reference(s), s.vct), gl_set);
+  const FrameResult ref_on_gl = cmp::reference_on_test_inputs(cornell_box(), gl, s.vct);
+  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set));
+  std::printf("  gl_fault '%s' (%s%s): failing stages: %s\n", s.vct.gl_fault.c_str(), to_string(s.vct.reduction).c_str(),
+              s.vct.anisotropic ? ", anisotropic" : "", failing_stages(rep).c_str());
+  return rep;
+}
+
+
+#define EXPECT_FIRST_FAILING(rep, expected)                                              \
+  EXPECT_EQ((rep).first_failing(), expected) << "failing stages: " << failing_stages(rep)
+
+TEST(GlFaults, NoFaultFailsNoStage) {
+  VCT_REQUIRE_GL();
+  for (Reduction r : {Reduction::FixedPoint, Reduction::CasRgba8}) {
+    const cmp::Report rep = judge(*ctx, fault_settings("", r, r == Reduction::FixedPoint));
+    EXPECT_FIRST_FAILING(rep, "") << to_string(r);
+  }
+}
+
+TEST(GlFaults, HalfTexelFailsOccupancy) {
+  VCT_REQUIRE_GL();
+  EXPECT_FIRST_FAILING(judge(*ctx, fault_settings("half_texel", Reduction::FixedPoint, false)), "voxel.occupancy");
+}
+
+TEST(GlFaults, WrongAxisFailsOccupancy) {
+  VCT_REQUIRE_GL();
+  EXPECT_FIRST_FAILING(judge(*ctx, fault_settings("wrong_axis", Reduction::FixedPoint, false)), "voxel.occupancy");
+}
+
+// A genuine race (non-atomic read-modify-write) only shows where fragments of one voxel run
+// concurrently. llvmpipe rasterizes a 32x32 voxelization viewport as one tile on one thread, so
+// there it is serialized and bit-identical to the atomic version: the test says so and skips.
+TEST(GlFaults, RacyAverageFailsRadianceWhereFragmentsRace) {
+  VCT_REQUIRE_GL();
+  int observed = 0;
+  for (Reduction r : {Reduction::FixedPoint, Reduction::CasRgba8}) {
+    const Settings s = fault_settings("racy_average", r, false);
+    const FrameResult racy = render_gl_frame(*ctx, cornell_box(), s);
+    const FrameResult atomic = render_gl_frame(*ctx, cornell_box(), fault_settings("", r, false));
+    if (max_abs_diff(racy.voxels.radiance, atomic.voxels.radiance) == 0.0f) continue;  // no race ran
+    ++observed;
+    EXPECT_FIRST_FAILING(judge(*ctx, s), "voxel.radiance") << to_string(r);
+  }
+  if (observed == 0)
+    GTEST_SKIP() << "racy_average is not observable on " << ctx->renderer()
+                 << ": its fragments ran serialized (voxels identical to the atomic version, fixed and cas);"
+                    " lost_update covers the outcome";
+}
+
+// The race's outcome made deterministic (every concurrent update lost: last writer wins).
+TEST(GlFaults, LostUpdateFailsRadiance) {
+  VCT_REQUIRE_GL();
+  for (Reduction r : {Reduction::FixedPoint, Reduction::CasRgba8}) {
+    const cmp::Report rep = judge(*ctx, fault_settings("lost_update", r, false));
+    EXPECT_FIRST_FAILING(rep, "voxel.radiance") << to_string(r);
+  }
+}
+
+TEST(GlFaults, WrongMipFailsAMipStage) {
+  VCT_REQUIRE_GL();
+  const cmp::Report rep = judge(*ctx, fault_settings("wrong_mip", Reduction::FixedPoint, false));
+  EXPECT_EQ(rep.first_failing().rfind("mip.iso.", 0), 0u) << "first failing: " << rep.first_failing()
+                                                          << "; failing stages: " << failing_stages(rep);
+}
+
+TEST(GlFaults, AlphaUnclampedFailsAnAnisotropicMipStage) {
+  VCT_REQUIRE_GL();
+  const cmp::Report rep = judge(*ctx, fault_settings("alpha_unclamped", Reduction::FixedPoint, true));
+  const std::string first = rep.first_failing();
+  EXPECT_TRUE(first.rfind("mip.", 0) == 0 && first.rfind("mip.iso.", 0) != 0)
+      << "first failing: " << first << "; failing stages: " << failing_stages(rep);
+}
+
+TEST(GlFaults, ConeStepFailsAnIndirectImage) {
+  VCT_REQUIRE_GL();
+  const cmp::Report rep = judge(*ctx, fault_settings("cone_step", Reduction::FixedPoint, false));
+  EXPECT_EQ(rep.first_failing().rfind("image.indirect_", 0), 0u)
+      << "first failing: " << rep.first_failing() << "; failing stages: " << failing_stages(rep);
+}
+
+}  // namespace
+}  // namespace vct::gl::test
