@@ -37,17 +37,10 @@ struct ValidateOptions {
 };
 
 Settings resolve(const CommonOptions& o) {
-  Settings s = validate_defaults();
-  if (!o.config.empty()) s = load_settings_file(o.config, s);
-  if (o.width) s.vct.width = s.pt.width = *o.width;
-  if (o.height) s.vct.height = s.pt.height = *o.height;
-  if (o.grid) s.vct.grid = *o.grid;
-  if (o.spp) s.pt.spp = *o.spp;
-  if (o.threads) s.threads = o.threads;
+  Settings s = resolve_settings(o, validate_defaults());
   s.pt.width = s.vct.width;  // bias needs the same pixels on both sides
   s.pt.height = s.vct.height;
   validate_settings(s);
-  set_thread_count(s.threads);
   return s;
 }
 

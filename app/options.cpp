@@ -25,8 +25,8 @@ void add_spp_flag(CLI::App* cmd, CommonOptions& o) {
   cmd->add_option("--spp", o.spp, "Path tracer samples per pixel")->check(CLI::Range(1, 1 << 24));
 }
 
-Settings resolve_settings(const CommonOptions& o) {
-  Settings s;
+Settings resolve_settings(const CommonOptions& o, const Settings& base) {
+  Settings s = base;
   if (!o.config.empty()) s = load_settings_file(o.config, s);
   if (o.width) s.vct.width = s.pt.width = *o.width;
   if (o.height) s.vct.height = s.pt.height = *o.height;

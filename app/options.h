@@ -26,8 +26,8 @@ void add_grid_flag(CLI::App* cmd, CommonOptions& o);
 /// --spp N.
 void add_spp_flag(CLI::App* cmd, CommonOptions& o);
 
-/// Defaults <- --config file <- flags; validated (InputError on a bad value); threads applied.
-Settings resolve_settings(const CommonOptions& o);
+/// `base` <- --config file <- flags; validated (InputError on a bad value); threads applied.
+Settings resolve_settings(const CommonOptions& o, const Settings& base = Settings());
 
 /// Default run directory when --out is not given: runs/<command>-<scene stem>.
 std::string default_out_dir(const std::string& command, const std::string& scene_path);
