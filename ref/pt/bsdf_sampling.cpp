@@ -53,7 +53,7 @@ float ggx_vndf_reflection_pdf(const vec3& v, const vec3& l, float roughness) {
   if (v.z <= 0.0f || l.z <= 0.0f) return 0.0f;
   const vec3 h = glm::normalize(v + l);
   const float alpha = roughness * roughness;
-  return smith_g1_ggx(v, alpha) * sh::ggx_distribution(h.z, roughness) / (4.0f * v.z);
+  return smith_g1_ggx(v, alpha) * sh::ggx_distribution(vec3(0.0f, 0.0f, 1.0f), h, roughness) / (4.0f * v.z);
 }
 
 BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& ng, const vec3& v) {
@@ -81,13 +81,9 @@ BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& 
 BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l) {
   BsdfValue out;
   if (glm::dot(p.ng, l) <= 0.0f) return out;  // reflection only: never through the surface
-  const vec3 total = sh::cook_torrance(p.pbr, p.n, p.v, l);
-  if (total == vec3(0.0f)) return out;
-  // The diffuse lobe exactly as cook_torrance forms it: kd(h.v) * albedo / pi.
-  const vec3 h = glm::normalize(p.v + l);
-  const vec3 f = sh::fresnel_schlick(p.pbr.f0, p.pbr.f90, std::max(glm::dot(h, p.v), 0.0f));
-  out.diffuse = sh::diffuse_weight(p.pbr, f) * p.pbr.albedo * sh::SH_INV_PI;
-  out.specular = glm::max(total - out.diffuse, vec3(0.0f));
+  const sh::BrdfLobes lobes = sh::cook_torrance_lobes(p.pbr, p.n, p.v, l);
+  out.diffuse = lobes.diffuse;
+  out.specular = lobes.specular;
   return out;
 }
 

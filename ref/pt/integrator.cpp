@@ -99,10 +99,14 @@ Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const Emissive
       particle_layer_(particle_layer && !particle_layer->empty() ? particle_layer : nullptr),
       settings_(s),
       light_model_(s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF),
-      eps_(1e-4f * scene_scale(scene)) {}
+      eps_(1e-4f * scene_scale(scene)) {
+  for (const SpotLight& light : scene.spot_lights)
+    spot_cos_.push_back(vec2(std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle)));
+}
 
 void Integrator::nee_spots(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const {
-  for (const SpotLight& light : scene_.spot_lights) {
+  for (size_t i = 0; i < scene_.spot_lights.size(); ++i) {
+    const SpotLight& light = scene_.spot_lights[i];
     const vec3 to_light = light.position - v.pos;
     const float dist = glm::length(to_light);
     if (!(dist > 0.0f)) continue;
@@ -110,8 +114,7 @@ void Integrator::nee_spots(const Vertex& v, const Throughput& tp, PathSample& ou
     const BsdfValue f = eval_bsdf(v.bp, l);
     if (f.total() == vec3(0.0f)) continue;
     const vec3 e = sh::spot_irradiance(light_model_, light.color, light.intensity, dist, glm::dot(light.direction, -l),
-                                       std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle),
-                                       light.range);
+                                       spot_cos_[i].x, spot_cos_[i].y, light.range);
     if (e == vec3(0.0f)) continue;
     ++counts.shadow;
     if (rt_.occluded(v.p, light.position - v.p, 0.0f, 1.0f)) continue;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/math.h"
 #include "core/settings.h"
@@ -69,6 +70,7 @@ class Integrator {
   PtSettings settings_;
   int light_model_;
   float eps_;  // ray offset, scaled to the scene's size
+  std::vector<vec2> spot_cos_;  // per spot light: cos(inner), cos(outer), computed once
 };
 
 }  // namespace vct::pt

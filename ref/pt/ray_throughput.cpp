@@ -73,11 +73,18 @@ RawRayRates measure_raw_embree(const Scene& scene, size_t n) {
 
 TracerRate measure_path_tracer(const Scene& scene, const PtSettings& ps, int spp) {
   const PathTracer tracer(scene, ps);
-  Accumulator acc(ps.width, ps.height);
   TracerRate r;
-  const auto t0 = std::chrono::steady_clock::now();
-  r.counts = tracer.render(acc, uint32_t(spp));
-  r.seconds = seconds_since(t0);
+  // Best of 3, as for the raw rates above, so both sides of the ratio see the same treatment.
+  for (int run = 0; run < 3; ++run) {
+    Accumulator acc(ps.width, ps.height);
+    const auto t0 = std::chrono::steady_clock::now();
+    const RayCounts counts = tracer.render(acc, uint32_t(spp));
+    const double seconds = seconds_since(t0);
+    if (run == 0 || seconds < r.seconds) {
+      r.counts = counts;
+      r.seconds = seconds;
+    }
+  }
   r.rays_per_second = r.seconds > 0.0 ? double(r.counts.total()) / r.seconds : 0.0;
   return r;
 }

@@ -27,7 +27,8 @@ struct TracerRate {
   RayCounts counts;
 };
 
-/// Renders `spp` passes of `ps` from scratch and times them (the BVH build is not timed).
+/// Renders `spp` passes of `ps` from scratch, 3 times, and keeps the fastest (the BVH build is
+/// not timed).
 TracerRate measure_path_tracer(const Scene& scene, const PtSettings& ps, int spp);
 
 }  // namespace vct::pt

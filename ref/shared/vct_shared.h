@@ -32,10 +32,19 @@ VCT_CONST int MAX_DIFFUSE_CONES = 5;
 // Cook–Torrance as the seed defines it: GGX/Trowbridge-Reitz D with alpha = roughness^2,
 // Schlick Fresnel, Schlick-GGX G with k = (roughness+1)^2/8 (the Disney/UE4 remapping).
 
-VCT_FN float ggx_distribution(float n_dot_h, float roughness) {
+// D is written with sin^2(theta_h) = |n x h|^2 instead of 1 - (n.h)^2: near the peak of a smooth
+// lobe (alpha^2 ~ 1e-6 at MIN_ROUGHNESS) 1 - (n.h)^2 cancels in float and D came out ~8 % too
+// high; the cross product keeps full relative precision. Same function, better conditioned:
+// (n.h)^2 (a^2 - 1) + 1 == (n.h)^2 a^2 + sin^2 for unit n, h. h below the surface counts as
+// n.h = 0 (sin^2 = 1), as the old max(n.h, 0) did.
+VCT_FN float ggx_distribution(vec3 n, vec3 h, float roughness) {
   float a = roughness * roughness;
   float a2 = a * a;
-  float d = n_dot_h * n_dot_h * (a2 - 1.0f) + 1.0f;
+  float c = dot(n, h);
+  vec3 x = cross(n, h);
+  float sin2 = c > 0.0f ? dot(x, x) : 1.0f;
+  float cos2 = c > 0.0f ? c * c : 0.0f;
+  float d = cos2 * a2 + sin2;
   return a2 / max(SH_PI * d * d, 1e-12f);
 }
 
@@ -79,17 +88,34 @@ VCT_FN SurfacePbr surface_pbr(vec3 albedo, float metallic, float roughness, floa
 // The diffuse weight kd = (1 - F)(1 - metallic): metals have no diffuse lobe.
 VCT_FN vec3 diffuse_weight(SurfacePbr s, vec3 fresnel) { return (vec3(1.0f) - fresnel) * (1.0f - s.metallic); }
 
-// BRDF value f(l, v) (without the n.l cosine). n, v, l unit; v and l point away from the surface.
-VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
+// The BRDF's two lobes, kept apart for the path tracer's AOV split (VCT's indirect diffuse and
+// specular); cook_torrance is their sum.
+struct BrdfLobes {
+  vec3 diffuse;   // kd * albedo / pi
+  vec3 specular;  // F D G / (4 n.l n.v)
+};
+
+// BRDF lobes f(l, v) (without the n.l cosine). n, v, l unit; v and l point away from the surface.
+VCT_FN BrdfLobes cook_torrance_lobes(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
+  BrdfLobes b;
+  b.diffuse = vec3(0.0f);
+  b.specular = vec3(0.0f);
   float n_dot_l = dot(n, l);
   float n_dot_v = dot(n, v);
-  if (n_dot_l <= 0.0f || n_dot_v <= 0.0f) return vec3(0.0f);
+  if (n_dot_l <= 0.0f || n_dot_v <= 0.0f) return b;
   vec3 h = normalize(v + l);
   vec3 f = fresnel_schlick(s.f0, s.f90, max(dot(h, v), 0.0f));
-  float d = ggx_distribution(max(dot(n, h), 0.0f), s.roughness);
+  float d = ggx_distribution(n, h, s.roughness);
   float g = schlick_ggx_g1(n_dot_l, s.roughness) * schlick_ggx_g1(n_dot_v, s.roughness);
-  vec3 specular = f * (d * g / (4.0f * n_dot_l * n_dot_v));
-  return diffuse_weight(s, f) * s.albedo * SH_INV_PI + specular;
+  b.specular = f * (d * g / (4.0f * n_dot_l * n_dot_v));
+  b.diffuse = diffuse_weight(s, f) * s.albedo * SH_INV_PI;
+  return b;
+}
+
+// BRDF value f(l, v) (without the n.l cosine).
+VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
+  BrdfLobes b = cook_torrance_lobes(s, n, v, l);
+  return b.diffuse + b.specular;
 }
 
 // ---------------------------------------------------------------------------------------------
