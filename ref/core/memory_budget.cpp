@@ -9,23 +9,80 @@
 
 namespace vct {
 
+namespace {
+
+constexpr uint64_t kMiB = 1024 * 1024;
+
+// `vct render` of a 16^3 grid, 16^2 image and 64^2 shadow map peaks at 135 MiB on the project
+// machine: nearly all of it the shared libraries (OpenImageIO and its codecs, OpenCV, Embree).
+constexpr uint64_t kProcessBaseline = 136 * kMiB;
+
+// Fragments per N^2 the voxelizer emits: a room is mostly its walls, N^2 voxels each. The built-in
+// Cornell box gives 7.1 N^2 at 64^3 and 5.8 (GPU rule) / 6.5 (conservative) N^2 at 256^3.
+constexpr uint64_t kFragmentsPerSlice = 8;
+
+// Per fragment: the sorted VoxelFragment list (48 B), the per-triangle lists it was gathered from
+// (48 B: freed, but as small blocks in the worker threads' heaps, which are not returned to the
+// system), the injected radiance (vec3, 12 B) and the reduction's voxel start index (8 B).
+constexpr uint64_t kBytesPerFragment = 48 + 48 + 12 + 8;
+
+// One frame's VoxelMips: iso[0] is a copy of the base level (RGBA float, 16 B/voxel) and every
+// pyramid's levels 1..log2 N hold (N^3 - 1) / 7 voxels; anisotropic adds six directional pyramids.
+uint64_t mip_bytes(uint64_t n3, bool anisotropic) {
+  const uint64_t coarser = (n3 - 1) / 7;
+  return 16 * n3 + 16 * coarser * (anisotropic ? 7 : 1);
+}
+
+// Peak of inject_with_multibounce (stages/multibounce.cpp) with what pipeline.cpp holds around it.
+// Voxelization before it needs less: 16 B/voxel of occupancy volumes and two fragment lists.
+uint64_t voxel_bytes(const VctSettings& v) {
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  // 1-channel float volumes alive all frame: Voxelization::occupancy, the FrameResult's copy of
+  // the conservative occupancy and, with the GPU rule, the hole map.
+  const uint64_t occupancy = n3 * (4 + 4 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0));
+  // VoxelGrid: RGBA float radiance + fragment count; the CAS model adds its lo/hi RGBA bounds.
+  const uint64_t grid = n3 * (16 + 4 + (v.reduction == Reduction::CasRgba8 ? 32 : 0));
+  const uint64_t mips = mip_bytes(n3, v.anisotropic);
+  uint64_t bytes = occupancy + grid + mips + kFragmentsPerSlice * n * n * kBytesPerFragment;
+  if (v.bounces > 1) {
+    // A bounce frame traces the previous mips while it reduces a new grid (the old grid is
+    // replaced only when the new one is done) and then builds new mips (the previous ones still
+    // alive): the larger of grid and mips is there twice.
+    bytes += mips > grid ? mips : grid;
+    if (keeps_multibounce_frames(v)) bytes += 16 * n3 * uint64_t(v.bounces - 1);  // RGBA float each
+  }
+  return bytes;
+}
+
+// Alive from the G-buffer on; the scene's lights are not known, so one shadow map is counted.
+uint64_t image_bytes(const VctSettings& v) {
+  const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
+  const uint64_t shadow = uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;  // float depth
+  // G-buffer 21 floats (84 B); FrameImages: 8 RGB float images (96 B), the 5 RGBA diffuse cone
+  // images (80 B) and their source in IndirectImages while they are copied (80 B; the composite
+  // images do not exist yet then, so this is 60 B/pixel high); the soft-shadow visibility.
+  const uint64_t per_pixel = 84 + 96 + 80 + 80 + (v.soft_shadows ? 4 : 0);
+  return shadow + pixels * per_pixel;
+}
+
+}  // namespace
+
+bool keeps_multibounce_frames(const VctSettings& v) {
+  const uint64_t n = uint64_t(v.grid), frame_bytes = n * n * n * 16;
+  return v.bounces > 1 && frame_bytes * uint64_t(v.bounces - 1) <= 256 * kMiB;
+}
+
 MemoryEstimate estimate_memory(const Settings& s) {
   const VctSettings& v = s.vct;
-  const uint64_t n3 = uint64_t(v.grid) * uint64_t(v.grid) * uint64_t(v.grid);
   MemoryEstimate e;
-  // Base level: RGBA float + fragment count (20 B) and one RGBA accumulation buffer of doubles
-  // or fixed-point sums (32 B); the CAS model keeps two more RGBA float bounds (32 B).
-  uint64_t per_voxel = 20 + 32 + (v.reduction == Reduction::CasRgba8 ? 32 : 0);
-  // Isotropic mips: RGBA float, levels 1.. sum to N^3/7. Anisotropic: six directional
-  // pyramids starting at level 1, each N^3/7.
-  uint64_t mips = 16 * n3 / 7 + (v.anisotropic ? 6 * 16 * n3 / 7 : 0);
-  // Multibounce traces frame n-1's mips while building frame n's.
-  if (v.bounces > 1) mips *= 2;
-  e.voxels = per_voxel * n3 + mips;
-  // G-buffer 21 floats + frame components 25 floats per pixel; one float shadow map per light
-  // (counted once: the estimate does not know the scene).
-  const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
-  e.images = pixels * 46 * 4 + uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;
+  e.baseline = kProcessBaseline;
+  e.voxels = voxel_bytes(v);
+  e.images = image_bytes(v);
+  // VisibilityBuffer: depth, triangle id, barycentrics, facing (21 B/pixel), for each shadow map
+  // and then for the G-buffer; freed when each is done.
+  const uint64_t shadow_pixels = uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
+  const uint64_t camera_pixels = uint64_t(v.width) * uint64_t(v.height);
+  e.raster_scratch = 21 * (shadow_pixels > camera_pixels ? shadow_pixels : camera_pixels);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel.
   e.path_tracer = uint64_t(s.pt.width) * uint64_t(s.pt.height) * 16 * 8;
   return e;

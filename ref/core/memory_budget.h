@@ -9,16 +9,28 @@
 
 namespace vct {
 
-/// Estimated peak bytes of the CPU pipelines for `s` (what the ref backend allocates; the GL
-/// backend needs less host memory). Lower bounds: scene data and temporaries are not counted.
+/// Estimated peak resident bytes of the CPU pipelines for `s` (what the ref backend allocates; the
+/// GL backend needs less host memory), derived from the buffers each stage keeps alive
+/// (memory_budget.cpp lists them). The scene is not known up front: its fragments are assumed to
+/// be those of a room (docs/performance.md, "Scale: memory predicted and measured").
 struct MemoryEstimate {
-  uint64_t voxels = 0;       // base grid + reduction buffers + mip pyramids (x2 with multibounce)
-  uint64_t images = 0;       // G-buffer, frame component images, shadow maps
-  uint64_t path_tracer = 0;  // path tracer accumulation and AOV images
-  uint64_t total() const { return voxels + images + path_tracer; }
+  uint64_t baseline = 0;  // the process before any stage: libraries and a small scene (measured)
+  uint64_t voxels = 0;    // peak of injection + mips: grids, mip pyramids (two with multibounce),
+                          // kept multibounce frames, occupancy volumes, fragment lists
+  uint64_t images = 0;    // shadow maps, G-buffer, frame component images
+  uint64_t raster_scratch = 0;  // visibility buffer of the shadow-map / G-buffer rasterizer
+  uint64_t path_tracer = 0;     // path tracer accumulation and AOV images
+  /// The rasterizer's scratch is freed before voxelization starts, so only the larger counts.
+  uint64_t total() const {
+    return baseline + images + (voxels > raster_scratch ? voxels : raster_scratch) + path_tracer;
+  }
 };
 
 MemoryEstimate estimate_memory(const Settings& s);
+
+/// Whether the ref pipeline keeps the base level of every multibounce frame before the last (for
+/// the dumps): only while they total at most 256 MiB. Shared so the estimate counts what is kept.
+bool keeps_multibounce_frames(const VctSettings& v);
 
 /// Physical memory of this machine in bytes (sysconf); 0 if unknown.
 uint64_t physical_memory_bytes();

@@ -3,6 +3,7 @@
 #include <functional>
 #include <string>
 
+#include "core/memory_budget.h"
 #include "io/run_dir.h"
 #include "stages/composite.h"
 #include "stages/direct.h"
@@ -45,9 +46,9 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
   timed(r, "gbuffer", [&] { r.gbuffer = render_gbuffer(scene, s); });
   const Voxelization vox = run_voxelizers(scene, s, r);
   {
-    // Earlier frames are kept for the dumps while they stay under ~256 MB.
-    const double frame_bytes = double(s.grid) * s.grid * s.grid * 4.0 * sizeof(float);
-    const bool keep = s.bounces > 1 && frame_bytes * (s.bounces - 1) <= 256.0 * 1024 * 1024;
+    // Earlier frames are kept for the dumps while they stay under 256 MiB (the memory estimate
+    // counts them by the same rule).
+    const bool keep = keeps_multibounce_frames(s);
     MultibounceResult mb = inject_with_multibounce(scene, vox, r.shadow_maps, s, keep);
     r.multibounce_frames = std::move(mb.earlier_frames);
     for (const auto& [stage, ms] : mb.timings_ms) r.timings_ms[stage] += ms;

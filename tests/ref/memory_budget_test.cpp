@@ -7,23 +7,80 @@
 namespace vct {
 namespace {
 
+// One bounce, isotropic, conservative voxelizer, exact mean: every term by hand.
 TEST(MemoryBudget, EstimateMatchesHandCount) {
   Settings s;
   s.vct.grid = 64;
   s.vct.anisotropic = false;
   s.vct.bounces = 1;
+  s.vct.voxelizer = Voxelizer::Conservative;
   s.vct.reduction = Reduction::ExactMean;
   s.vct.width = s.vct.height = 100;
   s.vct.shadow_map_size = 50;
   s.pt.width = s.pt.height = 10;
   const MemoryEstimate e = estimate_memory(s);
   const uint64_t n3 = 64ull * 64 * 64;
-  EXPECT_EQ(e.voxels, 52 * n3 + 16 * n3 / 7);
-  EXPECT_EQ(e.images, 100ull * 100 * 46 * 4 + 50ull * 50 * 4);
+  const uint64_t occupancy = 8 * n3;  // Voxelization::occupancy + FrameResult's copy (float)
+  const uint64_t grid = 20 * n3;      // RGBA float radiance + float fragment count
+  // iso[0] copies the base; levels 1..6 hold 32^3 + 16^3 + ... + 1 = 37449 voxels.
+  const uint64_t mips = 16 * n3 + 16 * 37449;
+  const uint64_t fragments = 8 * 64 * 64 * 116;  // 8 N^2 fragments, 116 B each
+  EXPECT_EQ(e.voxels, occupancy + grid + mips + fragments);
+  EXPECT_EQ(e.voxels, 15934608u);
+  // Shadow map 50^2 floats; per pixel: G-buffer 84 + frame images 96 + cone images 2 x 80.
+  EXPECT_EQ(e.images, 50ull * 50 * 4 + 100ull * 100 * 340);
+  EXPECT_EQ(e.raster_scratch, 100ull * 100 * 21);  // the camera's visibility buffer is larger
   EXPECT_EQ(e.path_tracer, 100ull * 16 * 8);
+  EXPECT_EQ(e.baseline, 136ull << 20);
+  EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
+  // A large shadow map's visibility buffer outweighs this small grid; only the larger counts.
+  s.vct.shadow_map_size = 2048;
+  const MemoryEstimate big_map = estimate_memory(s);
+  EXPECT_EQ(big_map.raster_scratch, 2048ull * 2048 * 21);
+  EXPECT_GT(big_map.raster_scratch, big_map.voxels);
+  EXPECT_EQ(big_map.total(), big_map.baseline + big_map.raster_scratch + big_map.images + big_map.path_tracer);
+}
+
+// Multibounce keeps two mip pyramids (or two grids) and, while small, every earlier frame.
+TEST(MemoryBudget, MultibounceAnisotropicHandCount) {
+  Settings s;
+  s.vct.grid = 16;
   s.vct.anisotropic = true;
+  s.vct.bounces = 3;
+  s.vct.voxelizer = Voxelizer::GpuEmulation;
+  s.vct.reduction = Reduction::ExactMean;
+  const uint64_t n3 = 16ull * 16 * 16;
+  const uint64_t occupancy = 12 * n3;  // occupancy, conservative copy, hole map (float each)
+  const uint64_t grid = 20 * n3;       // RGBA float + fragment count
+  // iso[0] copy; the iso pyramid and six directional ones, levels 1..4: 512 + 64 + 8 + 1 = 585.
+  const uint64_t mips = 16 * n3 + 7 * 16 * 585;
+  const uint64_t fragments = 8 * 16 * 16 * 116;
+  const uint64_t kept = 2 * 16 * n3;  // base levels of frames 1 and 2 (RGBA float)
+  EXPECT_EQ(estimate_memory(s).voxels, occupancy + grid + 2 * mips + fragments + kept);
+  EXPECT_EQ(estimate_memory(s).voxels, 761824u);
+  // Isotropic mips (74896 B) are smaller than the grid: the grid is what is there twice.
+  s.vct.anisotropic = false;
   s.vct.bounces = 2;
-  EXPECT_EQ(estimate_memory(s).voxels, 52 * n3 + 2 * (16 * n3 / 7 + 96 * n3 / 7));
+  EXPECT_EQ(estimate_memory(s).voxels, occupancy + 2 * grid + (16 * n3 + 16 * 585) + fragments + 16 * n3);
+  // The CAS model's lo/hi bounds are part of the grid.
+  s.vct.reduction = Reduction::CasRgba8;
+  EXPECT_EQ(estimate_memory(s).voxels, occupancy + 2 * (grid + 32 * n3) + (16 * n3 + 16 * 585) + fragments + 16 * n3);
+}
+
+TEST(MemoryBudget, KeepsEarlierFramesUpTo256MiB) {
+  VctSettings v;
+  v.grid = 256;  // one frame is 256^3 x 16 B = 256 MiB
+  v.bounces = 1;
+  EXPECT_FALSE(keeps_multibounce_frames(v));
+  v.bounces = 2;
+  EXPECT_TRUE(keeps_multibounce_frames(v));
+  v.bounces = 3;
+  EXPECT_FALSE(keeps_multibounce_frames(v));
+  v.grid = 128;  // 32 MiB a frame: eight fit
+  v.bounces = 9;
+  EXPECT_TRUE(keeps_multibounce_frames(v));
+  v.bounces = 10;
+  EXPECT_FALSE(keeps_multibounce_frames(v));
 }
 
 TEST(MemoryBudget, RefusesWithTheNeededAmount) {
@@ -31,7 +88,7 @@ TEST(MemoryBudget, RefusesWithTheNeededAmount) {
   s.vct.grid = 512;
   s.vct.anisotropic = true;
   const uint64_t need = estimate_memory(s).total();
-  EXPECT_GT(need, 8ull << 30);  // 512^3 anisotropic is several GiB
+  EXPECT_GT(need, 7ull << 30);  // 512^3 anisotropic: ~60 B per voxel
   EXPECT_NO_THROW(check_memory_budget(s, need));
   try {
     check_memory_budget(s, 4ull << 30);
@@ -49,7 +106,7 @@ TEST(MemoryBudget, ValidateSettingsRefusesHugeImagesOnThisMachine) {
   Settings s;
   s.vct.width = s.vct.height = 16384;
   s.pt.width = s.pt.height = 16384;
-  // 16384^2 pixels * (184 + 128) B = 78 GiB: more than any machine these tests run on.
+  // 16384^2 pixels * (340 + 128) B = 117 GiB: more than any machine these tests run on.
   ASSERT_GT(estimate_memory(s).total(), physical_memory_bytes());
   EXPECT_THROW(validate_settings(s), InputError);
   EXPECT_NO_THROW(validate_settings(Settings{}));
