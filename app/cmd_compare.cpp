@@ -1,14 +1,18 @@
 // vct compare A B: A is the reference, B the test. Each is a stage-set directory (holding
 // vct-stages.json, ours or an external renderer's: docs/external_format.md), a validate run
 // directory (A's ref/ against B's gl/), an image (.exr .png .hdr ...) or a volume (.nrrd).
+// With --scene, stage sets' cone-traced stages are judged on B's own inputs, as vct validate does.
 // Exit: 0 pass or warn, 1 fail, 2 bad input.
 #include <cstdio>
 #include <filesystem>
 
 #include "commands.h"
+#include "compare_scene.h"
+#include "compare/isolated_stages.h"
 #include "compare/metrics.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
+#include "compare/tolerance.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
@@ -23,6 +27,7 @@ namespace {
 
 struct CompareArgs {
   std::string a, b, out, stage = "image.final";
+  std::string scene, config;  // --scene, --config: isolated judgement of cone stages
   double abs = 0.0, rel = 0.0;
   size_t worst = 10;
 };
@@ -37,16 +42,47 @@ std::string stage_dir(const std::string& path, const char* side) {
 
 bool is_volume(const std::string& p) { return fs::path(p).extension() == ".nrrd"; }
 
-int finish(const cmp::Report& rep, const CompareArgs& a, const std::string& title) {
+int finish(const cmp::Report& rep, const CompareArgs& a, const std::string& title,
+           const nlohmann::json& fields = nlohmann::json::object()) {
   print_verdicts(rep, title);
   if (!a.out.empty()) {
     nlohmann::json j = {{"reference", a.a}, {"test", a.b}, {"verdicts", cmp::to_json(rep)}};
+    j.update(fields);
     write_text_atomically((fs::path(a.out) / "compare.json").string(), j.dump(2) + "\n");
   }
   return rep.overall() == cmp::Verdict::Fail ? kExitFailed : kExitOk;
 }
 
+bool has_cone_stage(const cmp::Report& rep) {
+  for (const cmp::StageVerdict& v : rep.stages)
+    if (cmp::is_cone_traced(v.stage)) return true;
+  return false;
+}
+
+// Every input of the isolated judgement is loaded and checked before the first comparison, so
+// bad input writes neither masks nor compare.json.
+int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const CompareArgs& a,
+                 const cmp::CompareOptions& opt) {
+  const std::string title = test.backend + " vs " + ref.backend;
+  if (a.scene.empty()) {
+    const cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+    const int code = finish(rep, a, title, {{"cone_stages", "end_to_end"}});
+    if (has_cone_stage(rep))
+      std::printf("cone stages were judged end to end (an upstream voxel tie changes every cone through it); "
+                  "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
+    return code;
+  }
+  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config);
+  cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+  cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
+  const int code = finish(rep, a, title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
+  std::printf("cone stages were judged on B's own G-buffer, direct light and mips, re-traced in %s\n",
+              in.scene.source.c_str());
+  return code;
+}
+
 int run(const CompareArgs& a) {
+  if (!a.config.empty() && a.scene.empty()) throw InputError("--config", "is only used with --scene");
   for (const auto& p : {a.a, a.b})
     if (!fs::exists(p)) throw InputError(p, "no such file or directory");
   if (!a.out.empty()) fs::create_directories(a.out);
@@ -54,8 +90,9 @@ int run(const CompareArgs& a) {
   if (fs::is_directory(a.a) || fs::is_directory(a.b) || fs::path(a.a).extension() == ".json") {
     const cmp::StageSet ref = cmp::read_stage_set(stage_dir(a.a, "ref"));
     const cmp::StageSet test = cmp::read_stage_set(stage_dir(a.b, "gl"));
-    return finish(cmp::compare_stage_sets(ref, test, opt), a, test.backend + " vs " + ref.backend);
+    return compare_sets(ref, test, a, opt);
   }
+  if (!a.scene.empty()) throw InputError("--scene", "applies to stage sets only, not to two images or volumes");
   cmp::Report rep;
   if (is_volume(a.a) != is_volume(a.b)) throw InputError(a.b, "cannot compare an image with a volume");
   if (is_volume(a.a)) {
@@ -88,6 +125,10 @@ void register_compare(CLI::App& app, int& exit_code) {
   cmd->add_option("--abs", a->abs, "Two volumes: absolute bound (default 0 = exact)");
   cmd->add_option("--rel", a->rel, "Two volumes: relative bound");
   cmd->add_option("--worst", a->worst, "Offenders listed per stage")->check(CLI::Range(1, 1000));
+  cmd->add_option("--scene", a->scene,
+                  "Stage sets: judge B's cone stages on B's own inputs, re-traced in this glTF scene "
+                  "(or builtin:cornell_box), as vct validate does");
+  cmd->add_option("--config", a->config, "With --scene: settings JSON for what B's manifest does not say");
   cmd->callback([a, &exit_code]() { exit_code = run(*a); });
 }
 

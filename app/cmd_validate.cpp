@@ -81,15 +81,6 @@ nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
   return j;
 }
 
-// Cone-traced stages are judged on GL's own voxels (compare/isolated_stages.h), so a legitimate
-// voxel tie upstream does not fail a correct marcher downstream.
-void judge_cones_on_gl_inputs(cmp::Report& rep, const Scene& scene, const FrameResult& gl_frame, const Settings& s,
-                              const cmp::StageSet& gl_set) {
-  const FrameResult ref_on_gl = cmp::reference_on_test_inputs(scene, gl_frame, s.vct);
-  const cmp::Report isolated = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set);
-  cmp::apply_isolated_verdicts(rep, isolated);
-}
-
 // One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
 nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
                          bool gl_available) {
@@ -121,7 +112,8 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
         if (ref.ok()) {
           const cmp::StageSet gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct);
           cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(*ref.frame, s.vct), gl_set);
-          judge_cones_on_gl_inputs(rep, scene, *gl.frame, s, gl_set);
+          // Cone stages on GL's own voxels (compare/isolated_stages.h), as in run().
+          cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
           row["gl_verdict"] = cmp::to_string(rep.overall());
           row["gl_first_failing"] = rep.first_failing();
         }
@@ -180,7 +172,9 @@ int run(const ValidateOptions& o) {
   int exit_code = kExitOk;
   if (ref.ok() && gl.ok()) {
     cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
-    judge_cones_on_gl_inputs(rep, scene, *gl.frame, s, gl_set);
+    // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
+    // tie upstream does not fail a correct marcher downstream.
+    cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
     run.json()["verdicts"] = cmp::to_json(rep);
     print_verdicts(rep, "GPU (gl) vs CPU reference");
     if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;

@@ -45,4 +45,10 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated) {
   }
 }
 
+void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                const StageSet& test_set, const CompareOptions& opt) {
+  const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s);
+  apply_isolated_verdicts(end_to_end, compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt));
+}
+
 }  // namespace vct::cmp

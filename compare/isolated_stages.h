@@ -8,6 +8,8 @@
 // against that. The end-to-end difference stays in the report as context.
 #pragma once
 
+#include "compare/stage_compare.h"
+#include "compare/stage_set.h"
 #include "compare/verdict.h"
 #include "core/settings.h"
 #include "scene/scene.h"
@@ -24,5 +26,11 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
 /// on the test's own inputs) and keeps the end-to-end verdict in the note and in
 /// extra["end_to_end"], so a cone stage fails only when the test's marcher is wrong.
 void apply_isolated_verdicts(Report& end_to_end, const Report& isolated);
+
+/// The whole isolated judgement, as `vct validate` and `vct compare --scene` run it: the reference
+/// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`
+/// (no masks by default), then applied to `end_to_end`.
+void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                const StageSet& test_set, const CompareOptions& opt = {});
 
 }  // namespace vct::cmp

@@ -1,0 +1,200 @@
+#include "compare/stage_set_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace vct::cmp {
+
+namespace {
+
+constexpr const char* kGbufferInputs[] = {"gbuffer.coverage", "gbuffer.position", "gbuffer.normal",
+                                          "gbuffer.albedo",   "gbuffer.material", "gbuffer.specular_color",
+                                          "gbuffer.emission"};
+
+int mip_levels(int n) {  // GL: levels down to 1^3
+  int levels = 1;
+  for (; n > 1; n /= 2) ++levels;
+  return levels;
+}
+
+int level_size(int n, int level) { return std::max(1, n >> level); }
+
+std::string manifest_of(const StageSet& set) {
+  return set.root.empty() ? "test stage set" : (std::filesystem::path(set.root) / "vct-stages.json").string();
+}
+
+std::string file_of(const StageSet& set, const std::string& stage) {
+  const auto it = set.files.find(stage);
+  return it == set.files.end() || set.root.empty() ? stage : (std::filesystem::path(set.root) / it->second).string();
+}
+
+bool wants_particles(const Scene& scene, const VctSettings& s) { return s.particles && !scene.emitters.empty(); }
+
+// Every slot of FrameResult a stage set can fill, by canonical name (stage_set_from_frame's
+// names; shadow maps, mips and the volumes below are handled apart).
+std::vector<std::pair<const char*, Image*>> image_slots(FrameResult& f) {
+  GBuffer& g = f.gbuffer;
+  FrameImages& im = f.images;
+  return {{"gbuffer.coverage", &g.coverage},         {"gbuffer.depth", &g.depth},
+          {"gbuffer.position", &g.position},         {"gbuffer.normal", &g.normal},
+          {"gbuffer.albedo", &g.albedo},             {"gbuffer.material", &g.material},
+          {"gbuffer.specular_color", &g.specular_color}, {"gbuffer.emission", &g.emission},
+          {"image.direct", &im.direct},              {"image.indirect_diffuse", &im.indirect_diffuse},
+          {"image.indirect_specular", &im.indirect_specular}, {"image.diffuse_term", &im.diffuse_term},
+          {"image.specular_term", &im.specular_term}, {"image.emission", &im.emission},
+          {"image.particles", &im.particles},        {"image.soft_shadow", &im.soft_shadow},
+          {"image.final", &im.final_image}};
+}
+
+std::vector<std::pair<const char*, Volume*>> volume_slots(FrameResult& f) {
+  return {{"voxel.radiance", &f.voxels.radiance},
+          {"voxel.fragments", &f.voxels.fragments},
+          {"voxel.cas_lo", &f.voxels.cas_lo},
+          {"voxel.cas_hi", &f.voxels.cas_hi},
+          {"voxel.conservative", &f.conservative_occupancy},
+          {"voxel.holes", &f.holes}};
+}
+
+// The marcher indexes pixels and voxels with a fixed channel count: extra channels (RGBA files
+// for RGB stages) are dropped, missing ones are an error.
+Image first_channels(const Image& in, int channels, const std::string& file) {
+  if (in.channels == channels) return in;
+  if (in.channels < channels)
+    throw InputError(file, std::to_string(in.channels) + " channel(s), --scene needs " + std::to_string(channels));
+  Image out(in.width, in.height, channels);
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < in.width; ++x) std::copy_n(in.pixel(x, y), channels, out.pixel(x, y));
+  return out;
+}
+
+Volume rgba_volume(const Volume& in, int n, const std::string& file) {
+  if (in.nx != n || in.ny != n || in.nz != n)
+    throw InputError(file, "size " + std::to_string(in.nx) + "x" + std::to_string(in.ny) + "x" + std::to_string(in.nz) +
+                               ", the settings' grid gives " + std::to_string(n) + "^3 at this level");
+  if (in.channels < 4) throw InputError(file, std::to_string(in.channels) + " channel(s), --scene needs RGBA");
+  if (in.channels == 4) return in;
+  Volume out(n, n, n, 4);
+  for (size_t i = 0; i < in.voxel_count(); ++i) std::copy_n(&in.data[i * size_t(in.channels)], 4, &out.data[i * 4]);
+  return out;
+}
+
+int image_channels(const std::string& stage) {
+  if (stage == "gbuffer.coverage") return 1;
+  return stage == "gbuffer.material" ? 4 : 3;
+}
+
+void fill_everything(const StageSet& set, FrameResult& f) {
+  for (auto& [name, slot] : image_slots(f))
+    if (set.images.count(name)) *slot = set.images.at(name);
+  for (auto& [name, slot] : volume_slots(f))
+    if (set.volumes.count(name)) *slot = set.volumes.at(name);
+  for (size_t i = 0; set.images.count("shadow_map." + std::to_string(i)); ++i)
+    f.shadow_maps.push_back({set.images.at("shadow_map." + std::to_string(i)), mat4(1.0f)});
+  for (const auto& [k, v] : set.info.items()) {
+    if (k == "multibounce_energy" && v.is_array()) f.multibounce_energy = v.get<std::vector<double>>();
+    else f.info[k] = v.is_string() ? v.get<std::string>() : v.dump();
+  }
+  f.backend = set.backend;
+  f.voxels.n = f.voxels.radiance.nx;
+}
+
+// The mip chain the marcher samples: iso[0] = voxel.radiance, then the levels the settings
+// select. Isotropic iso levels beyond the chain a set holds are not guessed.
+void fill_mips(const StageSet& set, const VctSettings& s, FrameResult& f) {
+  const int levels = mip_levels(s.grid);
+  f.mips.iso = {rgba_volume(f.voxels.radiance, s.grid, file_of(set, "voxel.radiance"))};
+  f.voxels.radiance = f.mips.iso[0];
+  for (int l = 1; l < levels; ++l) {
+    const std::string name = "mip.iso." + std::to_string(l);
+    if (!set.volumes.count(name)) break;
+    f.mips.iso.push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
+  }
+  if (!s.anisotropic) return;
+  for (int d = 0; d < 6; ++d)
+    for (int l = 1; l < levels; ++l) {
+      const std::string name = std::string("mip.") + kAnisoDirNames[size_t(d)] + "." + std::to_string(l);
+      f.mips.aniso[size_t(d)].push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
+    }
+}
+
+void require_stages(const StageSet& set, const Scene& scene, const VctSettings& s) {
+  for (const std::string& stage : cone_input_stages(scene, s))
+    if (!set.has(stage))
+      throw InputError(manifest_of(set), "stage '" + stage +
+                                             "' is missing; --scene re-traces the cone stages from the test's own "
+                                             "G-buffer, direct light and mips (docs/external_format.md)");
+}
+
+// The images the marcher and the composite index pixel by pixel: the G-buffer, direct light and
+// particles (whenever present: the composite adds them) must be width x height.
+void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& f) {
+  for (auto& [name_c, slot] : image_slots(f)) {
+    const std::string name = name_c;
+    const bool input = std::find(std::begin(kGbufferInputs), std::end(kGbufferInputs), name) != std::end(kGbufferInputs) ||
+                       name == "image.direct" || name == "image.particles";
+    if (slot->empty() || !input) continue;
+    if (slot->width != s.width || slot->height != s.height)
+      throw InputError(file_of(set, name), "size " + std::to_string(slot->width) + "x" + std::to_string(slot->height) +
+                                               ", the settings give " + std::to_string(s.width) + "x" +
+                                               std::to_string(s.height));
+    *slot = first_channels(*slot, image_channels(name), file_of(set, name));
+  }
+}
+
+// A wrong --scene would re-trace from the wrong camera and lights and fail every cone stage for
+// no fault of the test; say so instead. Positions must land on their own pixel (within 1 px:
+// float error and sub-pixel jitter stay far below) for all but 1 % of the covered pixels.
+void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer& g) {
+  size_t shadow_maps = 0;
+  while (set.images.count("shadow_map." + std::to_string(shadow_maps))) ++shadow_maps;
+  if (shadow_maps > 0 && shadow_maps != scene.spot_lights.size())
+    throw InputError(manifest_of(set), std::to_string(shadow_maps) + " shadow maps but " + scene.source + " has " +
+                                           std::to_string(scene.spot_lights.size()) + " spot light(s): wrong --scene?");
+  const int w = g.coverage.width, h = g.coverage.height;
+  const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
+  size_t covered = 0, off = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (g.coverage.at(x, y, 0) <= 0.5f) continue;
+      ++covered;
+      const vec4 c = view_proj * vec4(g.position.rgb(x, y), 1.0f);
+      const float px = (c.x / c.w * 0.5f + 0.5f) * float(w), py = (0.5f - c.y / c.w * 0.5f) * float(h);
+      if (!(c.w > 0.0f && std::abs(px - (float(x) + 0.5f)) <= 1.0f && std::abs(py - (float(y) + 0.5f)) <= 1.0f)) ++off;
+    }
+  if (off * 100 > covered)
+    throw InputError(file_of(set, "gbuffer.position"),
+                     std::to_string(off) + " of " + std::to_string(covered) +
+                         " covered pixels do not project to their pixel through the camera of " + scene.source +
+                         ": wrong --scene?");
+}
+
+}  // namespace
+
+std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings& s) {
+  std::vector<std::string> stages(std::begin(kGbufferInputs), std::end(kGbufferInputs));
+  if (!s.soft_shadows) stages.push_back("image.direct");
+  if (wants_particles(scene, s)) stages.push_back("image.particles");
+  stages.push_back("voxel.radiance");
+  const int levels = mip_levels(s.grid);
+  for (int l = 1; l < levels; ++l)
+    if (!s.anisotropic) stages.push_back("mip.iso." + std::to_string(l));
+  if (s.anisotropic)
+    for (const char* dir : kAnisoDirNames)
+      for (int l = 1; l < levels; ++l) stages.push_back(std::string("mip.") + dir + "." + std::to_string(l));
+  return stages;
+}
+
+FrameResult frame_from_stage_set(const StageSet& set, const Scene& scene, const VctSettings& s) {
+  require_stages(set, scene, s);
+  FrameResult f;
+  fill_everything(set, f);
+  check_input_images(set, s, f);
+  fill_mips(set, s, f);
+  check_scene_matches(set, scene, f.gbuffer);
+  return f;
+}
+
+}  // namespace vct::cmp
