@@ -168,7 +168,7 @@ void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer&
     throw InputError(file_of(set, "gbuffer.position"),
                      std::to_string(off) + " of " + std::to_string(covered) +
                          " covered pixels do not project to their pixel through the camera of " + scene.source +
-                         ": wrong --scene?");
+                         ": wrong --scene, or images not flipped to row 0 = top?");
 }
 
 }  // namespace
@@ -179,9 +179,9 @@ std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings
   if (wants_particles(scene, s)) stages.push_back("image.particles");
   stages.push_back("voxel.radiance");
   const int levels = mip_levels(s.grid);
-  for (int l = 1; l < levels; ++l)
-    if (!s.anisotropic) stages.push_back("mip.iso." + std::to_string(l));
-  if (s.anisotropic)
+  if (!s.anisotropic)
+    for (int l = 1; l < levels; ++l) stages.push_back("mip.iso." + std::to_string(l));
+  else
     for (const char* dir : kAnisoDirNames)
       for (int l = 1; l < levels; ++l) stages.push_back(std::string("mip.") + dir + "." + std::to_string(l));
   return stages;

@@ -154,7 +154,7 @@ TEST_F(CompareScene, BadInputIsOneLineExitTwoAndWritesNothing) {
   const std::string tiny = " --scene '" + scene("tiny_triangles.gltf") + "'";
   expect_bad_input("compare '" + a() + "' '" + no_mips.string() + "'" + tiny, out, "stage 'mip.iso.1' is missing");
   // The Cornell box's camera does not see tiny_triangles' G-buffer.
-  expect_bad_input(ab + " --scene '" + scene("cornell_box.gltf") + "'", out, "wrong --scene?");
+  expect_bad_input(ab + " --scene '" + scene("cornell_box.gltf") + "'", out, "wrong --scene");
   // Settings that describe another grid than B's voxels.
   std::ofstream(*dir_ / "grid128.json") << R"({"vct": {"grid": 128}})";
   expect_bad_input(ab + tiny + " --config '" + (*dir_ / "grid128.json").string() + "'", out, "grid = 128");
