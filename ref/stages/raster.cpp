@@ -13,7 +13,10 @@ namespace {
 // Vertices further out than this many viewport half-widths are clipped against x/y (guard band).
 // Keeps fixed-point window coordinates well inside 2^31.
 constexpr double kGuardBand = 4.0;
-constexpr int kBandRows = 16;
+
+// Floor and ceiling of n / d for d > 0 (C++ division truncates toward zero).
+int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
+int64_t ceil_div(int64_t n, int64_t d) { return -floor_div(-n, d); }
 
 struct ClipVertex {
   glm::dvec4 c;
@@ -149,21 +152,42 @@ EdgeSetup edge_setup(const RasterTriangle& t) {
 void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f) {
   const int64_t px = int64_t(x) * kSubpixelScale + kSubpixelScale / 2;
   const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
-  double b[3], q[3], qsum = 0.0, depth = 0.0;
+  double b[3], q[3], qsum = 0.0;
   for (int i = 0; i < 3; ++i) {
     b[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]) / double(t.area2);
-    depth += b[i] * t.z[i];
     q[i] = b[i] * t.inv_w[i];
     qsum += q[i];
   }
   glm::dvec3 bary(0.0);
   for (int i = 0; i < 3; ++i) bary += glm::dvec3(t.bary[i]) * (q[i] / qsum);
   f.bary = vec3(bary);
-  f.depth = float(std::clamp(depth, 0.0, 1.0));
+  f.depth = interpolate_window_depth(b[0], b[1], b[2], t.z);
 }
 
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
-                                   const mat4& view_proj, int width, int height) {
+bool centre_row_span(const EdgeSetup& e, int y, int& x0, int& x1) {
+  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+  int64_t lo = x0, hi = x1;
+  for (int i = 0; i < 3; ++i) {
+    // rasterize() covers the centre of pixel x iff e_i + bias_i >= 0 at px = x*S + S/2, i.e.
+    // step*x + r >= 0 with:
+    const int64_t step = e.a[i] * kSubpixelScale;
+    const int64_t r = e.a[i] * (kSubpixelScale / 2) + e.b[i] * py + e.c[i] + e.bias[i];
+    if (step > 0) {
+      lo = std::max(lo, ceil_div(-r, step));
+    } else if (step < 0) {
+      hi = std::min(hi, floor_div(r, -step));
+    } else if (r < 0) {
+      return false;  // horizontal edge with the whole row outside
+    }
+  }
+  if (lo > hi) return false;
+  x0 = int(lo);
+  x1 = int(hi);
+  return true;
+}
+
+BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
+                              const mat4& view_proj, int width, int height) {
   // Set-up per source triangle (parallel, each writes its own slot), then flatten in index order.
   std::vector<std::vector<RasterTriangle>> per_tri(triangles.size());
   parallel_for(int64_t(triangles.size()), [&](int64_t i) {
@@ -172,15 +196,22 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std
                           view_proj * vec4(positions[tri.z], 1.0f)};
     setup_triangle(clip, width, height, uint32_t(i), per_tri[size_t(i)]);
   });
-  std::vector<RasterTriangle> tris;
-  for (auto& v : per_tri) tris.insert(tris.end(), v.begin(), v.end());
+  BinnedTriangles b;
+  for (auto& v : per_tri) b.triangles.insert(b.triangles.end(), v.begin(), v.end());
   per_tri.clear();
 
-  const int bands = (height + kBandRows - 1) / kBandRows;
-  std::vector<std::vector<uint32_t>> bins(static_cast<size_t>(bands));
-  for (size_t i = 0; i < tris.size(); ++i)
-    for (int b = tris[i].ymin / kBandRows; b <= tris[i].ymax / kBandRows; ++b) bins[size_t(b)].push_back(uint32_t(i));
+  b.bands.resize(size_t((height + kRasterBandRows - 1) / kRasterBandRows));
+  for (size_t i = 0; i < b.triangles.size(); ++i) {
+    const RasterTriangle& t = b.triangles[i];
+    for (int band = t.ymin / kRasterBandRows; band <= t.ymax / kRasterBandRows; ++band)
+      b.bands[size_t(band)].push_back(uint32_t(i));
+  }
+  return b;
+}
 
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
+                                   const mat4& view_proj, int width, int height) {
+  const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
   VisibilityBuffer vb;
   vb.width = width;
   vb.height = height;
@@ -190,10 +221,10 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std
   vb.bary.assign(n, vec3(0.0f));
   vb.front_facing.assign(n, 0);
   const std::vector<vec2>& centre = standard_sample_positions(1);
-  parallel_for(bands, [&](int64_t band) {
-    const int y0 = int(band) * kBandRows, y1 = std::min(height, y0 + kBandRows) - 1;
-    for (uint32_t ti : bins[size_t(band)]) {
-      const RasterTriangle& t = tris[ti];
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(height, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
       rasterize(t, centre, 0, width - 1, y0, y1, [&](const RasterFragment& f) {
         const size_t idx = vb.index(f.x, height - 1 - f.y);
         if (!(f.depth < vb.depth[idx])) return;  // GL_LESS

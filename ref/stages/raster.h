@@ -1,5 +1,6 @@
-// The software rasterizer behind the shadow maps, the G-buffer and the GPU-rule voxelizer. It is a
-// plain implementation of the GL rules (docs/pipeline.md, "Raster conventions"):
+// The software rasterizer behind the shadow maps (through its depth-only path,
+// stages/depth_raster.h), the G-buffer and the GPU-rule voxelizer. It is a plain implementation of
+// the GL rules (docs/pipeline.md, "Raster conventions"):
 //  - window coordinates with the origin at the lower-left, y up; pixel (x, y) covers
 //    [x, x+1) x [y, y+1) and its centre is (x+0.5, y+0.5);
 //  - vertices snapped to 1/256 pixel (8 sub-pixel bits, as llvmpipe) and edge functions evaluated
@@ -13,6 +14,7 @@
 //    guard band (GL allows either; inside the guard band no clipping changes coverage).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -66,6 +68,22 @@ EdgeSetup edge_setup(const RasterTriangle& t);
 /// Interpolates at the centre of pixel (x, y) (window coordinates), filling depth and bary.
 void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f);
 
+/// Window depth from the screen-space barycentrics b_i = e_i(centre) / area2, linear in screen
+/// space (GL), clamped to [0,1]. Every raster path calls this one function so that all of them
+/// produce the same bits (same operations in the same order).
+inline float interpolate_window_depth(double b0, double b1, double b2, const double z[3]) {
+  double depth = 0.0;
+  depth += b0 * z[0];
+  depth += b1 * z[1];
+  depth += b2 * z[2];
+  return float(std::clamp(depth, 0.0, 1.0));
+}
+
+/// Narrows [x0, x1] to the pixels of row y (window coordinates) whose centre the triangle covers:
+/// the per-sample test of rasterize() with the centre sample, solved for x per edge in exact
+/// integer arithmetic. Returns false when no centre of the row is covered.
+bool centre_row_span(const EdgeSetup& e, int y, int& x0, int& x1);
+
 /// Calls emit(const RasterFragment&) for every pixel of [x0,x1]x[y0,y1] (inclusive, window
 /// coordinates) with at least one covered sample, in row-major order (y, then x).
 template <class Emit>
@@ -102,6 +120,18 @@ void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0
     }
   }
 }
+
+/// Every triangle of a mesh set up for one viewport (clipped, projected, snapped; flattened in
+/// source index order) and binned into bands of kRasterBandRows rows (window y). A band is the
+/// parallel work item of the full-viewport raster paths: it owns its rows and walks its triangles
+/// in index order, so results do not depend on the thread count.
+constexpr int kRasterBandRows = 16;
+struct BinnedTriangles {
+  std::vector<RasterTriangle> triangles;
+  std::vector<std::vector<uint32_t>> bands;  // band b: indices into triangles, ascending
+};
+BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
+                              const mat4& view_proj, int width, int height);
 
 /// The closest surface at each pixel centre of a width x height view (depth test GL_LESS, depth
 /// cleared to 1, no culling, triangles in index order), row 0 = top (image convention).

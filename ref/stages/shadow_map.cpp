@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "stages/raster.h"
+#include "stages/depth_raster.h"
 
 namespace vct {
 
@@ -34,10 +34,10 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
   for (const SpotLight& light : scene.spot_lights) {
     ShadowMap m;
     m.view_proj = spot_light_view_proj(light, scene.bounds);
-    const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, m.view_proj, size, size);
-    m.depth = Image(size, size, 1);
+    m.depth.width = m.depth.height = size;
+    m.depth.channels = 1;
     m.depth.channel_names = {"Z"};
-    m.depth.data = vb.depth;
+    m.depth.data = render_depth(scene.positions, scene.triangles, m.view_proj, size, size);
     maps.push_back(std::move(m));
   }
   return maps;

@@ -1,5 +1,6 @@
-// Spot-light shadow maps: depth rendered from each spot light with the software rasterizer, and
-// the PCF lookup used by direct lighting and light injection (docs/pipeline.md, "Shadow maps").
+// Spot-light shadow maps: depth rendered from each spot light with the depth-only path of the
+// software rasterizer (stages/depth_raster.h), and the PCF lookup used by direct lighting and
+// light injection (docs/pipeline.md, "Shadow maps").
 #pragma once
 
 #include <vector>

@@ -1,0 +1,61 @@
+#include "stages/depth_raster.h"
+
+#include <algorithm>
+
+#include "core/parallel.h"
+#include "stages/raster.h"
+
+namespace vct {
+
+namespace {
+
+// Depth test of the covered centres x0..x1 of row y against `row` (window x indexed).
+// Edge values are carried in doubles as e(x0) + k * step: every term is an integer below 2^53
+// (|e| < 2^49 for a 16384^2 viewport with the 4-viewport guard band, 8 sub-pixel bits), so they
+// are exactly the int64 values rasterize() converts, and the loop has no int64 -> double
+// conversion per pixel (it vectorizes).
+void depth_test_span(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, float* row) {
+  const int64_t px = int64_t(x0) * kSubpixelScale + kSubpixelScale / 2;
+  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+  double e0[3], step[3];
+  for (int i = 0; i < 3; ++i) {
+    e0[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]);
+    step[i] = double(e.a[i] * kSubpixelScale);
+  }
+  const double area = double(t.area2);
+  float* out = row + x0;
+  const int n = x1 - x0 + 1;
+  for (int k = 0; k < n; ++k) {
+    const double dk = double(k);
+    const float d = interpolate_window_depth((e0[0] + dk * step[0]) / area,
+                                             (e0[1] + dk * step[1]) / area,
+                                             (e0[2] + dk * step[2]) / area, t.z);
+    out[k] = d < out[k] ? d : out[k];  // GL_LESS; the min of all fragments, in any order
+  }
+}
+
+void depth_triangle(const RasterTriangle& t, int y0, int y1, int height, float* depth, int width) {
+  const EdgeSetup e = edge_setup(t);
+  for (int y = std::max(y0, t.ymin); y <= std::min(y1, t.ymax); ++y) {
+    int x0 = t.xmin, x1 = t.xmax;
+    if (centre_row_span(e, y, x0, x1))
+      depth_test_span(t, e, y, x0, x1, depth + size_t(height - 1 - y) * size_t(width));
+  }
+}
+
+}  // namespace
+
+std::vector<float> render_depth(const std::vector<vec3>& positions,
+                                const std::vector<uvec3>& triangles, const mat4& view_proj, int width,
+                                int height) {
+  const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
+  std::vector<float> depth(size_t(width) * size_t(height), 1.0f);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(height, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)])
+      depth_triangle(binned.triangles[ti], y0, y1, height, depth.data(), width);
+  });
+  return depth;
+}
+
+}  // namespace vct
