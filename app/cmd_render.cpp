@@ -35,8 +35,8 @@ struct VctFlags {
   std::string explain;
   bool aniso = false, soft_shadows = false, random_rotation = false, no_particles = false;
   bool no_diffuse = false, no_specular = false;
-  std::optional<int> bounces, msaa, shadow_map_size, frame;
-  std::optional<float> restitution, tolerance, quality, offset, aperture, time;
+  std::optional<int> bounces, msaa, shadow_map_size, frame, cone_count;
+  std::optional<float> restitution, tolerance, quality, offset, aperture, cone_tilt, time;
   std::optional<std::string> light_model, voxelizer, storage, reduction, weighting;
 };
 
@@ -57,6 +57,8 @@ void add_vct_flags(CLI::App* cmd, VctFlags& f) {
   cmd->add_option("--quality", f.quality, "Cone step = diameter x quality");
   cmd->add_option("--offset", f.offset, "Cone start offset in voxels");
   cmd->add_option("--aperture", f.aperture, "Diffuse cone aperture in degrees");
+  cmd->add_option("--cone-count", f.cone_count, "Diffuse cones: 1 along the normal + N-1 tilted (1..16, default 5)");
+  cmd->add_option("--cone-tilt", f.cone_tilt, "Tilt of the diffuse cones from the normal in degrees (0..90, default 45)");
   cmd->add_option("--time", f.time, "Time in seconds (particles)");
   cmd->add_option("--frame", f.frame, "Frame index (random cone rotation hash)");
   cmd->add_option("--msaa", f.msaa, "Samples of the GPU voxelizer rule (1, 4, 8)");
@@ -86,6 +88,8 @@ Settings apply_vct_flags(Settings s, const VctFlags& f) {
   if (f.quality) patch["cone_quality"] = *f.quality;
   if (f.offset) patch["cone_offset_voxels"] = *f.offset;
   if (f.aperture) patch["diffuse_aperture_deg"] = *f.aperture;
+  if (f.cone_count) patch["diffuse_cone_count"] = *f.cone_count;
+  if (f.cone_tilt) patch["diffuse_cone_tilt_deg"] = *f.cone_tilt;
   if (f.time) patch["time"] = *f.time;
   if (f.light_model) patch["light_model"] = *f.light_model;
   if (f.voxelizer) patch["voxelizer"] = *f.voxelizer;

@@ -137,7 +137,12 @@ Settings apply_sweep_value(const Settings& s, const std::string& key_in, const s
   } catch (const std::exception&) {
     v = value;  // enum names: light_model=gltf,seed
   }
-  if (key == "diffuse_cones" && v.is_number()) v = v.get<double>() != 0.0;  // cones=0,5
+  // cones=0,5,9: 0 switches the diffuse cones off, N > 0 traces N of them.
+  if (key == "diffuse_cones" && v.is_number()) {
+    const bool on = v.get<double>() != 0.0;
+    if (on) j["vct"]["diffuse_cone_count"] = v;  // range checked by validate_settings
+    v = on;
+  }
   j["vct"][key] = v;
   if (key == "light_model") j["pt"]["light_model"] = v;
   Settings out;

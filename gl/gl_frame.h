@@ -37,6 +37,7 @@ struct GlFrame {
   std::array<GLuint, 4> sums{};       // r, g, b (or packed CAS), count
   std::array<GLuint, 3> particle_sums{};
   GLuint emitter_ubo = 0;
+  GLuint diffuse_cone_ubo = 0;  // sh::DiffuseConeBlock of the settings (binding 1, cone.glsl)
 
   GLuint direct = 0, soft_shadow = 0;
   std::array<GLuint, 5> shading{};  // indirect diffuse, indirect specular, diffuse term, specular term, final
@@ -48,13 +49,15 @@ struct GlFrame {
 mat4 light_view_proj(const Scene& scene, const SpotLight& light);
 void shadow_pass(GlFrame& f);
 void gbuffer_pass(GlFrame& f);
+void upload_diffuse_cone_block(GlFrame& f);  // the cone set's shared block, before any cone pass
 void voxel_passes(GlFrame& f);   // voxelization (+ multibounce frames), particles into voxels, mips
 void direct_pass(GlFrame& f);
 void indirect_pass(GlFrame& f);
 void particle_pass(GlFrame& f);
 void read_back(GlFrame& f);
 
-/// Binds the voxel mips (units 5..11) and sets the cone uniforms (cone.glsl) on `p`.
+/// Binds the voxel mips (units 5..11) and the diffuse cone block (uniform buffer 1) and sets the
+/// cone uniforms (cone.glsl) on `p`.
 void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std::array<GLuint, 6>& aniso);
 
 }  // namespace vct::gl

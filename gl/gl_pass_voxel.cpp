@@ -8,6 +8,7 @@
 #include "gl_context.h"
 #include "gl_frame.h"
 #include "gl_resources.h"
+#include "stages/cone_sets.h"
 
 namespace vct::gl {
 namespace {
@@ -164,7 +165,15 @@ void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std:
   p.set("u_cone_max_distance", f.s.max_distance);
   p.set("u_cone_quality", f.s.cone_quality);
   p.set("u_diffuse_aperture", f.s.diffuse_aperture_deg * (kPi / 180.0f));
-  p.set("u_cosine_weighted", f.s.diffuse_weighting == DiffuseWeighting::Cosine ? 1 : 0);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 1, f.diffuse_cone_ubo);
+}
+
+void upload_diffuse_cone_block(GlFrame& f) {
+  // Two vec4s: std140 and C++ layouts coincide, so the host's floats go up byte for byte.
+  static_assert(sizeof(sh::DiffuseConeBlock) == 2 * sizeof(vec4), "DiffuseConeBlock must stay two vec4s");
+  const sh::DiffuseConeBlock block = diffuse_cone_block(f.s);
+  glCreateBuffers(1, &f.diffuse_cone_ubo);
+  glNamedBufferStorage(f.diffuse_cone_ubo, sizeof block, &block, 0);
 }
 
 void voxel_passes(GlFrame& f) {

@@ -39,6 +39,7 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
   if (settings.vct.reduction == Reduction::ExactMean)
     result.info["reduction"] = "fixed_point (GL has no exact mean; the fixed-point sum is its deterministic twin)";
   glCreateVertexArrays(1, &f.empty_vao);
+  upload_diffuse_cone_block(f);
   shadow_pass(f);
   gbuffer_pass(f);
   voxel_passes(f);

@@ -270,14 +270,16 @@ def walkthrough(p):
 
 
 def explain_table(ex):
+    # Every cone: the diffuse set has diffuse_cone_count of them (up to 16), then specular and shadow cones.
     rows = []
-    for c in ex.get("cones", [])[:8]:
-        rows.append("<tr><td>%s %s</td><td>%s</td><td class=num>%d</td><td>%s</td></tr>" % (
+    for c in ex.get("cones", []):
+        rows.append("<tr><td>%s %s</td><td>%s</td><td class=num>%.4g</td><td class=num>%d</td><td>%s</td></tr>" % (
             E(str(c.get("kind"))), E(str(c.get("index"))), E(", ".join("%.2f" % d for d in c.get("direction", []))),
-            len(c.get("samples", [])), E(", ".join("%.3f" % d for d in c.get("result_rgba", [])))))
+            float(c.get("weight", 1.0)), len(c.get("samples", [])),
+            E(", ".join("%.3f" % d for d in c.get("result_rgba", [])))))
     px = ex.get("pixel", "")
-    return '<div><b>pixel %s</b><table><tr><th>cone</th><th>direction</th><th>samples</th><th>result rgba</th></tr>%s</table></div>' % (
-        E(str(px)), "".join(rows))
+    return ('<div><b>pixel %s</b><table><tr><th>cone</th><th>direction</th><th>weight</th><th>samples</th>'
+            '<th>result rgba</th></tr>%s</table></div>') % (E(str(px)), "".join(rows))
 
 
 def voxel_view(p):

@@ -67,16 +67,19 @@ vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float max_distance, float
 }
 
 uniform float u_diffuse_aperture;  // radians
-uniform int u_cosine_weighted;
+// The cone set as the host computed it (stages/cone_sets.h, diffuse_cone_block): count, sin/cos
+// of the tilt, azimuth step and weights are the CPU's floats.
+layout(std140, binding = 1) uniform DiffuseConeUbo { DiffuseConeBlock u_diffuse_set; };
 
 // The diffuse cone set at texture-space point `origin` with unit normal n.
 vec3 trace_diffuse(vec3 origin, vec3 n, float rotation, float min_lod) {
   Frame f = frame_from_normal(n);
   vec3 sum = vec3(0.0f);
-  for (int i = 0; i < MAX_DIFFUSE_CONES; ++i) {
-    vec3 dir = normalize(frame_to_world(f, diffuse_cone_direction(i, rotation)));
+  int count = diffuse_cone_count(u_diffuse_set);
+  for (int i = 0; i < count; ++i) {
+    vec3 dir = normalize(frame_to_world(f, diffuse_cone_direction(i, rotation, u_diffuse_set)));
     vec4 c = trace_cone(origin, dir, u_diffuse_aperture, u_cone_max_distance, min_lod);
-    sum += diffuse_cone_weight(i, u_cosine_weighted != 0) * c.rgb;
+    sum += diffuse_cone_weight(i, u_diffuse_set) * c.rgb;
   }
   return sum;
 }

@@ -31,7 +31,7 @@ void main() {
   if (u_diffuse_cones != 0) {
     // The hash takes the pixel's row counted from the top, as the CPU's images do.
     float rotation = u_random_rotation != 0
-                         ? diffuse_cone_rotation(uint(px.x), uint(u_image_height - 1 - px.y), u_frame)
+                         ? diffuse_cone_rotation(uint(px.x), uint(u_image_height - 1 - px.y), u_frame, u_diffuse_set)
                          : 0.0f;
     diffuse = trace_diffuse(origin, g.normal, rotation, 0.0f);
   }

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -129,6 +130,8 @@ void to_json(nlohmann::json& j, const VctSettings& s) {
                      {"specular_cones", s.specular_cones},
                      {"soft_shadows", s.soft_shadows},
                      {"diffuse_aperture_deg", s.diffuse_aperture_deg},
+                     {"diffuse_cone_count", s.diffuse_cone_count},
+                     {"diffuse_cone_tilt_deg", s.diffuse_cone_tilt_deg},
                      {"diffuse_weighting", enum_name(s.diffuse_weighting)},
                      {"random_rotation", s.random_rotation},
                      {"cone_quality", s.cone_quality},
@@ -163,6 +166,8 @@ void from_json(const nlohmann::json& j, VctSettings& s) {
   r.field("specular_cones", s.specular_cones);
   r.field("soft_shadows", s.soft_shadows);
   r.field("diffuse_aperture_deg", s.diffuse_aperture_deg);
+  r.field("diffuse_cone_count", s.diffuse_cone_count);
+  r.field("diffuse_cone_tilt_deg", s.diffuse_cone_tilt_deg);
   r.enumeration("diffuse_weighting", s.diffuse_weighting);
   r.field("random_rotation", s.random_rotation);
   r.field("cone_quality", s.cone_quality);
@@ -247,6 +252,11 @@ namespace {
 void require(bool ok, const std::string& what) {
   if (!ok) throw InputError("", what);
 }
+std::string shortest(float v) {  // 90 rather than std::to_string's 90.000000
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
 }  // namespace
 
 void validate_settings(const Settings& s) {
@@ -260,6 +270,11 @@ void validate_settings(const Settings& s) {
   require(v.msaa_samples == 1 || v.msaa_samples == 4 || v.msaa_samples == 8, "msaa_samples must be 1, 4 or 8");
   require(v.cone_quality > 0.01f && v.cone_quality <= 4.0f, "cone_quality must be in (0.01, 4]");
   require(v.diffuse_aperture_deg > 0.0f && v.diffuse_aperture_deg < 180.0f, "diffuse_aperture_deg must be in (0, 180)");
+  require(v.diffuse_cone_count >= 1 && v.diffuse_cone_count <= kMaxDiffuseConeCount,
+          "diffuse_cone_count must be in 1.." + std::to_string(kMaxDiffuseConeCount) + " (got " +
+              std::to_string(v.diffuse_cone_count) + ")");
+  require(v.diffuse_cone_tilt_deg > 0.0f && v.diffuse_cone_tilt_deg < 90.0f,
+          "diffuse_cone_tilt_deg must be in (0, 90) (got " + shortest(v.diffuse_cone_tilt_deg) + ")");
   require(v.bounces >= 1 && v.bounces <= 64, "bounces must be in 1..64");
   require(v.restitution >= 0.0f && v.restitution <= 1.0f, "restitution must be in [0, 1]");
   require(is_known_gl_fault(v.gl_fault), "gl_fault: unknown fault \"" + v.gl_fault + "\"");

@@ -15,6 +15,9 @@ enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
 enum class Reduction { ExactMean, FixedPoint, CasRgba8 };  // how fragments in a voxel combine
 enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
 
+// Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
+inline constexpr int kMaxDiffuseConeCount = 16;
+
 struct VctSettings {
   // Images and shadow maps.
   int width = 512;
@@ -37,6 +40,8 @@ struct VctSettings {
   bool specular_cones = true;
   bool soft_shadows = false;      // cone-traced shadow instead of PCF
   float diffuse_aperture_deg = 30.0f;
+  int diffuse_cone_count = 5;        // 1 along the normal + count-1 tilted, evenly spaced in azimuth
+  float diffuse_cone_tilt_deg = 45.0f;  // angle of the tilted cones from the normal, in (0, 90)
   DiffuseWeighting diffuse_weighting = DiffuseWeighting::Cosine;
   bool random_rotation = false;
   float cone_quality = 0.5f;      // step = diameter * quality  (smaller = more steps)

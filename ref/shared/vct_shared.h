@@ -26,7 +26,7 @@ VCT_CONST float SH_PI = 3.14159265358979323846f;
 VCT_CONST float SH_INV_PI = 0.31830988618379067154f;
 VCT_CONST int LIGHT_MODEL_GLTF = 0;
 VCT_CONST int LIGHT_MODEL_SEED = 1;
-VCT_CONST int MAX_DIFFUSE_CONES = 5;
+VCT_CONST int MAX_DIFFUSE_CONES = 16;  // settings.diffuse_cone_count is 1..this
 
 // ---------------------------------------------------------------------------------------------
 // Cook–Torrance as the seed defines it: GGX/Trowbridge-Reitz D with alpha = roughness^2,
@@ -164,31 +164,38 @@ VCT_FN uint hash_combine(uint a, uint b) { return pcg_hash(a ^ (b * 0x9E3779B9u 
 VCT_FN float hash_to_unit(uint h) { return float(h >> 8u) * (1.0f / 16777216.0f); }
 
 // ---------------------------------------------------------------------------------------------
-// Diffuse cone set (the seed's): one cone along the normal and four tilted by 45 degrees,
-// spaced 90 degrees apart in azimuth, starting at azimuth `rotation` (radians).
-// Directions are in the tangent frame (z = normal).
+// Diffuse cone set: one cone along the normal and count-1 cones tilted by the same angle from it,
+// evenly spaced in azimuth (step 2*pi/(count-1)) starting at azimuth `rotation` (radians). The
+// seed's set is count 5, tilt 45 degrees. Directions are in the tangent frame (z = normal).
+// The host (C++) computes every number of the set once, from the settings, into this block
+// (stages/cone_sets.h, diffuse_cone_block); GLSL reads it as a std140 uniform block, so both
+// backends use identical floats for sin/cos of the tilt, the azimuth step and the weights.
+struct DiffuseConeBlock {
+  vec4 shape;    // x = sin(tilt), y = cos(tilt), z = azimuth step (0 for count 1), w = count
+  vec4 weights;  // x = weight of the normal cone, y = weight of each tilted cone, zw unused
+};
 
-VCT_FN vec3 diffuse_cone_direction(int i, float rotation) {
+VCT_FN int diffuse_cone_count(DiffuseConeBlock b) { return int(b.shape.w); }
+
+VCT_FN vec3 diffuse_cone_direction(int i, float rotation, DiffuseConeBlock b) {
   if (i == 0) return vec3(0.0f, 0.0f, 1.0f);
-  float phi = rotation + float(i - 1) * (0.5f * SH_PI);
-  float s = 0.70710678118654752f;  // sin 45 = cos 45
-  return vec3(s * cos(phi), s * sin(phi), s);
+  float phi = rotation + float(i - 1) * b.shape.z;
+  float s = b.shape.x;
+  return vec3(s * cos(phi), s * sin(phi), b.shape.y);
 }
 
-// Weight of cone i. Cosine mode: cos(theta_i) / sum_j cos(theta_j), so the weighted sum of cone
-// radiances estimates the cosine-weighted mean incident radiance (E / pi); the diffuse term is
-// then kd * albedo * that. Seed mode: every cone weighs 1 (the seed's plain sum).
-VCT_FN float diffuse_cone_weight(int i, bool cosine_weighted) {
-  if (!cosine_weighted) return 1.0f;
-  float c = 0.70710678118654752f;
-  float total = 1.0f + 4.0f * c;
-  return (i == 0 ? 1.0f : c) / total;
-}
+// Weight of cone i, precomputed on the host. Cosine mode: cos(theta_i) / sum_j cos(theta_j)
+// (1/T for the normal cone, cos(tilt)/T for the others, T = 1 + (count-1) cos(tilt)), so the
+// weighted sum of cone radiances estimates the cosine-weighted mean incident radiance (E / pi);
+// the diffuse term is then kd * albedo * that. Seed mode: every cone weighs 1 (the seed's plain
+// sum, count x L on a constant environment).
+VCT_FN float diffuse_cone_weight(int i, DiffuseConeBlock b) { return i == 0 ? b.weights.x : b.weights.y; }
 
-// Per-pixel, per-frame rotation of the diffuse cone set about the normal.
-VCT_FN float diffuse_cone_rotation(uint pixel_x, uint pixel_y, uint frame) {
+// Per-pixel, per-frame rotation of the diffuse cone set about the normal, in [0, azimuth step):
+// the set repeats every step.
+VCT_FN float diffuse_cone_rotation(uint pixel_x, uint pixel_y, uint frame, DiffuseConeBlock b) {
   uint h = hash_combine(hash_combine(pixel_x, pixel_y), frame);
-  return hash_to_unit(h) * (0.5f * SH_PI);  // the set repeats every 90 degrees
+  return hash_to_unit(h) * b.shape.z;
 }
 
 // Specular cone aperture (full angle, radians) from perceptual roughness. We use the width of the

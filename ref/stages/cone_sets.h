@@ -1,4 +1,5 @@
-// The cones the final frame traces at one surface point: the seed's 5 diffuse cones, the specular
+// The cones the final frame traces at one surface point: the diffuse cone set (settings
+// diffuse_cone_count / diffuse_cone_tilt_deg; the seed's is 5 cones at 45 degrees), the specular
 // cone along the reflected view vector and the soft-shadow cone toward a light
 // (docs/pipeline.md, "Diffuse cones", "Specular cone", "Soft shadows"). Inputs in world space;
 // the volume mapping (uniform scale) turns them into texture space without changing directions.
@@ -9,25 +10,34 @@
 
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "shared/vct_shared.h"
 #include "stages/cone_trace.h"
 
 namespace vct {
 
-constexpr int kDiffuseCones = 5;
+constexpr int kMaxDiffuseCones = sh::MAX_DIFFUSE_CONES;
 
-/// Per-cone results of one diffuse cone set, kept for dumps and --explain.
+/// The shared block of the diffuse cone set (count, sin/cos of the tilt, azimuth step, weights),
+/// computed once on the host from the settings; both backends trace from exactly these floats.
+/// With the defaults (5 cones, 45 degrees) it reproduces the seed's constants bit for bit.
+/// Throws InputError for a count outside 1..kMaxDiffuseCones or a tilt outside (0, 90).
+sh::DiffuseConeBlock diffuse_cone_block(const VctSettings& s);
+
+/// Per-cone results of one diffuse cone set, kept for dumps and --explain (entries >= count unused).
 struct DiffuseConeSet {
-  vec3 radiance{0.0f};                      // weighted combination (what the frame uses)
-  std::array<vec4, kDiffuseCones> cones{};  // each cone's accumulated (rgb, opacity)
-  std::array<Cone, kDiffuseCones> geometry{};
+  int count = 0;
+  vec3 radiance{0.0f};                         // weighted combination (what the frame uses)
+  std::array<vec4, kMaxDiffuseCones> cones{};  // each cone's accumulated (rgb, opacity)
+  std::array<Cone, kMaxDiffuseCones> geometry{};
+  std::array<float, kMaxDiffuseCones> weights{};
 };
 
 /// Traces the diffuse cone set at world point p with unit normal n, rotated by `rotation` radians
 /// about n. `min_lod` > 0 for multibounce (previous frame's mips at level >= 1).
-/// `records`, if given, receives every cone's samples.
+/// `records`, if given, is resized to the cone count and receives every cone's samples.
 DiffuseConeSet trace_diffuse_cones(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s,
                                    const vec3& p, const vec3& n, float rotation, float min_lod = 0.0f,
-                                   std::array<std::vector<ConeSample>, kDiffuseCones>* records = nullptr);
+                                   std::vector<std::vector<ConeSample>>* records = nullptr);
 
 /// The cone rotation of pixel (x, y) (row 0 = top) for this frame, or 0 when rotation is off.
 float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y);

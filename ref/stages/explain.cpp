@@ -51,13 +51,12 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
   const GBuffer& g = f.gbuffer;
   const vec3 p = g.position.rgb(x, y), n = g.normal.rgb(x, y);
   std::vector<TracedCone> cones;
-  std::array<std::vector<ConeSample>, kDiffuseCones> records;
+  std::vector<std::vector<ConeSample>> records;
   const DiffuseConeSet set =
       trace_diffuse_cones(f.mips, scene.volume, s, p, n, diffuse_rotation_for_pixel(s, x, y), 0.0f, &records);
-  for (int i = 0; i < kDiffuseCones; ++i) {
-    cones.push_back({"diffuse", i, set.geometry[size_t(i)],
-                     sh::diffuse_cone_weight(i, s.diffuse_weighting == DiffuseWeighting::Cosine),
-                     set.cones[size_t(i)], std::move(records[size_t(i)])});
+  for (int i = 0; i < set.count; ++i) {
+    cones.push_back({"diffuse", i, set.geometry[size_t(i)], set.weights[size_t(i)], set.cones[size_t(i)],
+                     std::move(records[size_t(i)])});
   }
   TracedCone spec{"specular", 0, specular_cone(scene.volume, p, n, view_vector(scene, p), g.material.at(x, y, 1)),
                   1.0f, vec4(0.0f), {}};
@@ -81,9 +80,14 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
 vec3 cone_colour(const TracedCone& c) {
   if (c.kind == "specular") return vec3(1.0f, 0.2f, 1.0f);
   if (c.kind == "shadow") return vec3(1.0f, 1.0f, 0.2f);
-  static const vec3 diffuse[kDiffuseCones] = {vec3(0.2f, 1.0f, 0.2f), vec3(0.2f, 0.6f, 1.0f), vec3(0.2f, 1.0f, 1.0f),
-                                              vec3(1.0f, 0.5f, 0.1f), vec3(1.0f, 0.2f, 0.2f)};
-  return diffuse[c.index % kDiffuseCones];
+  // Normal cone green, then one colour per tilted cone in azimuth order; the first four are the
+  // seed set's (blue, cyan, orange, red), so its pictures are unchanged.
+  static const vec3 diffuse[kMaxDiffuseCones] = {
+      vec3(0.2f, 1.0f, 0.2f), vec3(0.2f, 0.6f, 1.0f), vec3(0.2f, 1.0f, 1.0f), vec3(1.0f, 0.5f, 0.1f),
+      vec3(1.0f, 0.2f, 0.2f), vec3(0.7f, 0.4f, 1.0f), vec3(1.0f, 0.9f, 0.6f), vec3(0.6f, 0.9f, 0.3f),
+      vec3(1.0f, 0.6f, 0.8f), vec3(0.4f, 0.8f, 0.7f), vec3(0.9f, 0.7f, 0.3f), vec3(0.5f, 0.5f, 1.0f),
+      vec3(0.8f, 0.3f, 0.5f), vec3(0.6f, 1.0f, 0.8f), vec3(1.0f, 0.4f, 0.0f), vec3(0.7f, 0.7f, 0.7f)};
+  return diffuse[size_t(c.index) % size_t(kMaxDiffuseCones)];
 }
 
 struct SliceView {

@@ -12,10 +12,8 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
   out.diffuse = Image(w, h, 3);
   out.specular = Image(w, h, 3);
   out.diffuse.channel_names = out.specular.channel_names = {"R", "G", "B"};
-  for (auto& img : out.diffuse_cones) {
-    img = Image(w, h, 4);
-    img.channel_names = {"R", "G", "B", "A"};
-  }
+  out.diffuse_cones.assign(size_t(sh::diffuse_cone_count(diffuse_cone_block(s))), Image(w, h, 4));
+  for (auto& img : out.diffuse_cones) img.channel_names = {"R", "G", "B", "A"};
   parallel_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
@@ -25,7 +23,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
         const DiffuseConeSet set =
             trace_diffuse_cones(mips, scene.volume, s, p, n, diffuse_rotation_for_pixel(s, x, y));
         out.diffuse.set_rgb(x, y, set.radiance);
-        for (int i = 0; i < kDiffuseCones; ++i) {
+        for (int i = 0; i < set.count; ++i) {
           float* px = out.diffuse_cones[size_t(i)].pixel(x, y);
           for (int c = 0; c < 4; ++c) px[c] = set.cones[size_t(i)][c];
         }

@@ -2,7 +2,7 @@
 // (docs/pipeline.md, "Diffuse cones", "Specular cone"). One pixel is one independent work item.
 #pragma once
 
-#include <array>
+#include <vector>
 
 #include "core/image.h"
 #include "core/settings.h"
@@ -15,7 +15,7 @@ namespace vct {
 struct IndirectImages {
   Image diffuse;   // 3: weighted diffuse cone radiance (cosine mode: E/pi estimate)
   Image specular;  // 3: specular cone radiance
-  std::array<Image, kDiffuseCones> diffuse_cones;  // 4 each: every cone's (rgb, opacity)
+  std::vector<Image> diffuse_cones;  // one per cone of the set (diffuse_cone_count), 4 each: (rgb, opacity)
 };
 
 /// Disabled cone sets (settings.diffuse_cones / specular_cones false) give zero images.

@@ -33,13 +33,17 @@ STAGES = [
      "levels as they widen.",
      ["anisotropic"], None),
     ("explain", "Cones of one pixel", [],
-     "One pixel's cones drawn over the grid: five diffuse cones around the normal (cosine-weighted) and "
-     "one specular cone along the reflected view direction. Each step samples the mip level whose voxel "
-     "matches the cone's diameter and accumulates front to back until opaque.",
-     ["diffuse_aperture_deg", "cone_quality", "cone_offset_voxels", "max_distance", "diffuse_weighting"], None),
+     "One pixel's cones drawn over the grid: the diffuse cone set around the normal (one along it and "
+     "diffuse_cone_count - 1 tilted by diffuse_cone_tilt_deg, evenly spaced in azimuth; the seed's set is "
+     "5 at 45 degrees; cosine-weighted) and one specular cone along the reflected view direction. Each "
+     "step samples the mip level whose voxel matches the cone's diameter and accumulates front to back "
+     "until opaque.",
+     ["diffuse_cone_count", "diffuse_cone_tilt_deg", "diffuse_aperture_deg", "cone_quality", "cone_offset_voxels",
+      "max_distance", "diffuse_weighting"], None),
     ("indirect_diffuse", "Indirect diffuse", ["image.indirect_diffuse", "image.diffuse_term"],
      "Incident radiance gathered by the diffuse cones; the final image adds kd x albedo x this term.",
-     ["diffuse_cones", "diffuse_aperture_deg", "random_rotation"], "indirect_cones"),
+     ["diffuse_cones", "diffuse_cone_count", "diffuse_cone_tilt_deg", "diffuse_aperture_deg", "random_rotation"],
+     "indirect_cones"),
     ("specular", "Indirect specular", ["image.indirect_specular", "image.specular_term"],
      "One cone along the reflected view vector, its aperture from the roughness; the final image adds F x this term.",
      ["specular_cones"], None),

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -64,11 +65,42 @@ TEST(RenderCli, BuiltinSceneWritesTheRunDirectory) {
   EXPECT_FALSE(ex["cones"][0]["samples"].empty());
 }
 
+TEST(RenderCli, ConeCountAndTiltReachDumpsAndExplain) {
+  const std::filesystem::path dir = test::temp_dir() / "render_cones";
+  const Result r = vct(std::string("render ") + kSmall + " --cone-count 9 --cone-tilt 60 --dump --explain 20,20 --out '" +
+                       dir.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "diffuse_cone_8.exr"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "diffuse_cone_9.exr"));
+  const nlohmann::json run = nlohmann::json::parse(slurp((dir / "run.json").string()));
+  EXPECT_EQ(run["settings"]["vct"]["diffuse_cone_count"], 9);
+  EXPECT_EQ(run["settings"]["vct"]["diffuse_cone_tilt_deg"], 60.0);
+  const nlohmann::json ex = nlohmann::json::parse(slurp((dir / "explain_20_20.json").string()));
+  ASSERT_TRUE(ex["covered"].get<bool>());
+  int diffuse = 0;
+  double weights = 0.0;
+  for (const auto& c : ex["cones"]) {
+    if (c["kind"] != "diffuse") continue;
+    ++diffuse;
+    weights += c["weight"].get<double>();
+    const auto& d = c["direction"];
+    const double len = std::sqrt(d[0].get<double>() * d[0].get<double>() + d[1].get<double>() * d[1].get<double>() +
+                                 d[2].get<double>() * d[2].get<double>());
+    EXPECT_NEAR(len, 1.0, 1e-5);
+  }
+  EXPECT_EQ(diffuse, 9);
+  EXPECT_NEAR(weights, 1.0, 1e-6);  // cosine weights: 1/T and cos 60/T, T = 1 + 8 cos 60 = 5
+  EXPECT_NEAR(ex["cones"][0]["weight"].get<double>(), 0.2, 1e-7);
+  EXPECT_NEAR(ex["cones"][1]["weight"].get<double>(), 0.1, 1e-7);
+}
+
 TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
   const std::string out = " --out '" + (test::temp_dir() / "render_bad").string() + "'";
   for (const std::string& args : {std::string("render --explain 5") + out, std::string("render --light-model nope") + out,
                                  std::string("render --explain 9999,1 ") + kSmall + out,
-                                 std::string("render /no/such/scene.gltf") + out}) {
+                                 std::string("render /no/such/scene.gltf") + out,
+                                 std::string("render --cone-count 17 ") + kSmall + out,
+                                 std::string("render --cone-tilt 90 ") + kSmall + out}) {
     const Result r = vct(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;

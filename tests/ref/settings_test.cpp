@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -59,6 +62,40 @@ TEST(Settings, ValidationRejectsNonPowerOfTwoGrid) {
   EXPECT_THROW(validate_settings(s), InputError);
   s.vct.grid = 128;
   EXPECT_NO_THROW(validate_settings(s));
+}
+
+TEST(Settings, DiffuseConeSetRoundTripsAndIsRangeChecked) {
+  Settings s;
+  EXPECT_EQ(s.vct.diffuse_cone_count, 5);  // the seed's set
+  EXPECT_EQ(s.vct.diffuse_cone_tilt_deg, 45.0f);
+  s.vct.diffuse_cone_count = 9;
+  s.vct.diffuse_cone_tilt_deg = 60.0f;
+  const Settings back = nlohmann::json(s).get<Settings>();
+  EXPECT_EQ(back.vct.diffuse_cone_count, 9);
+  EXPECT_EQ(back.vct.diffuse_cone_tilt_deg, 60.0f);
+  EXPECT_NO_THROW(validate_settings(back));
+  const auto refused = [](int count, float tilt, const char* key) {
+    Settings bad;
+    bad.vct.diffuse_cone_count = count;
+    bad.vct.diffuse_cone_tilt_deg = tilt;
+    try {
+      validate_settings(bad);
+      ADD_FAILURE() << "expected InputError for " << count << " cones at " << tilt;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  refused(0, 45.0f, "diffuse_cone_count");
+  refused(17, 45.0f, "diffuse_cone_count");
+  refused(5, 0.0f, "diffuse_cone_tilt_deg");
+  refused(5, 90.0f, "diffuse_cone_tilt_deg");
+  refused(5, std::nanf(""), "diffuse_cone_tilt_deg");
+  for (int count : {1, 16}) {
+    Settings ok;
+    ok.vct.diffuse_cone_count = count;
+    ok.vct.diffuse_cone_tilt_deg = 89.5f;
+    EXPECT_NO_THROW(validate_settings(ok)) << count;
+  }
 }
 
 }  // namespace vct
