@@ -58,10 +58,12 @@ uint64_t voxel_bytes(const VctSettings& v) {
 uint64_t image_bytes(const VctSettings& v) {
   const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
   const uint64_t shadow = uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;  // float depth
-  // G-buffer 21 floats (84 B); FrameImages: 8 RGB float images (96 B), the 5 RGBA diffuse cone
-  // images (80 B) and their source in IndirectImages while they are copied (80 B; the composite
-  // images do not exist yet then, so this is 60 B/pixel high); the soft-shadow visibility.
-  const uint64_t per_pixel = 84 + 96 + 80 + 80 + (v.soft_shadows ? 4 : 0);
+  // G-buffer 21 floats (84 B); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
+  // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
+  // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
+  // the soft-shadow visibility.
+  const uint64_t cone_images = 2 * 16 * uint64_t(v.diffuse_cones ? v.diffuse_cone_count : 0);
+  const uint64_t per_pixel = 84 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
   return shadow + pixels * per_pixel;
 }
 
@@ -78,11 +80,10 @@ MemoryEstimate estimate_memory(const Settings& s) {
   e.baseline = kProcessBaseline;
   e.voxels = voxel_bytes(v);
   e.images = image_bytes(v);
-  // VisibilityBuffer: depth, triangle id, barycentrics, facing (21 B/pixel), for each shadow map
-  // and then for the G-buffer; freed when each is done.
-  const uint64_t shadow_pixels = uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
-  const uint64_t camera_pixels = uint64_t(v.width) * uint64_t(v.height);
-  e.raster_scratch = 21 * (shadow_pixels > camera_pixels ? shadow_pixels : camera_pixels);
+  // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing (21 B/pixel), freed
+  // when the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
+  // the map itself, counted in the images.
+  e.raster_scratch = 21 * uint64_t(v.width) * uint64_t(v.height);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel.
   e.path_tracer = uint64_t(s.pt.width) * uint64_t(s.pt.height) * 16 * 8;
   return e;
@@ -113,7 +114,8 @@ void check_memory_budget(const Settings& s, uint64_t available) {
   const MemoryEstimate e = estimate_memory(s);
   if (e.total() <= available) return;
   const VctSettings& v = s.vct;
-  throw InputError("", "settings need about " + format_bytes(e.total()) + " (grid " + std::to_string(v.grid) + "^3" +
+  throw InputError("", "settings need about " + format_bytes(e.total()) + " (process " + format_bytes(e.baseline) +
+                           "; grid " + std::to_string(v.grid) + "^3" +
                            (v.anisotropic ? " anisotropic" : "") + ": " + format_bytes(e.voxels) + "; images " +
                            std::to_string(v.width) + "x" + std::to_string(v.height) + " and shadow map " +
                            std::to_string(v.shadow_map_size) + "^2: " + format_bytes(e.images) + "; path tracer " +

@@ -18,7 +18,7 @@ struct MemoryEstimate {
   uint64_t voxels = 0;    // peak of injection + mips: grids, mip pyramids (two with multibounce),
                           // kept multibounce frames, occupancy volumes, fragment lists
   uint64_t images = 0;    // shadow maps, G-buffer, frame component images
-  uint64_t raster_scratch = 0;  // visibility buffer of the shadow-map / G-buffer rasterizer
+  uint64_t raster_scratch = 0;  // the G-buffer rasterizer's visibility buffer
   uint64_t path_tracer = 0;     // path tracer accumulation and AOV images
   /// The rasterizer's scratch is freed before voxelization starts, so only the larger counts.
   uint64_t total() const {

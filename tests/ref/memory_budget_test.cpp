@@ -33,12 +33,30 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   EXPECT_EQ(e.path_tracer, 100ull * 16 * 8);
   EXPECT_EQ(e.baseline, 136ull << 20);
   EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
-  // A large shadow map's visibility buffer outweighs this small grid; only the larger counts.
+  // Shadow maps are rasterized depth-only: a large map adds its floats, no scratch.
   s.vct.shadow_map_size = 2048;
   const MemoryEstimate big_map = estimate_memory(s);
-  EXPECT_EQ(big_map.raster_scratch, 2048ull * 2048 * 21);
-  EXPECT_GT(big_map.raster_scratch, big_map.voxels);
-  EXPECT_EQ(big_map.total(), big_map.baseline + big_map.raster_scratch + big_map.images + big_map.path_tracer);
+  EXPECT_EQ(big_map.raster_scratch, 100ull * 100 * 21);
+  EXPECT_EQ(big_map.images, 2048ull * 2048 * 4 + 100ull * 100 * 340);
+  // A large image's visibility buffer outweighs a small grid; only the larger counts.
+  s.vct.grid = 16;
+  s.vct.width = s.vct.height = 2048;
+  const MemoryEstimate big_image = estimate_memory(s);
+  EXPECT_EQ(big_image.raster_scratch, 2048ull * 2048 * 21);
+  EXPECT_GT(big_image.raster_scratch, big_image.voxels);
+  EXPECT_EQ(big_image.total(), big_image.baseline + big_image.raster_scratch + big_image.images + big_image.path_tracer);
+}
+
+// Every diffuse cone keeps an RGBA float image, twice while it is copied into the frame.
+TEST(MemoryBudget, ConeImagesFollowTheConeCount) {
+  Settings s;
+  s.vct.width = s.vct.height = 10;
+  s.vct.diffuse_cone_count = 16;
+  const uint64_t sixteen = estimate_memory(s).images;
+  s.vct.diffuse_cone_count = 5;
+  EXPECT_EQ(sixteen - estimate_memory(s).images, 100ull * 11 * 2 * 16);
+  s.vct.diffuse_cones = false;
+  EXPECT_EQ(estimate_memory(s).images, uint64_t(s.vct.shadow_map_size) * s.vct.shadow_map_size * 4 + 100ull * 180);
 }
 
 // Multibounce keeps two mip pyramids (or two grids) and, while small, every earlier frame.
