@@ -18,28 +18,23 @@ vec3 intensity_of(const sh::ParticleState& p) {
 
 ParticleLights::ParticleLights(const Scene& scene, const ParticleOptions& opt) {
   if (!opt.enabled) return;
-  double total = 0.0;
   std::vector<double> w;
   for (const sh::ParticleState& p : particles_at(scene, opt.time)) {
     const double lum = double(luminance(intensity_of(p)));
     if (!(lum > 0.0)) continue;
     particles_.push_back(p);
     w.push_back(lum);
-    total += lum;
   }
-  double acc = 0.0;
-  for (double x : w) cdf_.push_back((acc += x) / total);
-  if (!cdf_.empty()) cdf_.back() = 1.0;
+  pick_ = AliasTable(w);
 }
 
 ParticleLights::Sample ParticleLights::sample(float u) const {
   Sample s;
   if (particles_.empty()) return s;
-  const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u)) - cdf_.begin()),
-                            particles_.size() - 1);
+  const size_t i = pick_.sample(u);
   s.position = vec3(particles_[i].position_radius);
   s.intensity = intensity_of(particles_[i]);
-  s.pmf = float(cdf_[i] - (i > 0 ? cdf_[i - 1] : 0.0));
+  s.pmf = pick_.pmf(i);
   return s;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/image.h"
 #include "core/math.h"
+#include "pt/alias_table.h"
 #include "pt/embree_scene.h"
 #include "scene/scene.h"
 #include "shared/vct_shared.h"
@@ -42,7 +43,7 @@ class ParticleLights {
 
  private:
   std::vector<sh::ParticleState> particles_;
-  std::vector<double> cdf_;
+  AliasTable pick_;  // by luminance of the intensity
 };
 
 }  // namespace vct::pt

@@ -31,6 +31,7 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
 namespace {
 
 int wrap_index(int i, int size, Wrap mode) {
+  if (i >= 0 && i < size) return i;  // every mode leaves texels inside the image alone
   switch (mode) {
     case Wrap::ClampToEdge:
       return std::clamp(i, 0, size - 1);
