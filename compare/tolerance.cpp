@@ -15,6 +15,14 @@ bool is_cone_traced(const std::string& stage) {
          stage == "image.specular_term" || stage == "image.soft_shadow" || stage == "image.final";
 }
 
+// Edge ties, as a share of the pixels the edge map flags (image_edges.h). Measured with GL
+// (llvmpipe) against the reference on the built-in scene at 32^2..512^2 and demo_room from 64^2:
+// legitimate ties reach 1.2% of the flagged pixels (image.direct, shadow-test ties); a one-pixel
+// shift that shows only at edges puts >= 15% of them beyond the bound, half the edge pixels wrong
+// 50%. 2.5% is what the former shares of all pixels (0.5% raster, 1% shading) amounted to at 64^2
+// on the built-in scene (docs/compare.md, "Edges").
+constexpr double kEdgeTieFraction = 0.025;
+
 ImageModel image_model(const std::string& stage) {
   ImageModel m;
   if (stage.rfind("shadow_map", 0) == 0 || stage == "gbuffer.depth") {
@@ -22,40 +30,40 @@ ImageModel image_model(const std::string& stage) {
     // arithmetic (plane equations evaluated far from the vertices lose bits), so allow 2^-14
     // (6.1e-5), 1/8 of the default constant shadow bias (5e-4): a
     // difference inside the bound cannot flip a shadow test except at exact ties.
-    m = {"d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, 0.005, 0.0,
-         "|dz| <= 2^-14 + 2^-8 (|dz/dx|+|dz/dy|) (subpixel snapping); edge texels (coverage ties, top-left rule) up to 0.5% -> warn"};
+    m = {"d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, kEdgeTieFraction, 0.0,
+         "|dz| <= 2^-14 + 2^-8 (|dz/dx|+|dz/dy|) (subpixel snapping); ties (coverage, fill rule) on up to 2.5% of edge texels -> warn"};
     m.slope_factor = std::ldexp(1.0, -8);
   } else if (stage == "gbuffer.coverage") {
-    m = {"coverage-exact", 0.0, 0.0, 0.0, 0.005, 0.0, "exact; edge pixels (fill-rule ties) up to 0.5% -> warn"};
+    m = {"coverage-exact", 0.0, 0.0, 0.0, kEdgeTieFraction, 0.0, "exact; fill-rule ties on up to 2.5% of edge pixels -> warn"};
   } else if (stage == "gbuffer.position") {
-    m = {"interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, 0.01, 0.001,
-         "|d| <= 1e-4 + 2^-12 |ref| + 2^-8 (|d/dx|+|d/dy|) (float interpolation, subpixel snapping); edges up to 1%"};
+    m = {"interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, kEdgeTieFraction, 0.001,
+         "|d| <= 1e-4 + 2^-12 |ref| + 2^-8 (|d/dx|+|d/dy|) (float interpolation, subpixel snapping); ties on up to 2.5% of edge pixels"};
     m.slope_factor = std::ldexp(1.0, -8);
   } else if (stage == "gbuffer.normal") {
     // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice the
     // error) and renormalising a filtered (shortened) tangent-space normal scales it further.
-    m = {"normal-map-8bit-weights", std::ldexp(1.0, -6), std::ldexp(1.0, -7), 0.0, 0.005, 0.0,
-         "|d| <= 2^-6 + 2^-7 |ref| (8-bit sub-texel + LOD weights on [-1,1] normal-map texels, renormalised); edges up to 0.5%"};
+    m = {"normal-map-8bit-weights", std::ldexp(1.0, -6), std::ldexp(1.0, -7), 0.0, kEdgeTieFraction, 0.0,
+         "|d| <= 2^-6 + 2^-7 |ref| (8-bit sub-texel + LOD weights on [-1,1] normal-map texels, renormalised); ties on up to 2.5% of edge pixels"};
   } else if (stage.rfind("gbuffer.", 0) == 0) {
     // Textured attributes: bilinear/trilinear weights with 8 sub-texel bits (D3D11 7.18.16.1,
     // dEQP LookupPrecision) and an 8-bit mip blend: |d| <= (2+1)*2^-9*range + 8-bit texel step.
-    m = {"texture-8bit-weights", std::ldexp(1.0, -7), std::ldexp(1.0, -7), 0.0, 0.005, 0.0,
-         "|d| <= 2^-7 + 2^-7 |ref| (8-bit sub-texel + LOD weights); edges up to 0.5%"};
+    m = {"texture-8bit-weights", std::ldexp(1.0, -7), std::ldexp(1.0, -7), 0.0, kEdgeTieFraction, 0.0,
+         "|d| <= 2^-7 + 2^-7 |ref| (8-bit sub-texel + LOD weights); ties on up to 2.5% of edge pixels"};
   } else if (stage == "image.direct" || stage == "image.emission") {
     // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
     // ties flip at shadow edges.
-    m = {"shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), 0.01, 0.001,
-         "|d| <= 2^-6 |ref| + 2^-10 mean|ref| (G-buffer bound through the BRDF); shadow/silhouette edges up to 1%"};
+    m = {"shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), kEdgeTieFraction, 0.001,
+         "|d| <= 2^-6 |ref| + 2^-10 mean|ref| (G-buffer bound through the BRDF); shadow/silhouette ties on up to 2.5% of edge pixels"};
   } else if (stage == "image.soft_shadow") {
-    m = {"cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, 0.01, 0.001,
-         "|d| <= 2^-5 (8-bit weights over the cone's samples); edges up to 1%"};
+    m = {"cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, kEdgeTieFraction, 0.001,
+         "|d| <= 2^-5 (8-bit weights over the cone's samples); ties on up to 2.5% of edge pixels"};
   } else {
     // Cone-traced images: each fetch has weights with 8 sub-texel bits per axis plus an 8-bit
     // LOD fraction: per fetch error <= 4 * 2^-9 = 2^-7 of the local texel maximum; the front-to-
     // back sum weights fetches by (1-a) <= 1, so with a local max/mean contrast up to 4 the
     // image bound is 2^-5 |ref|, plus 2^-8 of the image mean for near-black pixels.
-    m = {"filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), 0.01, 0.001,
-         "|d| <= 2^-5 |ref| + 2^-8 mean|ref| (8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1); edges up to 1%"};
+    m = {"filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), kEdgeTieFraction, 0.001,
+         "|d| <= 2^-5 |ref| + 2^-8 mean|ref| (8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1); ties on up to 2.5% of edge pixels"};
   }
   return m;
 }

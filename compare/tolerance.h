@@ -14,9 +14,11 @@ struct ImageModel {
   double rel = 0.0;     // relative part (times |reference|)
   double abs_of_mean = 0.0;  // extra absolute part, times mean |reference| (scale of the image)
   // Pixels beyond the bound are tolerated where rasterisation may legitimately differ (coverage
-  // and shadow-test ties at edges): at most this fraction of all pixels -> warn, more -> fail.
-  double edge_fraction = 0.0;
-  // Beyond-bound pixels away from edges: up to this fraction -> warn, more -> fail.
+  // and shadow-test ties at edges): at most this fraction of the pixels the edge map flags
+  // (image_edges.h) -> warn, more -> fail. A share of the flagged pixels, not of all pixels, so it
+  // means the same at every resolution (docs/compare.md, "Edges").
+  double edge_tie_fraction = 0.0;
+  // Beyond-bound pixels away from edges: up to this fraction of all pixels -> warn, more -> fail.
   double interior_fraction = 0.0;
   std::string bound_text;  // for run.json / the report
   // Rasterised attributes: vertices snap to a 2^-8 pixel grid (GL_SUBPIXEL_BITS = 8 on llvmpipe
