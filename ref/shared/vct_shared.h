@@ -33,8 +33,8 @@ VCT_CONST int MAX_DIFFUSE_CONES = 16;  // settings.diffuse_cone_count is 1..this
 // Schlick Fresnel, Schlick-GGX G with k = (roughness+1)^2/8 (the Disney/UE4 remapping).
 
 // D is written with sin^2(theta_h) = |n x h|^2 instead of 1 - (n.h)^2: near the peak of a smooth
-// lobe (alpha^2 ~ 1e-6 at MIN_ROUGHNESS) 1 - (n.h)^2 cancels in float and D came out ~8 % too
-// high; the cross product keeps full relative precision. Same function, better conditioned:
+// lobe (alpha^2 ~ 1e-6 at MIN_ROUGHNESS) 1 - (n.h)^2 cancels in float and D came out 3-11 % off
+// (and integrated to ~1.08); the cross product keeps full relative precision. Same function, better conditioned:
 // (n.h)^2 (a^2 - 1) + 1 == (n.h)^2 a^2 + sin^2 for unit n, h. h below the surface counts as
 // n.h = 0 (sin^2 = 1), as the old max(n.h, 0) did.
 VCT_FN float ggx_distribution(vec3 n, vec3 h, float roughness) {
