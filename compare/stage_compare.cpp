@@ -94,7 +94,7 @@ void xyz_of(const Volume& v, size_t i, int& x, int& y, int& z) {
 }  // namespace
 
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
-                                 const CompareOptions& opt) {
+                                 const CompareOptions& opt, const Image* texture_slack) {
   StageVerdict v;
   v.stage = stage;
   if (ref.width != test.width || ref.height != test.height) {
@@ -106,6 +106,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   const ImageModel m = image_model(stage);
   v.model = m.name;
   v.bound = m.bound_text;
+  const int slack_ch = texture_slack ? texture_slack_channel(stage, *texture_slack) : -1;
+  const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
+  if (use_slack) v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift)";
   const int ch = std::min(ref.channels, test.channels);
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
@@ -127,6 +130,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
         const double r = ref.at(x, y, c), t = test.at(x, y, c), d = std::abs(t - r);
         double bound = m.abs + m.rel * std::abs(r) + m.abs_of_mean * mean_abs;
         if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
+        if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
         se += d * d;
         v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
         const double ratio = std::isfinite(d) ? d / std::max(bound, 1e-30) : 1e30;
@@ -522,6 +526,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
   CompareOptions opt = opt_in;
   Taint taint, radiance_taint;
   const Image* depth_hint = rs.images.count("gbuffer.depth") ? &rs.images.at("gbuffer.depth") : nullptr;
+  const Image* slack = rs.images.count("gbuffer.texture_slack") ? &rs.images.at("gbuffer.texture_slack") : nullptr;
   for (const std::string& stage : pipeline_order(rs, ts)) {
     const bool r_has = rs.has(stage), t_has = ts.has(stage);
     if (stage == "voxel.occupancy" || stage == "voxel.radiance") {
@@ -553,7 +558,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
     if (rs.images.count(stage)) {
       const bool shadow = stage.rfind("shadow_map", 0) == 0;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               shadow ? nullptr : depth_hint, opt));
+                                               shadow ? nullptr : depth_hint, opt, slack));
     } else if (stage.rfind("mip.", 0) == 0) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {

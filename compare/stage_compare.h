@@ -21,8 +21,11 @@ struct CompareOptions {
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});
 
 /// One image stage (also used for two bare images): `stage` selects the model.
+/// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
+/// bound of the textured G-buffer stages; nullptr = none (bare images, external references).
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
-                                 const Image* edge_hint, const CompareOptions& opt);
+                                 const Image* edge_hint, const CompareOptions& opt,
+                                 const Image* texture_slack = nullptr);
 
 /// Two bare volumes, element-wise with abs/rel bound (vct compare A.nrrd B.nrrd).
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs,

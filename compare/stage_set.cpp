@@ -56,6 +56,7 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   put(set.images, "gbuffer.material", g.material);
   put(set.images, "gbuffer.specular_color", g.specular_color);
   put(set.images, "gbuffer.emission", g.emission);
+  put(set.images, "gbuffer.texture_slack", g.texture_slack);
   put(set.volumes, "voxel.radiance", f.voxels.radiance);
   put(set.volumes, "voxel.fragments", f.voxels.fragments);
   put(set.volumes, "voxel.cas_lo", f.voxels.cas_lo);
@@ -89,7 +90,7 @@ std::string file_stem(const std::string& stage) {
 // Data images (depth, coverage, masks) get a linear preview; radiance a tone-mapped one.
 bool is_data_image(const std::string& stage) {
   return stage.rfind("shadow_map", 0) == 0 || stage == "gbuffer.depth" || stage == "gbuffer.coverage" ||
-         stage == "gbuffer.material" || stage == "image.soft_shadow";
+         stage == "gbuffer.material" || stage == "gbuffer.texture_slack" || stage == "image.soft_shadow";
 }
 }  // namespace
 
@@ -210,8 +211,10 @@ std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {
     for (const auto& kv : s->images) names.insert(kv.first);
     for (const auto& kv : s->volumes) names.insert(kv.first);
   }
-  // Voxel inputs that are not stages of their own are judged inside other stages.
-  for (const char* aux : {"voxel.fragments", "voxel.cas_lo", "voxel.cas_hi", "voxel.conservative"}) names.erase(aux);
+  // Reference inputs that are not stages of their own are judged inside other stages.
+  for (const char* aux : {"voxel.fragments", "voxel.cas_lo", "voxel.cas_hi", "voxel.conservative",
+                          "gbuffer.texture_slack"})
+    names.erase(aux);
   if (names.count("voxel.radiance")) names.insert("voxel.occupancy");
   if (a.volumes.count("voxel.conservative") || b.volumes.count("voxel.conservative")) names.insert("voxel.holes");
   auto rank = [](const std::string& n) -> std::pair<size_t, long> {

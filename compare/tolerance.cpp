@@ -68,6 +68,18 @@ ImageModel image_model(const std::string& stage) {
   return m;
 }
 
+int texture_slack_channel(const std::string& stage, const Image& slack) {
+  static const char* kNames[] = {"normal", "albedo", "material", "emission"};  // TextureSlackChannel order
+  for (int k = 0; k < 4; ++k) {
+    if (stage != std::string("gbuffer.") + kNames[k]) continue;
+    if (int(slack.channel_names.size()) != slack.channels) return k < slack.channels ? k : -1;
+    for (int c = 0; c < slack.channels; ++c)
+      if (slack.channel_names[size_t(c)] == kNames[k]) return c;
+    return -1;
+  }
+  return -1;
+}
+
 VoxelModel voxel_model(const std::string& storage, const std::string& reduction, const std::string& ref_reduction) {
   VoxelModel m;
   if (reduction == "fixed_point" && ref_reduction != "fixed_point") {

@@ -32,6 +32,12 @@ bool is_cone_traced(const std::string& stage);
 
 ImageModel image_model(const std::string& stage);
 
+/// Channel of the reference's texture slack image (GBuffer::texture_slack) that widens `stage`'s
+/// bound, found by its name ("normal", "albedo", "material", "emission": EXR files store channels
+/// sorted by name) or, for an unnamed image, by stages/texture_slack.h's order. -1 for stages
+/// that are not textured or a slack image without that channel.
+int texture_slack_channel(const std::string& stage, const Image& slack);
+
 /// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.
 struct VoxelModel {
   std::string name;  // "fixed-point-exact", "cas-rgba8-interval", "rgba8-quantised", "rgba16f-ulp", "rgba32f-sum"

@@ -3,6 +3,7 @@
 #include "core/parallel.h"
 #include "scene/surface.h"
 #include "stages/raster.h"
+#include "stages/texture_slack.h"
 
 namespace vct {
 
@@ -25,6 +26,8 @@ GBuffer make_gbuffer(int w, int h) {
   g.depth.channel_names = {"Z"};
   g.coverage = Image(w, h, 1);
   g.coverage.channel_names = {"Y"};
+  g.texture_slack = Image(w, h, kSlackChannels);
+  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission"};
   return g;
 }
 }  // namespace
@@ -34,6 +37,7 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
   const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
   GBuffer g = make_gbuffer(w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
   parallel_rows(h, [&](int row) {
     for (int x = 0; x < w; ++x) {
       const size_t i = vb.index(x, row);
@@ -52,6 +56,8 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       g.emission.set_rgb(x, row, m.emission);
       g.depth.at(x, row, 0) = vb.depth[i];
       g.coverage.at(x, row, 0) = 1.0f;
+      const vec4 slack = texture_slack(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], m);
+      for (int c = 0; c < kSlackChannels; ++c) g.texture_slack.at(x, row, c) = slack[c];
     }
   });
   return g;

@@ -34,6 +34,10 @@ struct GBuffer {
   Image emission;   // 3: emitted radiance (factor x texture x strength)
   Image depth;      // 1: window depth [0,1]
   Image coverage;   // 1: 1 where a triangle covers the pixel centre
+  // Reference only (empty from GL): per textured attribute (normal, albedo, material, emission)
+  // how far its value may move under a 2^-8 pixel sample shift (stages/texture_slack.h); the
+  // comparison adds it to those stages' bounds.
+  Image texture_slack;
 };
 
 /// Voxel occupancy and radiance at the base level (level 0, N^3).

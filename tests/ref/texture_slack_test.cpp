@@ -1,0 +1,119 @@
+// The G-buffer's texture slack (stages/texture_slack.h) against hand-computed values: window
+// barycentrics of a plane facing the camera, and the slack of a minified bilinear checkerboard.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/surface.h"
+#include "stage_test_scene.h"
+#include "stages/gbuffer.h"
+#include "stages/texture_slack.h"
+
+namespace vct {
+namespace {
+
+// Camera at the origin looking down -z, yfov 1 rad, square view: at z = -2 the view spans
+// +-2 tan(0.5) = +-1.0926 in x and y.
+void look_down_z(Scene& s) {
+  s.camera.position = vec3(0.0f);
+  s.camera.forward = vec3(0, 0, -1);
+  s.camera.yfov = 1.0f;
+  s.camera.znear = 0.5f;
+  s.camera.zfar = 10.0f;
+}
+
+TEST(TextureSlack, WindowBarycentricsOfAPlaneFacingTheCamera) {
+  Scene s;
+  test::add_triangle(s, {-1, -1, -2}, {1, -1, -2}, {-1, 1, -2}, test::add_material(s, vec3(1.0f)));
+  look_down_z(s);
+  const WindowBarycentrics wb(s.camera.projection(1.0f) * s.camera.view(), 16, 16);
+  glm::dvec2 b;
+  // Window (8, 8) is the view centre: the ray meets (0, 0, -2) = p0 + 0.5 e1 + 0.5 e2.
+  ASSERT_TRUE(wb.at(s, 0, 8.0, 8.0, b));
+  EXPECT_NEAR(b.x, 0.5, 1e-6);
+  EXPECT_NEAR(b.y, 0.5, 1e-6);
+  // Window (12, 4): NDC (0.5, -0.5), world (0.5463, -0.5463, -2): b = ((x+1)/2, (y+1)/2).
+  const double h = 2.0 * std::tan(0.5);  // half extent of the view at z = -2
+  ASSERT_TRUE(wb.at(s, 0, 12.0, 4.0, b));
+  EXPECT_NEAR(b.x, (0.5 * h + 1.0) / 2.0, 1e-6);  // 0.77315
+  EXPECT_NEAR(b.y, (-0.5 * h + 1.0) / 2.0, 1e-6);  // 0.22685
+  // The view's corner (1.0926, 1.0926, -2) lies outside the triangle: extrapolated, b1 + b2 > 1.
+  ASSERT_TRUE(wb.at(s, 0, 16.0, 16.0, b));
+  EXPECT_NEAR(b.x, (h + 1.0) / 2.0, 1e-6);  // 1.04630
+  EXPECT_NEAR(b.y, (h + 1.0) / 2.0, 1e-6);
+}
+
+// A quad at z = -2 wider than the view, u = (x + 2) / 4, with a 2x1 checkerboard (0, 255)
+// repeated `repeats` times across it: bilinear filtering makes a triangle wave of slope 1 per
+// texel between texel centres. Pixels are 2 tan(0.5) * 2 / 16 = 0.136576 world units wide, so
+// rho = 0.136576 / 4 * 2 * repeats texels per pixel, and a shift of s = 2^-8 pixel changes the
+// value by s * rho except within s * rho texels of a texel centre (the wave's kinks).
+struct CheckerView {
+  Scene scene;
+  double rho = 0.0;
+};
+
+CheckerView checker_quad(int repeats, bool albedo) {
+  CheckerView v;
+  Scene& s = v.scene;
+  const uint32_t m = test::add_material(s, vec3(1.0f));
+  test::add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}, {0, 0, 1}, m);
+  for (size_t i = 0; i < s.positions.size(); ++i) s.uv0[i] = vec2((s.positions[i].x + 2.0f) / 4.0f, 0.5f);
+  Texture t;
+  t.width = 2;
+  t.height = 1;
+  t.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
+  s.textures.push_back(t);
+  TextureRef& r = albedo ? s.materials[m].base_color_texture : s.materials[m].metallic_roughness_texture;
+  r.texture = 0;
+  r.transform.scale = vec2(float(repeats), 1.0f);
+  s.materials[m].metallic_factor = 1.0f;
+  s.materials[m].roughness_factor = 1.0f;
+  look_down_z(s);
+  s.volume = fit_volume(s.bounds);
+  v.rho = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * 2.0 * double(repeats);
+  return v;
+}
+
+void check_checker(bool albedo) {
+  const CheckerView v = checker_quad(64, albedo);  // rho = 4.37042 texels per pixel
+  ASSERT_NEAR(v.rho, 4.37042, 1e-5);
+  VctSettings st;
+  st.width = st.height = 16;
+  const GBuffer g = render_gbuffer(v.scene, st);
+  const int ch = albedo ? kSlackAlbedo : kSlackMaterial;
+  const double expected = v.rho / 256.0;  // 0.0170720
+  int away_from_kinks = 0;
+  for (int row = 0; row < 16; ++row)
+    for (int x = 0; x < 16; ++x) {
+      ASSERT_EQ(g.coverage.at(x, row, 0), 1.0f);
+      const float slack = g.texture_slack.at(x, row, ch);
+      EXPECT_EQ(g.texture_slack.at(x, row, kSlackNormal), 0.0f);  // no normal map
+      EXPECT_EQ(g.texture_slack.at(x, row, kSlackEmission), 0.0f);
+      EXPECT_LE(slack, expected * 1.001) << x << "," << row;
+      // Texel coordinate of the centre (minus the texel-centre offset): distance to the nearest kink.
+      const double u = ((double(x) + 0.5) / 8.0 - 1.0) * std::tan(0.5) * 2.0;
+      const double t = (u + 2.0) / 4.0 * 2.0 * 64.0 - 0.5;
+      if (std::abs(t - std::round(t)) < 2.0 * expected) continue;
+      ++away_from_kinks;
+      EXPECT_NEAR(slack, expected, expected * 0.01) << x << "," << row;
+    }
+  EXPECT_GT(away_from_kinks, 16 * 12);
+}
+
+TEST(TextureSlack, MinifiedCheckerboardMovesByTheShiftTimesTexelsPerPixel) {
+  check_checker(false);  // roughness = G of the linear metallic-roughness texture
+  check_checker(true);   // sRGB base colour: 0 and 255 decode to 0 and 1, the same wave
+}
+
+TEST(TextureSlack, UntexturedMaterialsHaveNone) {
+  CheckerView v = checker_quad(64, true);
+  v.scene.materials[0].base_color_texture.texture = -1;
+  VctSettings st;
+  st.width = st.height = 8;
+  const GBuffer g = render_gbuffer(v.scene, st);
+  for (float s : g.texture_slack.data) EXPECT_EQ(s, 0.0f);
+}
+
+}  // namespace
+}  // namespace vct
