@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.h"
 #include "core/parallel.h"
 #include "io/run_dir.h"
 #include "scene/gltf_loader.h"
@@ -21,20 +22,9 @@
 #include "stages/voxelize.h"
 
 using namespace vct;
+using vct::bench::best_ms;
 
 namespace {
-
-/// Best of `repeat` runs of f, in ms (the least disturbed run on a shared machine).
-template <class F>
-double best_ms(int repeat, F&& f) {
-  double best = 1e300;
-  for (int r = 0; r < repeat; ++r) {
-    Stopwatch w;
-    f();
-    best = std::min(best, w.ms());
-  }
-  return best;
-}
 
 /// Splits every triangle into four at its edge midpoints, `levels` times: 4^levels as many
 /// triangles over the same surface, so the voxels covered stay the same.

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <vector>
 
+#include "bench_timing.h"
 #include "core/parallel.h"
 #include "io/run_dir.h"
 #include "scene/gltf_loader.h"
@@ -17,19 +18,9 @@
 #include "stages/shadow_map.h"
 
 using namespace vct;
+using vct::bench::best_ms;
 
 namespace {
-
-template <class F>
-double best_ms(int repeat, F&& f) {
-  double best = 1e300;
-  for (int i = 0; i < repeat; ++i) {
-    Stopwatch w;
-    f();
-    best = std::min(best, w.ms());
-  }
-  return best;
-}
 
 // Covered pixel centres summed over all triangles (fragments before the depth test).
 int64_t fragment_count(const BinnedTriangles& b, int height) {
