@@ -139,6 +139,19 @@ void write_stage_set(const std::string& dir, StageSet& set) {
 }
 
 namespace {
+// A canonical stage name has one kind (docs/external_format.md, "Stage names"): comparisons and
+// --scene look a stage up among the images or the volumes by its name, so an image listed as
+// mip.iso.2 or a volume as gbuffer.position would be missed where it is needed (a crash before:
+// fuzz/regressions/scene_compare/).
+void check_kind_of_name(const std::string& manifest, const std::string& name, const std::string& kind) {
+  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
+  const bool image = starts("shadow_map.") || starts("gbuffer.") || starts("image.");
+  const bool volume = starts("voxel.") || starts("mip.");
+  if ((image && kind != "image") || (volume && kind != "volume"))
+    throw InputError(manifest, "stage '" + name + "' must be " + (image ? "an image" : "a volume") + ", not kind '" +
+                                   kind + "' (docs/external_format.md, Stage names)");
+}
+
 StageSet read_stage_set_unguarded(const std::string& path) {
   fs::path manifest = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
   if (!fs::exists(manifest)) throw InputError(path, "no vct-stages.json manifest here (docs/external_format.md)");
@@ -172,6 +185,7 @@ StageSet read_stage_set_unguarded(const std::string& path) {
     if (!fs::exists(file)) throw InputError(file, "listed for stage '" + name + "' but missing");
     const std::string ext = fs::path(rel).extension().string();
     const std::string kind = entry.value("kind", ext == ".nrrd" ? "volume" : "image");
+    if (kind == "volume" || kind == "image") check_kind_of_name(manifest.string(), name, kind);
     if (kind == "volume") {
       set.volumes[name] = read_nrrd(file);
     } else if (kind == "image") {

@@ -22,6 +22,8 @@ int mip_levels(int n) {  // GL: levels down to 1^3
 
 int level_size(int n, int level) { return std::max(1, n >> level); }
 
+bool is_volume_stage(const std::string& stage) { return stage.rfind("voxel.", 0) == 0 || stage.rfind("mip.", 0) == 0; }
+
 std::string manifest_of(const StageSet& set) {
   return set.root.empty() ? "test stage set" : (std::filesystem::path(set.root) / "vct-stages.json").string();
 }
@@ -32,6 +34,11 @@ std::string file_of(const StageSet& set, const std::string& stage) {
 }
 
 bool wants_particles(const Scene& scene, const VctSettings& s) { return s.particles && !scene.emitters.empty(); }
+
+// "info" is free-form (docs/external_format.md): an energy list that is not all numbers stays text.
+bool all_numbers(const nlohmann::json& v) {
+  return v.is_array() && std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); });
+}
 
 // Every slot of FrameResult a stage set can fill, by canonical name (stage_set_from_frame's
 // names; shadow maps, mips and the volumes below are handled apart).
@@ -94,7 +101,7 @@ void fill_everything(const StageSet& set, FrameResult& f) {
   for (size_t i = 0; set.images.count("shadow_map." + std::to_string(i)); ++i)
     f.shadow_maps.push_back({set.images.at("shadow_map." + std::to_string(i)), mat4(1.0f)});
   for (const auto& [k, v] : set.info.items()) {
-    if (k == "multibounce_energy" && v.is_array()) f.multibounce_energy = v.get<std::vector<double>>();
+    if (k == "multibounce_energy" && all_numbers(v)) f.multibounce_energy = v.get<std::vector<double>>();
     else f.info[k] = v.is_string() ? v.get<std::string>() : v.dump();
   }
   f.backend = set.backend;
@@ -120,9 +127,11 @@ void fill_mips(const StageSet& set, const VctSettings& s, FrameResult& f) {
     }
 }
 
+// Each input is looked up by kind (an image listed as a volume would leave its slot empty while
+// its pixels are indexed); read_stage_set already refuses such sets, in-memory ones are checked here.
 void require_stages(const StageSet& set, const Scene& scene, const VctSettings& s) {
   for (const std::string& stage : cone_input_stages(scene, s))
-    if (!set.has(stage))
+    if (!(is_volume_stage(stage) ? set.volumes.count(stage) : set.images.count(stage)))
       throw InputError(manifest_of(set), "stage '" + stage +
                                              "' is missing; --scene re-traces the cone stages from the test's own "
                                              "G-buffer, direct light and mips (docs/external_format.md)");

@@ -1,10 +1,13 @@
 // Fuzz inputs turned into files: the readers under test take paths, so each input is written to
-// a per-process scratch directory first. Shared by the fuzz targets and the regression test
-// (tests/ref/fuzz_regression_test.cpp), so a saved crasher is replayed exactly as it was found.
+// a per-process scratch directory first. Shared by the fuzz targets and the regression tests
+// (tests/ref/fuzz_regression_test.cpp, tests/compare/stage_set_fuzz_regression_test.cpp,
+// tests/cli/scene_compare_fuzz_regression_test.cpp), so a saved crasher is replayed exactly as
+// it was found.
 #pragma once
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -47,6 +50,40 @@ inline void write_stage_set_files(const std::string& bytes) {
     std::ofstream(path, std::ios::binary).write(bytes.data() + start, std::streamsize(end - start));
     start = end + sep.size();
   }
+}
+
+/// scene_compare_fuzz: a manifest, then any number of named files, each part after a separator
+/// starting with its file name and a newline (e.g. "gbuffer_normal.exr\n<bytes>"): a whole small
+/// run dir in one input. Names other than [A-Za-z0-9._-]{1,64} not starting with '.' are not
+/// written (they would leave the directory). The directory is emptied first so no file of an
+/// earlier input is read. Returns the directory (holding vct-stages.json).
+inline std::filesystem::path write_named_stage_set(const std::string& bytes) {
+  const auto dir = scratch_dir() / "named_stage_set";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto safe = [](const std::string& name) {
+    if (name.empty() || name.size() > 64 || name[0] == '.') return false;
+    for (char c : name)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) return false;
+    return true;
+  };
+  const std::string sep = kFileSeparator;
+  for (size_t start = 0, part = 0; start <= bytes.size(); ++part) {
+    size_t end = bytes.find(sep, start);
+    if (end == std::string::npos) end = bytes.size();
+    const std::string body = bytes.substr(start, end - start);
+    start = end + sep.size();
+    std::string name = "vct-stages.json";
+    size_t data = 0;
+    if (part > 0) {
+      const size_t nl = body.find('\n');
+      name = body.substr(0, nl);
+      data = nl == std::string::npos ? body.size() : nl + 1;
+    }
+    if (!safe(name)) continue;
+    std::ofstream(dir / name, std::ios::binary | std::ios::trunc).write(body.data() + data, std::streamsize(body.size() - data));
+  }
+  return dir;
 }
 
 /// True for a binary glTF container (its magic), which takes the .glb file path.

@@ -1,8 +1,15 @@
 #!/usr/bin/env python3
-"""Seed corpora for the fuzz targets, written into fuzz/corpus/ (run by scripts/fuzz.sh).
+"""Seed corpora for the fuzz targets, written into fuzz/corpus/.
 gltf: the small committed scenes, minified, plus each as a .glb (buffer moved into the BIN chunk).
-stage_set: a small run dir's manifest (two stages) + a NRRD + an EXR, joined as fuzz_inputs.h says."""
-import base64, json, pathlib, struct, sys
+stage_set: a small run dir's manifest (two stages) + a NRRD + an EXR, joined as fuzz_inputs.h says.
+scene_compare: whole stage sets of the built-in scene at the sizes of scene_compare_steps.h: the ref/
+of two validate runs (`vct render --dump` writes no manifest),
+  vct validate --no-report --width 16 --height 16 --grid 16 --spp 1 --config C --out ISO
+with C = {"vct": {"shadow_map_size": 64}}, and again with "anisotropic": true added (ANISO), joined
+as named files (fuzz_inputs.h: write_named_stage_set): the isotropic set exact (float volumes: its
+frame is A's), the anisotropic one with uint8 (UNORM) volumes to stay small.
+  fuzz/make_seeds.py [RUN_DIR/ref] [--scene-compare ISO/ref ANISO/ref]"""
+import argparse, base64, json, pathlib, struct
 
 root = pathlib.Path(__file__).resolve().parent.parent
 corpus = root / "fuzz" / "corpus"
@@ -46,7 +53,48 @@ def stage_set_seeds(run_dir):
     (out / "manifest_only.bin").write_bytes(json.dumps(small).encode())
 
 
+# The stages kept: what --scene rebuilds the frame from, plus a few the A vs B judgement reads.
+SCENE_COMPARE_STAGES = ["gbuffer.coverage", "gbuffer.depth", "gbuffer.position", "gbuffer.normal",
+                        "gbuffer.albedo", "gbuffer.material", "gbuffer.specular_color", "gbuffer.emission",
+                        "image.direct", "image.indirect_diffuse", "image.final", "shadow_map.0", "voxel.radiance"]
+
+
+def nrrd_as_uint8(data):
+    end = data.index(b"\n\n")
+    header, body = data[:end].decode(), data[end + 2:]
+    assert "type: float" in header and "encoding: raw" in header
+    floats = struct.unpack(f"<{len(body) // 4}f", body[: len(body) // 4 * 4])
+    return (header.replace("type: float", "type: uint8") + "\n\n").encode() + bytes(
+        min(255, max(0, round(v * 255))) for v in floats)
+
+
+def named_stage_set(dump, unorm_volumes):
+    manifest = json.loads((dump / "vct-stages.json").read_text())
+    keep = {n: e for n, e in manifest["stages"].items() if n in SCENE_COMPARE_STAGES or n.startswith("mip.")}
+    manifest["stages"] = {n: {"file": e["file"], "kind": e["kind"]} for n, e in keep.items()}
+    out = json.dumps(manifest, separators=(",", ":")).encode()
+    for e in keep.values():
+        data = (dump / e["file"]).read_bytes()
+        if unorm_volumes and e["kind"] == "volume":
+            data = nrrd_as_uint8(data)
+        out += SEP + e["file"].encode() + b"\n" + data
+    return out
+
+
+def scene_compare_seeds(iso, aniso):
+    out = corpus / "scene_compare"
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "cornell_16_iso.bin").write_bytes(named_stage_set(iso, False))
+    (out / "cornell_16_aniso_unorm.bin").write_bytes(named_stage_set(aniso, True))
+
+
 if __name__ == "__main__":
+    ap = argparse.ArgumentParser()
+    ap.add_argument("run_dir", nargs="?", type=pathlib.Path, help="a validate run's ref/ (stage_set seeds)")
+    ap.add_argument("--scene-compare", nargs=2, type=pathlib.Path, metavar=("ISO", "ANISO"))
+    args = ap.parse_args()
     gltf_seeds()
-    if len(sys.argv) > 1:
-        stage_set_seeds(pathlib.Path(sys.argv[1]))
+    if args.run_dir:
+        stage_set_seeds(args.run_dir)
+    if args.scene_compare:
+        scene_compare_seeds(*args.scene_compare)

@@ -3,7 +3,8 @@
 # and libomp-14-dev (OpenMP for clang) if missing, builds with ASan+UBSan in build-fuzz, and runs
 # each target for SECONDS (default 600) on a working copy of its committed seed corpus.
 # Crashes are written to fuzz/regressions/<target>/ (replayed by the test suite).
-#   scripts/fuzz.sh [SECONDS] [gltf|stage_set]
+# stdout is closed in the targets (-close_fd_mask=1): `vct compare --scene` prints notes per input.
+#   scripts/fuzz.sh [SECONDS] [gltf|stage_set|scene_compare]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECS=${1:-600}
@@ -23,18 +24,20 @@ if [ ! -f build-fuzz/build.ninja ]; then
     -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DVCT_FUZZ=ON -DVCT_SANITIZE=ON -DVCT_BUILD_GL=OFF \
     -DVCT_BUILD_TESTS=OFF -DVCT_BUILD_BENCH=OFF
 fi
-cmake --build build-fuzz -j "$(nproc)" --target gltf_fuzz stage_set_fuzz
+cmake --build build-fuzz -j "$(nproc)" --target gltf_fuzz stage_set_fuzz scene_compare_fuzz
 
-# Seeds: fuzz/corpus/ (committed; fuzz/make_seeds.py RUN_DIR/ref regenerates them).
+# Seeds: fuzz/corpus/ (committed; fuzz/make_seeds.py regenerates them, its docstring says from what).
 export ASAN_OPTIONS="detect_leaks=0:allocator_may_return_null=1"  # leaks: process-lifetime caches only
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-for t in gltf stage_set; do
+for t in gltf stage_set scene_compare; do
   [ -z "$ONLY" ] || [ "$ONLY" = "$t" ] || continue
   work=build-fuzz/corpus_$t
   mkdir -p "$work" "fuzz/regressions/$t"
   cp -n fuzz/corpus/$t/* "$work/" 2>/dev/null || true
+  dict=()
+  [ ! -f "fuzz/$t.dict" ] || dict=(-dict="fuzz/$t.dict")
   echo "fuzz: $t for $SECS s"
-  build-fuzz/bin/${t}_fuzz "$work" -max_total_time="$SECS" -max_len=200000 -rss_limit_mb=4096 -timeout=20 \
+  build-fuzz/bin/${t}_fuzz "${dict[@]}" "$work" -max_total_time="$SECS" -max_len=200000 -rss_limit_mb=4096 -timeout=20 \
     -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 -artifact_prefix="fuzz/regressions/$t/" \
-    -print_final_stats=1 2>&1 | tee "build-fuzz/fuzz_$t.log" | grep -E "^#[0-9]+: cov|DONE|crash-|oom-|timeout-|stat::" | tail -30
+    -close_fd_mask=1 -print_final_stats=1 2>&1 | tee "build-fuzz/fuzz_$t.log" | grep -E "^#[0-9]+: cov|DONE|crash-|oom-|timeout-|stat::" | tail -30
 done

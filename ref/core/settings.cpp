@@ -1,9 +1,13 @@
 #include "core/settings.h"
 
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -71,6 +75,18 @@ Enum enum_from(const nlohmann::json& j, const std::string& key) {
   throw InputError("", "setting '" + key + "' is '" + name + "', expected one of " + allowed);
 }
 
+// An integer setting given a number it cannot hold (1e300, 2^32 + 16, 16.5) is bad input: the
+// plain conversion would be undefined (float) or wrap silently to a value that may validate
+// (reachable from an external stage set's manifest "settings": fuzz/regressions/scene_compare/).
+template <typename T>
+bool fits_integer(const nlohmann::json& v) {
+  using L = std::numeric_limits<T>;
+  if (v.is_number_unsigned()) return v.get<uint64_t>() <= uint64_t(L::max());
+  if (v.is_number_integer()) return v.get<int64_t>() >= int64_t(L::min()) && v.get<int64_t>() <= int64_t(L::max());
+  const double d = v.get<double>();
+  return std::isfinite(d) && d == std::trunc(d) && d >= double(L::min()) && d <= double(L::max());
+}
+
 /// Reads the keys of `j` into fields; refuses keys nobody reads (typos must not pass silently).
 class Reader {
  public:
@@ -81,6 +97,9 @@ class Reader {
   void field(const char* key, T& out) {
     seen_.insert(key);
     if (!j_.contains(key)) return;
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>)
+      if (j_.at(key).is_number() && !fits_integer<T>(j_.at(key)))
+        throw InputError("", "setting '" + scope_ + key + "' = " + j_.at(key).dump() + " is not an integer in range");
     try {
       out = j_.at(key).get<T>();
     } catch (const nlohmann::json::exception&) {

@@ -96,11 +96,14 @@ Volume read_nrrd(const std::string& path) {
   const int channels = dimension == 4 ? int(sizes[0]) : 1;
   const int off = dimension == 4 ? 1 : 0;
   if (channels > 16) throw InputError(path, "NRRD has too many channels");
-  Volume vol(int(sizes[off]), int(sizes[off + 1]), int(sizes[off + 2]), channels);
-  const size_t need = vol.data.size() * element_size(type);
+  // Sizes are checked against the bytes present before allocating: a header alone may claim
+  // 16 x 4096^3 values.
+  size_t need = element_size(type);
+  for (long long s : sizes) need *= size_t(s);
   if (bytes.size() - (end + 2) < need)
     throw InputError(path, "NRRD data is short: need " + std::to_string(need) + " bytes, have " +
                                std::to_string(bytes.size() - end - 2));
+  Volume vol(int(sizes[off]), int(sizes[off + 1]), int(sizes[off + 2]), channels);
   const char* p = bytes.data() + end + 2;
   for (size_t i = 0; i < vol.data.size(); ++i) vol.data[i] = element_value(type, p + i * element_size(type));
   return vol;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 #include "compare/isolated_stages.h"
 #include "compare/stage_set_frame.h"
@@ -85,6 +86,28 @@ TEST(StageSetFrame, MissingOrMisSizedInputsAreInputErrors) {
   Scene moved = scene;
   moved.camera.yfov *= 1.25f;  // every pixel but the centre moves by more than 1 px
   EXPECT_THROW(frame_from_stage_set(full, moved, s.vct), InputError);
+}
+
+// An input of the wrong kind is missing, not an empty slot whose pixels are indexed, and an info
+// list that is not all numbers is kept as text (info is free-form).
+TEST(StageSetFrame, InputsOfTheWrongKindAreMissingAndInfoStaysFreeForm) {
+  const Scene scene = load_scene("");
+  const Settings s = small(false, false);
+  const StageSet full = stage_set_from_frame(render_ref_frame(scene, s), s.vct);
+  StageSet set = full;
+  set.images.erase("gbuffer.position");
+  set.volumes["gbuffer.position"] = Volume(4, 4, 4, 4);
+  try {
+    frame_from_stage_set(set, scene, s.vct);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'gbuffer.position' is missing"), std::string::npos) << e.what();
+  }
+  set = full;
+  set.info["multibounce_energy"] = {"x", 2};
+  const FrameResult f = frame_from_stage_set(set, scene, s.vct);
+  EXPECT_TRUE(f.multibounce_energy.empty());
+  EXPECT_EQ(f.info.at("multibounce_energy"), R"(["x",2])");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
@@ -47,6 +48,33 @@ TEST(StageSetIo, BadManifestsAreInputErrors) {
   EXPECT_THROW(read_stage_set(dir.string()), InputError);
   std::ofstream(dir / "vct-stages.json") << "{not json";
   EXPECT_THROW(read_stage_set(dir.string()), InputError);
+  fs::remove_all(dir);
+}
+
+// Canonical names have one kind (docs/external_format.md): an image listed as mip.iso.2 is refused
+// when read, not looked up among the volumes later; names outside the table may be either.
+TEST(StageSetIo, CanonicalNamesOfTheWrongKindAreInputErrors) {
+  const fs::path dir = fs::temp_directory_path() / ("vct_kind_manifest_" + std::to_string(::getpid()));
+  StageSet s;
+  s.images["image.final"] = Image(2, 2, 3, 0.5f);
+  s.volumes["voxel.radiance"] = Volume(2, 2, 2, 4);
+  write_stage_set(dir.string(), s);
+  const std::string exr = s.files.at("image.final"), nrrd = s.files.at("voxel.radiance");
+  auto manifest_with = [&](const std::string& stages) {
+    std::ofstream(dir / "vct-stages.json") << R"({"format":"vct-stages","stages":{)" << stages << "}}";
+  };
+  manifest_with(R"("mip.iso.2":{"file":")" + exr + R"(","kind":"image"})");
+  try {
+    read_stage_set(dir.string());
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'mip.iso.2' must be a volume"), std::string::npos) << e.what();
+  }
+  manifest_with(R"("gbuffer.position":{"file":")" + nrrd + R"("})");  // kind from .nrrd: volume
+  EXPECT_THROW(read_stage_set(dir.string()), InputError);
+  manifest_with(R"("my.extra":{"file":")" + nrrd + R"("},"other":{"file":")" + exr + R"("})");
+  const StageSet r = read_stage_set(dir.string());
+  EXPECT_TRUE(r.volumes.count("my.extra") && r.images.count("other"));
   fs::remove_all(dir);
 }
 

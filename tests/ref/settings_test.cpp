@@ -30,6 +30,21 @@ TEST(Settings, UnknownKeyIsRefused) {
   EXPECT_THROW(j.get<Settings>(), InputError);
 }
 
+// A number an int field cannot hold must not convert (undefined for 1e300) or wrap: 2^32 + 16
+// would become grid 16 and pass validation. An integral float is still an integer.
+TEST(Settings, IntegerFieldsRefuseNumbersTheyCannotHold) {
+  for (const nlohmann::json& bad : {nlohmann::json(1e300), nlohmann::json(-1e300), nlohmann::json(4294967312LL),
+                                    nlohmann::json(-2147483649LL), nlohmann::json(16.5),
+                                    nlohmann::json(18446744073709551615ULL)}) {
+    SCOPED_TRACE(bad.dump());
+    EXPECT_THROW((nlohmann::json{{"vct", {{"grid", bad}}}}.get<Settings>()), InputError);
+  }
+  EXPECT_THROW((nlohmann::json{{"pt", {{"seed", -1}}}}.get<Settings>()), InputError);  // uint32_t
+  EXPECT_EQ((nlohmann::json{{"vct", {{"grid", 64.0}}}}.get<Settings>().vct.grid), 64);
+  EXPECT_EQ((nlohmann::json{{"pt", {{"seed", 4294967295ULL}}}}.get<Settings>().pt.seed), 4294967295u);
+  EXPECT_EQ((nlohmann::json{{"vct", {{"frame", -2147483648LL}}}}.get<Settings>().vct.frame), -2147483648LL);
+}
+
 TEST(Settings, BadEnumNamesTheAllowedValues) {
   nlohmann::json j = {{"vct", {{"light_model", "sun"}}}};
   try {
