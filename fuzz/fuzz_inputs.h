@@ -9,10 +9,12 @@
 
 #include <cctype>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace vct::fuzz {
@@ -27,6 +29,12 @@ inline std::filesystem::path scratch_dir() {
     std::filesystem::create_directories(p);
     return p;
   }();
+  // Removed at a normal exit: fork mode starts a process (so a directory) per job.
+  static const bool removed_at_exit = std::atexit([] {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }) == 0;
+  (void)removed_at_exit;
   return dir;
 }
 
