@@ -46,13 +46,37 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   if (red != f.info.end())
     for (const char* r : {"fixed_point", "cas_rgba8", "exact_mean"})
       if (red->second.rfind(r, 0) == 0) set.reduction = r;
-  for (size_t i = 0; i < f.shadow_maps.size(); ++i) put(set.images, shadow_map_stage(i), f.shadow_maps[i].depth);
-  for (const auto& [name, slot] : frame_image_slots(f)) put(set.images, name, *slot);
-  for (const auto& [name, slot] : frame_volume_slots(f)) put(set.volumes, name, *slot);
-  for (size_t l = 1; l < f.mips.iso.size(); ++l) put(set.volumes, mip_stage(-1, int(l)), f.mips.iso[l]);
+  for (size_t i = 0; i < f.shadow_maps.size(); ++i) put(set.images, "shadow_map." + std::to_string(i), f.shadow_maps[i].depth);
+  const GBuffer& g = f.gbuffer;
+  put(set.images, "gbuffer.coverage", g.coverage);
+  put(set.images, "gbuffer.depth", g.depth);
+  put(set.images, "gbuffer.position", g.position);
+  put(set.images, "gbuffer.normal", g.normal);
+  put(set.images, "gbuffer.albedo", g.albedo);
+  put(set.images, "gbuffer.material", g.material);
+  put(set.images, "gbuffer.specular_color", g.specular_color);
+  put(set.images, "gbuffer.emission", g.emission);
+  put(set.images, "gbuffer.texture_slack", g.texture_slack);
+  put(set.volumes, "voxel.radiance", f.voxels.radiance);
+  put(set.volumes, "voxel.fragments", f.voxels.fragments);
+  put(set.volumes, "voxel.cas_lo", f.voxels.cas_lo);
+  put(set.volumes, "voxel.cas_hi", f.voxels.cas_hi);
+  put(set.volumes, "voxel.conservative", f.conservative_occupancy);
+  put(set.volumes, "voxel.holes", f.holes);
+  for (size_t l = 1; l < f.mips.iso.size(); ++l) put(set.volumes, "mip.iso." + std::to_string(l), f.mips.iso[l]);
   for (int d = 0; d < 6; ++d)
     for (size_t l = 0; l < f.mips.aniso[size_t(d)].size(); ++l)
-      put(set.volumes, mip_stage(d, int(l + 1)), f.mips.aniso[size_t(d)][l]);
+      put(set.volumes, std::string("mip.") + kAnisoDirNames[size_t(d)] + "." + std::to_string(l + 1), f.mips.aniso[size_t(d)][l]);
+  const FrameImages& im = f.images;
+  put(set.images, "image.direct", im.direct);
+  put(set.images, "image.indirect_diffuse", im.indirect_diffuse);
+  put(set.images, "image.indirect_specular", im.indirect_specular);
+  put(set.images, "image.diffuse_term", im.diffuse_term);
+  put(set.images, "image.specular_term", im.specular_term);
+  put(set.images, "image.emission", im.emission);
+  put(set.images, "image.particles", im.particles);
+  put(set.images, "image.soft_shadow", im.soft_shadow);
+  put(set.images, "image.final", im.final_image);
   if (!f.multibounce_energy.empty()) set.info["multibounce_energy"] = f.multibounce_energy;
   return set;
 }

@@ -40,6 +40,31 @@ bool all_numbers(const nlohmann::json& v) {
   return v.is_array() && std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); });
 }
 
+// Every slot of FrameResult a stage set can fill, by canonical name (stage_set_from_frame's
+// names; shadow maps, mips and the volumes below are handled apart).
+std::vector<std::pair<const char*, Image*>> image_slots(FrameResult& f) {
+  GBuffer& g = f.gbuffer;
+  FrameImages& im = f.images;
+  return {{"gbuffer.coverage", &g.coverage},         {"gbuffer.depth", &g.depth},
+          {"gbuffer.position", &g.position},         {"gbuffer.normal", &g.normal},
+          {"gbuffer.albedo", &g.albedo},             {"gbuffer.material", &g.material},
+          {"gbuffer.specular_color", &g.specular_color}, {"gbuffer.emission", &g.emission},
+          {"image.direct", &im.direct},              {"image.indirect_diffuse", &im.indirect_diffuse},
+          {"image.indirect_specular", &im.indirect_specular}, {"image.diffuse_term", &im.diffuse_term},
+          {"image.specular_term", &im.specular_term}, {"image.emission", &im.emission},
+          {"image.particles", &im.particles},        {"image.soft_shadow", &im.soft_shadow},
+          {"image.final", &im.final_image}};
+}
+
+std::vector<std::pair<const char*, Volume*>> volume_slots(FrameResult& f) {
+  return {{"voxel.radiance", &f.voxels.radiance},
+          {"voxel.fragments", &f.voxels.fragments},
+          {"voxel.cas_lo", &f.voxels.cas_lo},
+          {"voxel.cas_hi", &f.voxels.cas_hi},
+          {"voxel.conservative", &f.conservative_occupancy},
+          {"voxel.holes", &f.holes}};
+}
+
 // The marcher indexes pixels and voxels with a fixed channel count: extra channels (RGBA files
 // for RGB stages) are dropped, missing ones are an error.
 Image first_channels(const Image& in, int channels, const std::string& file) {
@@ -69,12 +94,12 @@ int image_channels(const std::string& stage) {
 }
 
 void fill_everything(const StageSet& set, FrameResult& f) {
-  for (auto& [name, slot] : frame_image_slots(f))
+  for (auto& [name, slot] : image_slots(f))
     if (set.images.count(name)) *slot = set.images.at(name);
-  for (auto& [name, slot] : frame_volume_slots(f))
+  for (auto& [name, slot] : volume_slots(f))
     if (set.volumes.count(name)) *slot = set.volumes.at(name);
-  for (size_t i = 0; set.images.count(shadow_map_stage(i)); ++i)
-    f.shadow_maps.push_back({set.images.at(shadow_map_stage(i)), mat4(1.0f)});
+  for (size_t i = 0; set.images.count("shadow_map." + std::to_string(i)); ++i)
+    f.shadow_maps.push_back({set.images.at("shadow_map." + std::to_string(i)), mat4(1.0f)});
   for (const auto& [k, v] : set.info.items()) {
     if (k == "multibounce_energy" && all_numbers(v)) f.multibounce_energy = v.get<std::vector<double>>();
     else f.info[k] = v.is_string() ? v.get<std::string>() : v.dump();
@@ -90,14 +115,14 @@ void fill_mips(const StageSet& set, const VctSettings& s, FrameResult& f) {
   f.mips.iso = {rgba_volume(f.voxels.radiance, s.grid, file_of(set, "voxel.radiance"))};
   f.voxels.radiance = f.mips.iso[0];
   for (int l = 1; l < levels; ++l) {
-    const std::string name = mip_stage(-1, l);
+    const std::string name = "mip.iso." + std::to_string(l);
     if (!set.volumes.count(name)) break;
     f.mips.iso.push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
   }
   if (!s.anisotropic) return;
   for (int d = 0; d < 6; ++d)
     for (int l = 1; l < levels; ++l) {
-      const std::string name = mip_stage(d, l);
+      const std::string name = std::string("mip.") + kAnisoDirNames[size_t(d)] + "." + std::to_string(l);
       f.mips.aniso[size_t(d)].push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
     }
 }
@@ -115,7 +140,7 @@ void require_stages(const StageSet& set, const Scene& scene, const VctSettings& 
 // The images the marcher and the composite index pixel by pixel: the G-buffer, direct light and
 // particles (whenever present: the composite adds them) must be width x height.
 void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& f) {
-  for (auto& [name_c, slot] : frame_image_slots(f)) {
+  for (auto& [name_c, slot] : image_slots(f)) {
     const std::string name = name_c;
     const bool input = std::find(std::begin(kGbufferInputs), std::end(kGbufferInputs), name) != std::end(kGbufferInputs) ||
                        name == "image.direct" || name == "image.particles";
@@ -133,7 +158,7 @@ void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& 
 // float error and sub-pixel jitter stay far below) for all but 1 % of the covered pixels.
 void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer& g) {
   size_t shadow_maps = 0;
-  while (set.images.count(shadow_map_stage(shadow_maps))) ++shadow_maps;
+  while (set.images.count("shadow_map." + std::to_string(shadow_maps))) ++shadow_maps;
   if (shadow_maps > 0 && shadow_maps != scene.spot_lights.size())
     throw InputError(manifest_of(set), std::to_string(shadow_maps) + " shadow maps but " + scene.source + " has " +
                                            std::to_string(scene.spot_lights.size()) + " spot light(s): wrong --scene?");
@@ -164,10 +189,10 @@ std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings
   stages.push_back("voxel.radiance");
   const int levels = mip_levels(s.grid);
   if (!s.anisotropic)
-    for (int l = 1; l < levels; ++l) stages.push_back(mip_stage(-1, l));
+    for (int l = 1; l < levels; ++l) stages.push_back("mip.iso." + std::to_string(l));
   else
-    for (int d = 0; d < 6; ++d)
-      for (int l = 1; l < levels; ++l) stages.push_back(mip_stage(d, l));
+    for (const char* dir : kAnisoDirNames)
+      for (int l = 1; l < levels; ++l) stages.push_back(std::string("mip.") + dir + "." + std::to_string(l));
   return stages;
 }
 
