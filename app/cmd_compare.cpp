@@ -17,6 +17,7 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
+#include "stages/stage_registry.h"
 #include "verdict_summary.h"
 
 namespace vct::app {
@@ -26,7 +27,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct CompareArgs {
-  std::string a, b, out, stage = "image.final";
+  std::string a, b, out, stage = stage_names::kImageFinal;
   std::string scene, config;  // --scene, --config: isolated judgement of cone stages
   double abs = 0.0, rel = 0.0;
   size_t worst = 10;

@@ -177,7 +177,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   for (const auto& [stage, ms] : frame.timings_ms) run.add_timing(frame.backend, stage, ms);
   run.write_color("final", frame.images.final_image);
   if (flags.dump) {
-    write_frame_dumps(run, frame, scene, settings.vct);
+    write_frame_dumps(run, frame, scene);
     write_ref_extras(run, frame, scene, settings.vct);
   }
   if (explain) {

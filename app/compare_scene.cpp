@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/stage_set_frame.h"
+#include "stages/stage_registry.h"
 #include "core/error.h"
 #include "scene/gltf_loader.h"
 
@@ -57,11 +58,11 @@ void check_sizes(const nlohmann::json& layer, const nlohmann::json& data, const 
 
 nlohmann::json data_sizes(const cmp::StageSet& test) {
   nlohmann::json sizes = nlohmann::json::object();
-  if (test.images.count("gbuffer.coverage")) {
-    sizes["width"] = test.images.at("gbuffer.coverage").width;
-    sizes["height"] = test.images.at("gbuffer.coverage").height;
+  if (test.images.count(stage_names::kGbufferCoverage)) {
+    sizes["width"] = test.images.at(stage_names::kGbufferCoverage).width;
+    sizes["height"] = test.images.at(stage_names::kGbufferCoverage).height;
   }
-  if (test.volumes.count("voxel.radiance")) sizes["grid"] = test.volumes.at("voxel.radiance").nx;
+  if (test.volumes.count(stage_names::kVoxelRadiance)) sizes["grid"] = test.volumes.at(stage_names::kVoxelRadiance).nx;
   return sizes;
 }
 

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <map>
 
+#include "stages/stage_registry.h"
+
 namespace vct::app {
 
 namespace {
@@ -15,9 +17,11 @@ int severity(cmp::Verdict v) {
   }
   return 0;
 }
+// Mip levels fold into their chain ("mip.iso.*"); other families (shadow maps) stay per member.
 std::string family(const std::string& stage) {
-  if (stage.rfind("mip.", 0) != 0) return stage;
-  return stage.substr(0, stage.rfind('.')) + ".*";
+  const auto ref = find_stage(stage);
+  if (!ref || ref->row->index != StageIndex::MipLevel) return stage;
+  return std::string(ref->row->name) + ".*";
 }
 }  // namespace
 

@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
       f.voxels = vg;
       f.mips = an;
       RunDir dir(dump);
-      write_frame_dumps(dir, f, scene, st);
+      write_frame_dumps(dir, f, scene);
       std::printf("dumps written to %s\n", dump.c_str());
     }
   }

@@ -6,19 +6,19 @@
 
 #include "core/math.h"
 #include "io/image_io.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
 namespace fs = std::filesystem;
 
 const std::vector<std::pair<std::string, std::string>>& bias_pairs() {
-  static const std::vector<std::pair<std::string, std::string>> kPairs = {
-      {"image.direct", "pt_direct"},
-      {"image.diffuse_term", "pt_indirect_diffuse"},
-      {"image.specular_term", "pt_indirect_specular"},
-      {"image.emission", "pt_emission"},
-      {"image.particles", "pt_particles"},
-      {"image.final", "pt_full"}};
+  static const std::vector<std::pair<std::string, std::string>> kPairs = [] {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (const StageRow& row : stage_rows())
+      if (*row.pt_aov) pairs.emplace_back(row.name, row.pt_aov);
+    return pairs;
+  }();
   return kPairs;
 }
 

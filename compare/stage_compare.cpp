@@ -13,6 +13,8 @@ namespace vct::cmp {
 
 namespace {
 
+namespace st = stage_names;
+
 std::string mask_stem(const std::string& stage) {
   std::string s = stage;
   std::replace(s.begin(), s.end(), '.', '_');
@@ -105,7 +107,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   }
   const ImageModel m = image_model(stage);
   v.model = m.name;
-  v.bound = m.bound_text;
+  v.bound = bound_text(m);
   const int slack_ch = texture_slack ? texture_slack_channel(stage, *texture_slack) : -1;
   const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
   if (use_slack) v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift)";
@@ -114,7 +116,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
   // Depth images are their own discontinuity hint.
-  if (!edge_hint && m.name == "d32f-depth") edge_hint = &ref;
+  if (!edge_hint && m.id == ToleranceModel::Depth) edge_hint = &ref;
   const std::vector<uint8_t> edge = edge_map(ref, edge_hint);
   std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
   std::vector<Offender> offenders;
@@ -266,10 +268,10 @@ constexpr double kTieFraction = 0.01;  // ties beyond 1% of occupied voxels are 
 constexpr double kShadingTieFraction = 0.005;  // shadow-test ties beyond 0.5% of voxels are not ties
 
 StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
-  const Volume& ref = rs.volumes.at("voxel.radiance");
-  const Volume& test = ts.volumes.at("voxel.radiance");
+  const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
+  const Volume& test = ts.volumes.at(st::kVoxelRadiance);
   StageVerdict v;
-  v.stage = "voxel.occupancy";
+  v.stage = st::kVoxelOccupancy;
   if (!same_size(ref, test)) {
     v.verdict = Verdict::Fail;
     v.note = "grid sizes differ: " + std::to_string(ref.nx) + " vs " + std::to_string(test.nx);
@@ -287,7 +289,7 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
                   "edge); any other missing or extra voxel fails";
   const auto ro = occupancy(ref), to = occupancy(test);
   auto frag_of = [&](const StageSet& s) -> const Volume* {
-    auto it = s.volumes.find("voxel.fragments");
+    auto it = s.volumes.find(st::kVoxelFragments);
     return it != s.volumes.end() && same_size(it->second, ref) ? &it->second : nullptr;
   };
   const Volume *rfrag = frag_of(rs), *tfrag = frag_of(ts);
@@ -348,13 +350,13 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
 
 StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const CompareOptions& opt) {
   StageVerdict v;
-  v.stage = "voxel.holes";
+  v.stage = st::kVoxelHoles;
   v.model = "conservative-holes-reported";
   v.bound = "reported, never failed: holes are a property of sample-based voxelization";
-  const Volume* cons = rs.volumes.count("voxel.conservative") ? &rs.volumes.at("voxel.conservative") : nullptr;
-  if (!cons) cons = ts.volumes.count("voxel.conservative") ? &ts.volumes.at("voxel.conservative") : nullptr;
-  if (!cons || !ts.volumes.count("voxel.radiance")) return missing(v.stage, "no conservative occupancy or no test voxels");
-  const Volume& test = ts.volumes.at("voxel.radiance");
+  const Volume* cons = rs.volumes.count(st::kVoxelConservative) ? &rs.volumes.at(st::kVoxelConservative) : nullptr;
+  if (!cons) cons = ts.volumes.count(st::kVoxelConservative) ? &ts.volumes.at(st::kVoxelConservative) : nullptr;
+  if (!cons || !ts.volumes.count(st::kVoxelRadiance)) return missing(v.stage, "no conservative occupancy or no test voxels");
+  const Volume& test = ts.volumes.at(st::kVoxelRadiance);
   if (!same_size(*cons, test)) return missing(v.stage, "conservative and test grids differ in size");
   const auto to = occupancy(test);
   Volume mask(test.nx, test.ny, test.nz, 1);
@@ -378,10 +380,10 @@ StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const Compare
 }
 
 StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
-  const Volume& ref = rs.volumes.at("voxel.radiance");
-  const Volume& test = ts.volumes.at("voxel.radiance");
+  const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
+  const Volume& test = ts.volumes.at(st::kVoxelRadiance);
   StageVerdict v;
-  v.stage = "voxel.radiance";
+  v.stage = st::kVoxelRadiance;
   if (!same_size(ref, test)) {
     v.verdict = Verdict::Fail;
     v.note = "grid sizes differ";
@@ -389,13 +391,13 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   }
   const VoxelModel m = voxel_model(ts.storage, ts.reduction, rs.reduction);
   v.model = m.name;
-  v.bound = m.bound_text;
-  const Volume* lo = rs.volumes.count("voxel.cas_lo") ? &rs.volumes.at("voxel.cas_lo") : nullptr;
-  const Volume* hi = rs.volumes.count("voxel.cas_hi") ? &rs.volumes.at("voxel.cas_hi") : nullptr;
+  v.bound = bound_text(m);
+  const Volume* lo = rs.volumes.count(st::kVoxelCasLo) ? &rs.volumes.at(st::kVoxelCasLo) : nullptr;
+  const Volume* hi = rs.volumes.count(st::kVoxelCasHi) ? &rs.volumes.at(st::kVoxelCasHi) : nullptr;
   const bool interval = m.cas_interval && lo && hi && same_size(*lo, ref) && same_size(*hi, ref);
   if (m.cas_interval && !interval) v.note = "no cas_lo/cas_hi in the reference: judged with +-1/255 only; ";
-  const Volume* frags = rs.volumes.count("voxel.fragments") ? &rs.volumes.at("voxel.fragments") : nullptr;
-  const Volume* tfrags = ts.volumes.count("voxel.fragments") ? &ts.volumes.at("voxel.fragments") : nullptr;
+  const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
+  const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
   if (tfrags && (!frags || !same_size(*tfrags, ref))) tfrags = nullptr;
   size_t count_ties = 0, shading_ties = 0;
   const auto ro = occupancy(ref), to = occupancy(test);
@@ -412,15 +414,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     for (int c = 0; c < ch; ++c) {
       const size_t k = i * size_t(ref.channels) + size_t(c);
       const double r = ref.data[k], t = test.data[i * size_t(test.channels) + size_t(c)];
-      double d = std::abs(t - r), bound = m.abs + m.rel * std::abs(r) + n * m.per_fragment_rel * std::abs(r);
+      double d = std::abs(t - r), bound = m.bound(r, n);
       if (interval) {
         const double l = double(lo->data[k]) - m.abs, h = double(hi->data[k]) + m.abs;
         d = t < l ? l - t : t > h ? t - h : 0.0;
         bound = m.abs;
-      } else if (m.name == "rgba16f-ulp") {
-        bound = 2.0 * half_ulp(r) + n * m.per_fragment_rel * std::abs(r);
-      } else if (m.name == "fixed-point-exact+shading" && ts.storage == "rgba16f") {
-        bound += 2.0 * half_ulp(r);
       }
       se += (t - r) * (t - r);
       v.max_abs = std::max(v.max_abs, std::abs(t - r));
@@ -484,19 +482,18 @@ Taint taint_at_level(const Taint& base, int n, const Volume& level_vol, int leve
 
 StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const StageSet& ts, const CompareOptions& opt,
                          const Taint& taint) {
-  // stage = mip.<dir>.<level>
-  const size_t dot = stage.rfind('.');
-  const int level = std::atoi(stage.c_str() + dot + 1);
-  const bool aniso = stage.rfind("mip.iso.", 0) != 0;
+  const StageRef ref = *find_stage(stage);  // a mip.<dir>.<level> row: the caller dispatched on it
+  const int level = ref.index;
+  const bool aniso = aniso_direction(*ref.row) >= 0;
   const VoxelModel base = voxel_model(ts.storage, ts.reduction, rs.reduction);
   double cas_width = 0.0;
-  if (base.cas_interval && rs.volumes.count("voxel.cas_lo") && rs.volumes.count("voxel.cas_hi")) {
-    const auto& lo = rs.volumes.at("voxel.cas_lo").data;
-    const auto& hi = rs.volumes.at("voxel.cas_hi").data;
+  if (base.cas_interval && rs.volumes.count(st::kVoxelCasLo) && rs.volumes.count(st::kVoxelCasHi)) {
+    const auto& lo = rs.volumes.at(st::kVoxelCasLo).data;
+    const auto& hi = rs.volumes.at(st::kVoxelCasHi).data;
     for (size_t i = 0; i < lo.size() && i < hi.size(); ++i) cas_width = std::max(cas_width, double(hi[i] - lo[i]));
   }
   const MipBound b = mip_bound(base, ts.storage, level, aniso, cas_width);
-  const Volume& base_vol = rs.volumes.at("voxel.radiance");
+  const Volume& base_vol = rs.volumes.at(st::kVoxelRadiance);
   const Taint lt = base_vol.nx == base_vol.ny && base_vol.ny == base_vol.nz
                        ? taint_at_level(taint, base_vol.nx, rs.volumes.at(stage), level)
                        : Taint();
@@ -525,29 +522,31 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
   Report rep;
   CompareOptions opt = opt_in;
   Taint taint, radiance_taint;
-  const Image* depth_hint = rs.images.count("gbuffer.depth") ? &rs.images.at("gbuffer.depth") : nullptr;
-  const Image* slack = rs.images.count("gbuffer.texture_slack") ? &rs.images.at("gbuffer.texture_slack") : nullptr;
+  const Image* depth_hint = rs.images.count(st::kGbufferDepth) ? &rs.images.at(st::kGbufferDepth) : nullptr;
+  const Image* slack = rs.images.count(st::kGbufferTextureSlack) ? &rs.images.at(st::kGbufferTextureSlack) : nullptr;
   for (const std::string& stage : pipeline_order(rs, ts)) {
+    const auto ref = find_stage(stage);
+    const ToleranceModel model = ref ? ref->row->model : ToleranceModel::None;
     const bool r_has = rs.has(stage), t_has = ts.has(stage);
-    if (stage == "voxel.occupancy" || stage == "voxel.radiance") {
-      if (!rs.volumes.count("voxel.radiance") || !ts.volumes.count("voxel.radiance"))
+    if (model == ToleranceModel::VoxelOccupancy || model == ToleranceModel::VoxelRadiance) {
+      if (!rs.volumes.count(st::kVoxelRadiance) || !ts.volumes.count(st::kVoxelRadiance))
         rep.stages.push_back(missing(stage, "voxel radiance missing on one side"));
       else
-        rep.stages.push_back(stage == "voxel.occupancy" ? compare_occupancy(rs, ts, opt, taint)
-                                                        : compare_radiance(rs, ts, opt, radiance_taint));
-      if (stage == "voxel.radiance") {
+        rep.stages.push_back(model == ToleranceModel::VoxelOccupancy ? compare_occupancy(rs, ts, opt, taint)
+                                                                     : compare_radiance(rs, ts, opt, radiance_taint));
+      if (model == ToleranceModel::VoxelRadiance) {
         taint.resize(std::max(taint.size(), radiance_taint.size()), 0);
         for (size_t i = 0; i < radiance_taint.size(); ++i) taint[i] |= radiance_taint[i];
         size_t tainted = 0;
         for (uint8_t t : taint) tainted += t;
-        const auto occ = occupancy(rs.volumes.at("voxel.radiance"));
+        const auto occ = occupancy(rs.volumes.at(st::kVoxelRadiance));
         size_t occupied = 0;
         for (uint8_t o : occ) occupied += o;
         opt.upstream_tie_fraction = occupied ? double(tainted) / double(occupied) : 0.0;
       }
       continue;
     }
-    if (stage == "voxel.holes") {
+    if (model == ToleranceModel::VoxelHoles) {
       rep.stages.push_back(compare_holes(rs, ts, opt));
       continue;
     }
@@ -556,10 +555,11 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       continue;
     }
     if (rs.images.count(stage)) {
-      const bool shadow = stage.rfind("shadow_map", 0) == 0;
+      // A shadow map is its own depth: the camera's depth says nothing about its edges.
+      const bool light_space = ref && ref->row->index == StageIndex::Light;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               shadow ? nullptr : depth_hint, opt, slack));
-    } else if (stage.rfind("mip.", 0) == 0) {
+                                               light_space ? nullptr : depth_hint, opt, slack));
+    } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {
       rep.stages.push_back(compare_volume_plain(stage, rs.volumes.at(stage), ts.volumes.at(stage), 1e-6, 1e-5, opt));

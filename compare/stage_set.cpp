@@ -10,6 +10,8 @@
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "io/run_dir.h"
+#include "stages/dumps.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
@@ -25,15 +27,6 @@ std::string reduction_name(Reduction r) {
   return "exact_mean";
 }
 
-namespace {
-void put(std::map<std::string, Image>& m, const std::string& k, const Image& img) {
-  if (!img.empty()) m[k] = img;
-}
-void put(std::map<std::string, Volume>& m, const std::string& k, const Volume& v) {
-  if (!v.data.empty()) m[k] = v;
-}
-}  // namespace
-
 StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   StageSet set;
   set.backend = f.backend;
@@ -46,37 +39,11 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   if (red != f.info.end())
     for (const char* r : {"fixed_point", "cas_rgba8", "exact_mean"})
       if (red->second.rfind(r, 0) == 0) set.reduction = r;
-  for (size_t i = 0; i < f.shadow_maps.size(); ++i) put(set.images, "shadow_map." + std::to_string(i), f.shadow_maps[i].depth);
-  const GBuffer& g = f.gbuffer;
-  put(set.images, "gbuffer.coverage", g.coverage);
-  put(set.images, "gbuffer.depth", g.depth);
-  put(set.images, "gbuffer.position", g.position);
-  put(set.images, "gbuffer.normal", g.normal);
-  put(set.images, "gbuffer.albedo", g.albedo);
-  put(set.images, "gbuffer.material", g.material);
-  put(set.images, "gbuffer.specular_color", g.specular_color);
-  put(set.images, "gbuffer.emission", g.emission);
-  put(set.images, "gbuffer.texture_slack", g.texture_slack);
-  put(set.volumes, "voxel.radiance", f.voxels.radiance);
-  put(set.volumes, "voxel.fragments", f.voxels.fragments);
-  put(set.volumes, "voxel.cas_lo", f.voxels.cas_lo);
-  put(set.volumes, "voxel.cas_hi", f.voxels.cas_hi);
-  put(set.volumes, "voxel.conservative", f.conservative_occupancy);
-  put(set.volumes, "voxel.holes", f.holes);
-  for (size_t l = 1; l < f.mips.iso.size(); ++l) put(set.volumes, "mip.iso." + std::to_string(l), f.mips.iso[l]);
-  for (int d = 0; d < 6; ++d)
-    for (size_t l = 0; l < f.mips.aniso[size_t(d)].size(); ++l)
-      put(set.volumes, std::string("mip.") + kAnisoDirNames[size_t(d)] + "." + std::to_string(l + 1), f.mips.aniso[size_t(d)][l]);
-  const FrameImages& im = f.images;
-  put(set.images, "image.direct", im.direct);
-  put(set.images, "image.indirect_diffuse", im.indirect_diffuse);
-  put(set.images, "image.indirect_specular", im.indirect_specular);
-  put(set.images, "image.diffuse_term", im.diffuse_term);
-  put(set.images, "image.specular_term", im.specular_term);
-  put(set.images, "image.emission", im.emission);
-  put(set.images, "image.particles", im.particles);
-  put(set.images, "image.soft_shadow", im.soft_shadow);
-  put(set.images, "image.final", im.final_image);
+  for (const StageRow& row : stage_rows())
+    for (int i : frame_members(f, row)) {
+      if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = *frame_image(f, row, i);
+      else set.volumes[stage_name(row, i)] = *frame_volume(f, row, i);
+    }
   if (!f.multibounce_energy.empty()) set.info["multibounce_energy"] = f.multibounce_energy;
   return set;
 }
@@ -87,10 +54,18 @@ std::string file_stem(const std::string& stage) {
   std::replace(s.begin(), s.end(), '.', '_');
   return s;
 }
-// Data images (depth, coverage, masks) get a linear preview; radiance a tone-mapped one.
-bool is_data_image(const std::string& stage) {
-  return stage.rfind("shadow_map", 0) == 0 || stage == "gbuffer.depth" || stage == "gbuffer.coverage" ||
-         stage == "gbuffer.material" || stage == "gbuffer.texture_slack" || stage == "image.soft_shadow";
+
+// A stage set has no scene: positions preview over the data's own range.
+void write_image_stage(RunDir& rd, const std::string& name, const std::string& stem, const Image& img) {
+  const auto ref = find_stage(name);
+  if (!ref) {
+    rd.write_color(stem, img);  // a stage of another renderer's: radiance unless it says otherwise
+    return;
+  }
+  float lo = 1e30f, hi = -1e30f;
+  if (ref->row->preview == Preview::Position)
+    for (float v : img.data) lo = std::min(lo, v), hi = std::max(hi, v);
+  write_stage_image(rd, stem, *ref->row, img, lo, hi > lo ? hi : lo + 1.0f);
 }
 }  // namespace
 
@@ -100,29 +75,7 @@ void write_stage_set(const std::string& dir, StageSet& set) {
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [name, img] : set.images) {
     const std::string stem = file_stem(name);
-    if (name == "gbuffer.normal") {
-      // Normals previewed as (n+1)/2.
-      write_exr(rd.file(stem + ".exr"), img);
-      Image p = img;
-      for (float& v : p.data) v = v * 0.5f + 0.5f;
-      write_png_linear(rd.file(stem + ".png"), p, 0.0f, 1.0f);
-    } else if (name == "gbuffer.position") {
-      write_exr(rd.file(stem + ".exr"), img);
-      float lo = 1e30f, hi = -1e30f;
-      for (float v : img.data) lo = std::min(lo, v), hi = std::max(hi, v);
-      write_png_linear(rd.file(stem + ".png"), img, lo, hi > lo ? hi : lo + 1.0f);
-    } else if (is_data_image(name)) {
-      float lo = 0.0f, hi = 1.0f;
-      if (name.rfind("shadow_map", 0) == 0 || name == "gbuffer.depth") {
-        lo = 1.0f;  // depth previews stretch the used range (perspective depth crowds near 1)
-        for (float v : img.data) if (v < 1.0f) lo = std::min(lo, v);
-        if (lo >= 1.0f) lo = 0.0f;
-      }
-      rd.write_data(stem, img, lo, 1.0f);
-      (void)hi;
-    } else {
-      rd.write_color(stem, img);
-    }
+    write_image_stage(rd, name, stem, img);
     set.files[name] = stem + ".exr";
     stages[name] = {{"file", stem + ".exr"}, {"kind", "image"}, {"preview", stem + ".png"}};
   }
@@ -144,10 +97,10 @@ namespace {
 // mip.iso.2 or a volume as gbuffer.position would be missed where it is needed (a crash before:
 // fuzz/regressions/scene_compare/).
 void check_kind_of_name(const std::string& manifest, const std::string& name, const std::string& kind) {
-  auto starts = [&](const char* prefix) { return name.rfind(prefix, 0) == 0; };
-  const bool image = starts("shadow_map.") || starts("gbuffer.") || starts("image.");
-  const bool volume = starts("voxel.") || starts("mip.");
-  if ((image && kind != "image") || (volume && kind != "volume"))
+  const auto expected = namespace_kind(name);
+  if (!expected) return;
+  const bool image = *expected == StageKind::Image;
+  if (kind != (image ? "image" : "volume"))
     throw InputError(manifest, "stage '" + name + "' must be " + (image ? "an image" : "a volume") + ", not kind '" +
                                    kind + "' (docs/external_format.md, Stage names)");
 }
@@ -212,41 +165,28 @@ StageSet read_stage_set(const std::string& path) {
 }
 
 std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {
-  // Prefixes in pipeline order; within a prefix, names sort with numbers numerically.
-  static const std::vector<std::string> kOrder = {
-      "shadow_map.",      "gbuffer.coverage", "gbuffer.depth",  "gbuffer.position",       "gbuffer.normal",
-      "gbuffer.albedo",   "gbuffer.material", "gbuffer.specular_color", "gbuffer.emission", "image.direct",
-      "voxel.occupancy",  "voxel.radiance",   "voxel.holes",    "mip.iso.",               "mip.posx.",
-      "mip.negx.",        "mip.posy.",        "mip.negy.",      "mip.posz.",              "mip.negz.",
-      "image.soft_shadow", "image.indirect_diffuse", "image.indirect_specular", "image.diffuse_term",
-      "image.specular_term", "image.emission", "image.particles", "image.final"};
   std::set<std::string> names;
   for (const StageSet* s : {&a, &b}) {
     for (const auto& kv : s->images) names.insert(kv.first);
     for (const auto& kv : s->volumes) names.insert(kv.first);
   }
-  // Reference inputs that are not stages of their own are judged inside other stages.
-  for (const char* aux : {"voxel.fragments", "voxel.cas_lo", "voxel.cas_hi", "voxel.conservative",
-                          "gbuffer.texture_slack"})
-    names.erase(aux);
-  if (names.count("voxel.radiance")) names.insert("voxel.occupancy");
-  if (a.volumes.count("voxel.conservative") || b.volumes.count("voxel.conservative")) names.insert("voxel.holes");
-  auto rank = [](const std::string& n) -> std::pair<size_t, long> {
-    for (size_t i = 0; i < kOrder.size(); ++i) {
-      const std::string& p = kOrder[i];
-      if (p.back() == '.' ? n.rfind(p, 0) == 0 : n == p) {
-        long num = 0;
-        if (p.back() == '.') try { num = std::stol(n.substr(p.size())); } catch (...) { num = 0; }
-        return {i, num};
-      }
-    }
-    return {kOrder.size(), 0};
-  };
-  std::vector<std::string> out(names.begin(), names.end());
-  std::stable_sort(out.begin(), out.end(), [&](const std::string& x, const std::string& y) {
-    const auto rx = rank(x), ry = rank(y);
-    return rx != ry ? rx < ry : x < y;
-  });
+  // Derived stages are judged whenever what they are made of is there.
+  namespace st = stage_names;
+  if (names.count(st::kVoxelRadiance)) names.insert(st::kVoxelOccupancy);
+  if (names.count(st::kVoxelConservative)) names.insert(st::kVoxelHoles);
+  // Registry order; family members by number; then names the registry does not know, sorted.
+  std::vector<std::pair<std::pair<size_t, int>, std::string>> ranked;
+  const auto& rows = stage_rows();
+  for (const std::string& n : names) {
+    const auto ref = find_stage(n);
+    if (ref && ref->row->role == StageRole::Auxiliary) continue;  // judged inside other stages
+    ranked.push_back({ref ? std::pair<size_t, int>{size_t(ref->row - rows.data()), ref->index}
+                          : std::pair<size_t, int>{rows.size(), 0},
+                      n});
+  }
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> out;
+  for (auto& r : ranked) out.push_back(std::move(r.second));
   return out;
 }
 

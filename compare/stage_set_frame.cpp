@@ -5,14 +5,11 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
 namespace {
-
-constexpr const char* kGbufferInputs[] = {"gbuffer.coverage", "gbuffer.position", "gbuffer.normal",
-                                          "gbuffer.albedo",   "gbuffer.material", "gbuffer.specular_color",
-                                          "gbuffer.emission"};
 
 int mip_levels(int n) {  // GL: levels down to 1^3
   int levels = 1;
@@ -22,7 +19,7 @@ int mip_levels(int n) {  // GL: levels down to 1^3
 
 int level_size(int n, int level) { return std::max(1, n >> level); }
 
-bool is_volume_stage(const std::string& stage) { return stage.rfind("voxel.", 0) == 0 || stage.rfind("mip.", 0) == 0; }
+bool is_volume_stage(const std::string& stage) { return namespace_kind(stage) == StageKind::Volume; }
 
 std::string manifest_of(const StageSet& set) {
   return set.root.empty() ? "test stage set" : (std::filesystem::path(set.root) / "vct-stages.json").string();
@@ -38,31 +35,6 @@ bool wants_particles(const Scene& scene, const VctSettings& s) { return s.partic
 // "info" is free-form (docs/external_format.md): an energy list that is not all numbers stays text.
 bool all_numbers(const nlohmann::json& v) {
   return v.is_array() && std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); });
-}
-
-// Every slot of FrameResult a stage set can fill, by canonical name (stage_set_from_frame's
-// names; shadow maps, mips and the volumes below are handled apart).
-std::vector<std::pair<const char*, Image*>> image_slots(FrameResult& f) {
-  GBuffer& g = f.gbuffer;
-  FrameImages& im = f.images;
-  return {{"gbuffer.coverage", &g.coverage},         {"gbuffer.depth", &g.depth},
-          {"gbuffer.position", &g.position},         {"gbuffer.normal", &g.normal},
-          {"gbuffer.albedo", &g.albedo},             {"gbuffer.material", &g.material},
-          {"gbuffer.specular_color", &g.specular_color}, {"gbuffer.emission", &g.emission},
-          {"image.direct", &im.direct},              {"image.indirect_diffuse", &im.indirect_diffuse},
-          {"image.indirect_specular", &im.indirect_specular}, {"image.diffuse_term", &im.diffuse_term},
-          {"image.specular_term", &im.specular_term}, {"image.emission", &im.emission},
-          {"image.particles", &im.particles},        {"image.soft_shadow", &im.soft_shadow},
-          {"image.final", &im.final_image}};
-}
-
-std::vector<std::pair<const char*, Volume*>> volume_slots(FrameResult& f) {
-  return {{"voxel.radiance", &f.voxels.radiance},
-          {"voxel.fragments", &f.voxels.fragments},
-          {"voxel.cas_lo", &f.voxels.cas_lo},
-          {"voxel.cas_hi", &f.voxels.cas_hi},
-          {"voxel.conservative", &f.conservative_occupancy},
-          {"voxel.holes", &f.holes}};
 }
 
 // The marcher indexes pixels and voxels with a fixed channel count: extra channels (RGBA files
@@ -88,18 +60,17 @@ Volume rgba_volume(const Volume& in, int n, const std::string& file) {
   return out;
 }
 
-int image_channels(const std::string& stage) {
-  if (stage == "gbuffer.coverage") return 1;
-  return stage == "gbuffer.material" ? 4 : 3;
-}
-
+// Every stage the set holds goes to its FrameResult slot (shadow maps without their matrices:
+// the re-trace does not read them).
 void fill_everything(const StageSet& set, FrameResult& f) {
-  for (auto& [name, slot] : image_slots(f))
-    if (set.images.count(name)) *slot = set.images.at(name);
-  for (auto& [name, slot] : volume_slots(f))
-    if (set.volumes.count(name)) *slot = set.volumes.at(name);
-  for (size_t i = 0; set.images.count("shadow_map." + std::to_string(i)); ++i)
-    f.shadow_maps.push_back({set.images.at("shadow_map." + std::to_string(i)), mat4(1.0f)});
+  for (const auto& [name, img] : set.images) {
+    const auto ref = find_stage(name);
+    if (ref && ref->row->image) *ref->row->image(f, ref->index, true) = img;
+  }
+  for (const auto& [name, vol] : set.volumes) {
+    const auto ref = find_stage(name);
+    if (ref && ref->row->volume && ref->row->index == StageIndex::None) *ref->row->volume(f, 0, true) = vol;
+  }
   for (const auto& [k, v] : set.info.items()) {
     if (k == "multibounce_energy" && all_numbers(v)) f.multibounce_energy = v.get<std::vector<double>>();
     else f.info[k] = v.is_string() ? v.get<std::string>() : v.dump();
@@ -112,17 +83,17 @@ void fill_everything(const StageSet& set, FrameResult& f) {
 // select. Isotropic iso levels beyond the chain a set holds are not guessed.
 void fill_mips(const StageSet& set, const VctSettings& s, FrameResult& f) {
   const int levels = mip_levels(s.grid);
-  f.mips.iso = {rgba_volume(f.voxels.radiance, s.grid, file_of(set, "voxel.radiance"))};
+  f.mips.iso = {rgba_volume(f.voxels.radiance, s.grid, file_of(set, stage_names::kVoxelRadiance))};
   f.voxels.radiance = f.mips.iso[0];
   for (int l = 1; l < levels; ++l) {
-    const std::string name = "mip.iso." + std::to_string(l);
+    const std::string name = stage_name(mip_row(-1), l);
     if (!set.volumes.count(name)) break;
     f.mips.iso.push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
   }
   if (!s.anisotropic) return;
   for (int d = 0; d < 6; ++d)
     for (int l = 1; l < levels; ++l) {
-      const std::string name = std::string("mip.") + kAnisoDirNames[size_t(d)] + "." + std::to_string(l);
+      const std::string name = stage_name(mip_row(d), l);
       f.mips.aniso[size_t(d)].push_back(rgba_volume(set.volumes.at(name), level_size(s.grid, l), file_of(set, name)));
     }
 }
@@ -140,16 +111,15 @@ void require_stages(const StageSet& set, const Scene& scene, const VctSettings& 
 // The images the marcher and the composite index pixel by pixel: the G-buffer, direct light and
 // particles (whenever present: the composite adds them) must be width x height.
 void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& f) {
-  for (auto& [name_c, slot] : image_slots(f)) {
-    const std::string name = name_c;
-    const bool input = std::find(std::begin(kGbufferInputs), std::end(kGbufferInputs), name) != std::end(kGbufferInputs) ||
-                       name == "image.direct" || name == "image.particles";
-    if (slot->empty() || !input) continue;
-    if (slot->width != s.width || slot->height != s.height)
-      throw InputError(file_of(set, name), "size " + std::to_string(slot->width) + "x" + std::to_string(slot->height) +
+  for (const StageRow& row : stage_rows()) {
+    if (row.cone_input == ConeInput::No || row.kind != StageKind::Image || !frame_image(f, row)) continue;
+    const std::string name = row.name;
+    Image& slot = *row.image(f, 0, false);
+    if (slot.width != s.width || slot.height != s.height)
+      throw InputError(file_of(set, name), "size " + std::to_string(slot.width) + "x" + std::to_string(slot.height) +
                                                ", the settings give " + std::to_string(s.width) + "x" +
                                                std::to_string(s.height));
-    *slot = first_channels(*slot, image_channels(name), file_of(set, name));
+    slot = first_channels(slot, row.channels, file_of(set, name));
   }
 }
 
@@ -157,8 +127,9 @@ void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& 
 // no fault of the test; say so instead. Positions must land on their own pixel (within 1 px:
 // float error and sub-pixel jitter stay far below) for all but 1 % of the covered pixels.
 void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer& g) {
+  const StageRow& shadow_row = stage_row(stage_names::kShadowMap);
   size_t shadow_maps = 0;
-  while (set.images.count("shadow_map." + std::to_string(shadow_maps))) ++shadow_maps;
+  while (set.images.count(stage_name(shadow_row, int(shadow_maps)))) ++shadow_maps;
   if (shadow_maps > 0 && shadow_maps != scene.spot_lights.size())
     throw InputError(manifest_of(set), std::to_string(shadow_maps) + " shadow maps but " + scene.source + " has " +
                                            std::to_string(scene.spot_lights.size()) + " spot light(s): wrong --scene?");
@@ -174,7 +145,7 @@ void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer&
       if (!(c.w > 0.0f && std::abs(px - (float(x) + 0.5f)) <= 1.0f && std::abs(py - (float(y) + 0.5f)) <= 1.0f)) ++off;
     }
   if (off * 100 > covered)
-    throw InputError(file_of(set, "gbuffer.position"),
+    throw InputError(file_of(set, stage_names::kGbufferPosition),
                      std::to_string(off) + " of " + std::to_string(covered) +
                          " covered pixels do not project to their pixel through the camera of " + scene.source +
                          ": wrong --scene, or images not flipped to row 0 = top?");
@@ -183,16 +154,24 @@ void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer&
 }  // namespace
 
 std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings& s) {
-  std::vector<std::string> stages(std::begin(kGbufferInputs), std::end(kGbufferInputs));
-  if (!s.soft_shadows) stages.push_back("image.direct");
-  if (wants_particles(scene, s)) stages.push_back("image.particles");
-  stages.push_back("voxel.radiance");
+  std::vector<std::string> stages;
   const int levels = mip_levels(s.grid);
-  if (!s.anisotropic)
-    for (int l = 1; l < levels; ++l) stages.push_back("mip.iso." + std::to_string(l));
-  else
-    for (const char* dir : kAnisoDirNames)
-      for (int l = 1; l < levels; ++l) stages.push_back(std::string("mip.") + dir + "." + std::to_string(l));
+  for (const StageRow& row : stage_rows()) {
+    switch (row.cone_input) {
+      case ConeInput::No: break;
+      case ConeInput::Always: stages.push_back(row.name); break;
+      case ConeInput::UnlessSoftShadows:
+        if (!s.soft_shadows) stages.push_back(row.name);
+        break;
+      case ConeInput::WithParticles:
+        if (wants_particles(scene, s)) stages.push_back(row.name);
+        break;
+      case ConeInput::ChosenMips:
+        if ((aniso_direction(row) >= 0) == s.anisotropic)
+          for (int l = 1; l < levels; ++l) stages.push_back(stage_name(row, l));
+        break;
+    }
+  }
   return stages;
 }
 

@@ -1,6 +1,8 @@
 #include "tolerance.h"
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 namespace vct::cmp {
 
@@ -11,9 +13,11 @@ double half_ulp(double v) {
 }
 
 bool is_cone_traced(const std::string& stage) {
-  return stage == "image.indirect_diffuse" || stage == "image.indirect_specular" || stage == "image.diffuse_term" ||
-         stage == "image.specular_term" || stage == "image.soft_shadow" || stage == "image.final";
+  const auto ref = find_stage(stage);
+  return ref && ref->row->own_inputs;
 }
+
+namespace {
 
 // Edge ties, as a share of the pixels the edge map flags (image_edges.h). Measured with GL
 // (llvmpipe) against the reference on the built-in scene at 32^2..512^2 and demo_room from 64^2:
@@ -23,49 +27,92 @@ bool is_cone_traced(const std::string& stage) {
 // on the built-in scene (docs/compare.md, "Edges").
 constexpr double kEdgeTieFraction = 0.025;
 
+// "2^-14" for powers of two (how the bounds are derived), else three significant digits.
+std::string number_text(double v) {
+  int e = 0;
+  if (v > 0 && std::frexp(v, &e) == 0.5) return "2^" + std::to_string(e - 1);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+std::string percent_text(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g%%", fraction * 100.0);
+  return buf;
+}
+
+std::string sum_text(const std::vector<std::string>& terms) {
+  std::string out;
+  for (const std::string& t : terms) out += (out.empty() ? "" : " + ") + t;
+  return out;
+}
+
+using T = ToleranceModel;
+
+// One row per image model: the numbers and the freedom they stand for (docs/compare.md derives
+// each one).
+std::vector<ImageModel> make_image_models() {
+  const double e = kEdgeTieFraction;
+  // id, name, abs, rel, abs_of_mean, edge ties, interior, slope, source
+  return {
+      // D32F: both sides interpolate window z in float; the spec does not fix the barycentric
+      // arithmetic (plane equations evaluated far from the vertices lose bits), so allow 2^-14
+      // (6.1e-5), 1/8 of the default constant shadow bias (5e-4): a difference inside the bound
+      // cannot flip a shadow test except at exact ties.
+      {T::Depth, "d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, e, 0.0, std::ldexp(1.0, -8),
+       "float depth interpolation, subpixel snapping; coverage and fill-rule ties at edges"},
+      {T::Coverage, "coverage-exact", 0.0, 0.0, 0.0, e, 0.0, 0.0, "same fill rule; ties at edges"},
+      {T::Position, "interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, e, 0.001, std::ldexp(1.0, -8),
+       "float interpolation, subpixel snapping"},
+      // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice
+      // the error) and renormalising a filtered (shortened) tangent-space normal scales it further.
+      {T::NormalMap, "normal-map-8bit-weights", std::ldexp(1.0, -6), std::ldexp(1.0, -7), 0.0, e, 0.0, 0.0,
+       "8-bit sub-texel + LOD weights on [-1,1] normal-map texels, renormalised"},
+      // Textured attributes: bilinear/trilinear weights with 8 sub-texel bits (D3D11 7.18.16.1,
+      // dEQP LookupPrecision) and an 8-bit mip blend: |d| <= (2+1)*2^-9*range + 8-bit texel step.
+      {T::Texture, "texture-8bit-weights", std::ldexp(1.0, -7), std::ldexp(1.0, -7), 0.0, e, 0.0, 0.0,
+       "8-bit sub-texel + LOD weights"},
+      // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
+      // ties flip at shadow edges.
+      {T::Shading, "shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), e, 0.001, 0.0,
+       "G-buffer bound through the BRDF; shadow and silhouette ties at edges"},
+      {T::ConeVisibility, "cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, e, 0.001, 0.0,
+       "8-bit weights over the cone's samples"},
+      // Cone-traced images: each fetch has weights with 8 sub-texel bits per axis plus an 8-bit
+      // LOD fraction: per fetch error <= 4 * 2^-9 = 2^-7 of the local texel maximum; the front-
+      // to-back sum weights fetches by (1-a) <= 1, so with a local max/mean contrast up to 4 the
+      // image bound is 2^-5 |ref|, plus 2^-8 of the image mean for near-black pixels.
+      {T::Filtered, "filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), e, 0.001, 0.0,
+       "8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1"},
+  };
+}
+
+}  // namespace
+
+ImageModel image_model(ToleranceModel id) {
+  static const std::vector<ImageModel> models = make_image_models();
+  for (const ImageModel& m : models)
+    if (m.id == id) return m;
+  return image_model(T::Filtered);
+}
+
 ImageModel image_model(const std::string& stage) {
-  ImageModel m;
-  if (stage.rfind("shadow_map", 0) == 0 || stage == "gbuffer.depth") {
-    // D32F: both sides interpolate window z in float; the spec does not fix the barycentric
-    // arithmetic (plane equations evaluated far from the vertices lose bits), so allow 2^-14
-    // (6.1e-5), 1/8 of the default constant shadow bias (5e-4): a
-    // difference inside the bound cannot flip a shadow test except at exact ties.
-    m = {"d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, kEdgeTieFraction, 0.0,
-         "|dz| <= 2^-14 + 2^-8 (|dz/dx|+|dz/dy|) (subpixel snapping); ties (coverage, fill rule) on up to 2.5% of edge texels -> warn"};
-    m.slope_factor = std::ldexp(1.0, -8);
-  } else if (stage == "gbuffer.coverage") {
-    m = {"coverage-exact", 0.0, 0.0, 0.0, kEdgeTieFraction, 0.0, "exact; fill-rule ties on up to 2.5% of edge pixels -> warn"};
-  } else if (stage == "gbuffer.position") {
-    m = {"interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, kEdgeTieFraction, 0.001,
-         "|d| <= 1e-4 + 2^-12 |ref| + 2^-8 (|d/dx|+|d/dy|) (float interpolation, subpixel snapping); ties on up to 2.5% of edge pixels"};
-    m.slope_factor = std::ldexp(1.0, -8);
-  } else if (stage == "gbuffer.normal") {
-    // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice the
-    // error) and renormalising a filtered (shortened) tangent-space normal scales it further.
-    m = {"normal-map-8bit-weights", std::ldexp(1.0, -6), std::ldexp(1.0, -7), 0.0, kEdgeTieFraction, 0.0,
-         "|d| <= 2^-6 + 2^-7 |ref| (8-bit sub-texel + LOD weights on [-1,1] normal-map texels, renormalised); ties on up to 2.5% of edge pixels"};
-  } else if (stage.rfind("gbuffer.", 0) == 0) {
-    // Textured attributes: bilinear/trilinear weights with 8 sub-texel bits (D3D11 7.18.16.1,
-    // dEQP LookupPrecision) and an 8-bit mip blend: |d| <= (2+1)*2^-9*range + 8-bit texel step.
-    m = {"texture-8bit-weights", std::ldexp(1.0, -7), std::ldexp(1.0, -7), 0.0, kEdgeTieFraction, 0.0,
-         "|d| <= 2^-7 + 2^-7 |ref| (8-bit sub-texel + LOD weights); ties on up to 2.5% of edge pixels"};
-  } else if (stage == "image.direct" || stage == "image.emission") {
-    // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
-    // ties flip at shadow edges.
-    m = {"shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), kEdgeTieFraction, 0.001,
-         "|d| <= 2^-6 |ref| + 2^-10 mean|ref| (G-buffer bound through the BRDF); shadow/silhouette ties on up to 2.5% of edge pixels"};
-  } else if (stage == "image.soft_shadow") {
-    m = {"cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, kEdgeTieFraction, 0.001,
-         "|d| <= 2^-5 (8-bit weights over the cone's samples); ties on up to 2.5% of edge pixels"};
-  } else {
-    // Cone-traced images: each fetch has weights with 8 sub-texel bits per axis plus an 8-bit
-    // LOD fraction: per fetch error <= 4 * 2^-9 = 2^-7 of the local texel maximum; the front-to-
-    // back sum weights fetches by (1-a) <= 1, so with a local max/mean contrast up to 4 the
-    // image bound is 2^-5 |ref|, plus 2^-8 of the image mean for near-black pixels.
-    m = {"filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), kEdgeTieFraction, 0.001,
-         "|d| <= 2^-5 |ref| + 2^-8 mean|ref| (8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1); ties on up to 2.5% of edge pixels"};
-  }
-  return m;
+  const auto ref = find_stage(stage);
+  return image_model(ref && ref->row->model != T::None ? ref->row->model : T::Filtered);
+}
+
+std::string bound_text(const ImageModel& m) {
+  std::vector<std::string> terms;
+  if (m.abs > 0) terms.push_back(number_text(m.abs));
+  if (m.rel > 0) terms.push_back(number_text(m.rel) + " |ref|");
+  if (m.abs_of_mean > 0) terms.push_back(number_text(m.abs_of_mean) + " mean|ref|");
+  if (m.slope_factor > 0) terms.push_back(number_text(m.slope_factor) + " (|d/dx|+|d/dy|)");
+  std::string out = terms.empty() ? "exact" : "|d| <= " + sum_text(terms);
+  out += " (" + m.source + ")";
+  if (m.edge_tie_fraction > 0) out += "; ties on up to " + percent_text(m.edge_tie_fraction) + " of edge pixels -> warn";
+  if (m.interior_fraction > 0) out += "; up to " + percent_text(m.interior_fraction) + " of interior pixels -> warn";
+  return out;
 }
 
 int texture_slack_channel(const std::string& stage, const Image& slack) {
@@ -80,42 +127,58 @@ int texture_slack_channel(const std::string& stage, const Image& slack) {
   return -1;
 }
 
+double VoxelModel::bound(double ref, double fragments) const {
+  const double r = std::abs(ref);
+  return abs + rel * r + fragments * per_fragment_rel * r + half_ulps * half_ulp(ref);
+}
+
+std::string bound_text(const VoxelModel& m) {
+  if (m.cas_interval) return "within the reference's [cas_lo, cas_hi] +- " + number_text(m.abs) + " (" + m.source + ")";
+  std::vector<std::string> terms;
+  if (m.abs > 0) terms.push_back(number_text(m.abs));
+  if (m.rel > 0) terms.push_back(number_text(m.rel) + " |ref|");
+  if (m.half_ulps > 0) terms.push_back(std::to_string(int(m.half_ulps)) + " half-ulp(ref)");
+  if (m.per_fragment_rel > 0) terms.push_back("n_frag * " + number_text(m.per_fragment_rel) + " |ref|");
+  return (terms.empty() ? std::string("exact") : "|d| <= " + sum_text(terms)) + " (" + m.source + ")";
+}
+
 VoxelModel voxel_model(const std::string& storage, const std::string& reduction, const std::string& ref_reduction) {
-  VoxelModel m;
-  if (reduction == "fixed_point" && ref_reduction != "fixed_point") {
+  using V = VoxelModelId;
+  // Storage rounding of a value both sides computed alike: 1/255 for RGBA8 UNORM (rounding vs
+  // truncation), two half-ulps for RGBA16F (binary16, any rounding mode), none for RGBA32F here.
+  const double unorm8 = storage == "rgba8" ? 1.0 / 255.0 : 0.0;
+  const double half_ulps = storage == "rgba16f" ? 2.0 : 0.0;
+  if (reduction == "fixed_point" && ref_reduction != "fixed_point")
     // Fixed point (2^-14 quanta, rounded per fragment and at the resolve) against an exact float
     // mean: at most one quantum apart before storage, then the storage rounding.
-    m = {"fixed-point-vs-exact", std::ldexp(1.0, -14), storage == "rgba8" ? 0.0 : std::ldexp(1.0, -9), 0.0, false,
-         "|d| <= 2^-14 + storage rounding (2 half-ulp or 1/255): fixed-point quanta against the exact mean"};
-    if (storage == "rgba8") m.abs += 1.0 / 255.0;
-  } else if (reduction == "fixed_point") {
+    // Float storage: 2^-9 |ref| covers two binary16 half-ulps (each <= 2^-10 |ref|).
+    return {V::FixedPointVsExact, "fixed-point-vs-exact", std::ldexp(1.0, -14) + unorm8,
+            storage == "rgba8" ? 0.0 : std::ldexp(1.0, -9), 0.0, 0.0, false,
+            "fixed-point quanta against the exact mean, then the storage rounding"};
+  if (reduction == "fixed_point")
     // The reduction itself is exact (integer sums, same rounding on both sides: bit-identical
     // when fragment values agree, see tests/gl). The fragment values are each backend's own
-    // float shading at its own interpolated position, so they carry a shading error; stored as
-    // binary16 that shows as one half-ulp flip, plus 2^-10 relative for the shading itself.
-    // Textured albedo and emission carry the G-buffer's texture bound (8-bit sub-texel weights,
-    // 2^-7 relative: the "texture-8bit-weights" model). A shading difference also moves a
-    // fragment's rounding to the fixed-point grid by one quantum (2^-14), which is all that shows
-    // on near-black voxels.
-    m = {"fixed-point-exact+shading", std::ldexp(1.0, -14), std::ldexp(1.0, -7), 0.0, false,
-         "exact reduction; |d| <= 2^-14 + 2^-7 |ref| (+ 2 half-ulp for RGBA16F, 1/255 for RGBA8): each fragment's float shading and 8-bit texture filtering weights"};
-    if (storage == "rgba8") m.abs += 1.0 / 255.0;
-  } else if (reduction == "cas_rgba8") {
-    m = {"cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, true,
-         "within the reference's [cas_lo, cas_hi] (any fragment order) +- 1/255"};
-  } else if (storage == "rgba8") {
-    m = {"rgba8-quantised", 1.0 / 255.0, 0.0, 0.0, false, "|d| <= 1/255 (8-bit UNORM: rounding vs truncation)"};
-  } else if (storage == "rgba16f") {
-    m = {"rgba16f-ulp", 0.0, std::ldexp(1.0, -9), std::ldexp(1.0, -23), false,
-         "|d| <= 2 half-ulp(ref) + n_frag * 2^-23 |ref| (float atomics sum in any order, stored as binary16)"};
-  } else {
-    m = {"rgba32f-sum", 1e-7, 0.0, std::ldexp(1.0, -23), false, "|d| <= n_frag * 2^-23 |ref| (float sum order)"};
-  }
-  return m;
+    // float shading at its own interpolated position, so they carry a shading error: 2^-7
+    // relative, the G-buffer's texture bound (8-bit sub-texel weights, "texture-8bit-weights")
+    // that textured albedo and emission carry. A shading difference also moves a fragment's
+    // rounding to the fixed-point grid by one quantum (2^-14), which is all that shows on
+    // near-black voxels.
+    return {V::FixedPointExactShading, "fixed-point-exact+shading", std::ldexp(1.0, -14) + unorm8, std::ldexp(1.0, -7),
+            0.0, half_ulps, false,
+            "exact reduction; each fragment's float shading and 8-bit texture filtering weights, then the storage rounding"};
+  if (reduction == "cas_rgba8")
+    return {V::CasInterval, "cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, 0.0, true, "any fragment order"};
+  if (storage == "rgba8")
+    return {V::Rgba8Quantised, "rgba8-quantised", 1.0 / 255.0, 0.0, 0.0, 0.0, false, "8-bit UNORM: rounding vs truncation"};
+  if (storage == "rgba16f")
+    return {V::Rgba16fUlp, "rgba16f-ulp", 0.0, 0.0, std::ldexp(1.0, -23), 2.0, false,
+            "float atomics sum in any order, stored as binary16"};
+  return {V::Rgba32fSum, "rgba32f-sum", 1e-7, 0.0, std::ldexp(1.0, -23), 0.0, false, "float sum order"};
 }
 
 MipBound mip_bound(const VoxelModel& base, const std::string& storage, int level, bool anisotropic, double cas_width) {
-  MipBound b{base.abs + cas_width, base.rel + 2.0 * base.per_fragment_rel * 8.0};
+  // A base level's half-ulps are at most 2^-10 |ref| each.
+  MipBound b{base.abs + cas_width, base.rel + base.half_ulps * std::ldexp(1.0, -10) + 2.0 * base.per_fragment_rel * 8.0};
   double q_abs = 0.0, q_rel = 0.0;  // one storage rounding per level (any rounding mode)
   if (storage == "rgba8") q_abs = 1.0 / 255.0;
   else if (storage == "rgba16f") q_rel = std::ldexp(1.0, -10), q_abs = std::ldexp(1.0, -24);

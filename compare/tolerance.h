@@ -5,10 +5,12 @@
 #include <string>
 
 #include "compare/stage_set.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
 struct ImageModel {
+  ToleranceModel id = ToleranceModel::Filtered;
   std::string name;     // e.g. "d32f-depth"
   double abs = 0.0;     // absolute part of the bound
   double rel = 0.0;     // relative part (times |reference|)
@@ -20,16 +22,22 @@ struct ImageModel {
   double edge_tie_fraction = 0.0;
   // Beyond-bound pixels away from edges: up to this fraction of all pixels -> warn, more -> fail.
   double interior_fraction = 0.0;
-  std::string bound_text;  // for run.json / the report
   // Rasterised attributes: vertices snap to a 2^-8 pixel grid (GL_SUBPIXEL_BITS = 8 on llvmpipe
   // and current GPUs; GL requires >= 4), so an interpolated value may move by that much times
   // its screen-space slope: bound += slope_factor * (|d/dx| + |d/dy|) from the reference.
   double slope_factor = 0.0;
+  std::string source;  // the freedom the numbers stand for, and where it is specified
 };
+
+/// The bound an image model states, written from its numbers (for run.json and the report).
+std::string bound_text(const ImageModel& m);
 
 /// Cone-traced stages (they sample the voxels, so voxel ties upstream move them).
 bool is_cone_traced(const std::string& stage);
 
+/// The model of a tolerance id, and of a stage by its registry row (names the registry does not
+/// know are judged as filtered radiance).
+ImageModel image_model(ToleranceModel id);
 ImageModel image_model(const std::string& stage);
 
 /// Channel of the reference's texture slack image (GBuffer::texture_slack) that widens `stage`'s
@@ -39,13 +47,23 @@ ImageModel image_model(const std::string& stage);
 int texture_slack_channel(const std::string& stage, const Image& slack);
 
 /// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.
+enum class VoxelModelId { FixedPointVsExact, FixedPointExactShading, CasInterval, Rgba8Quantised, Rgba16fUlp, Rgba32fSum };
+
 struct VoxelModel {
-  std::string name;  // "fixed-point-exact", "cas-rgba8-interval", "rgba8-quantised", "rgba16f-ulp", "rgba32f-sum"
+  VoxelModelId id = VoxelModelId::Rgba32fSum;
+  std::string name;  // "fixed-point-exact+shading", "cas-rgba8-interval", "rgba16f-ulp", ...
   double abs = 0.0, rel = 0.0;
   double per_fragment_rel = 0.0;  // float summation order: n * 2^-23 * |ref|
+  double half_ulps = 0.0;         // binary16 storage: this many half-ulps of |ref|
   bool cas_interval = false;      // use the reference's [cas_lo, cas_hi] +- abs
-  std::string bound_text;
+  std::string source;
+
+  /// |test - ref| allowed for a voxel channel of value `ref` reduced from `fragments` fragments.
+  double bound(double ref, double fragments) const;
 };
+
+/// The bound a voxel model states, written from its numbers.
+std::string bound_text(const VoxelModel& m);
 
 /// `ref_reduction`: how the reference reduced (fixed point is exact only against fixed point).
 VoxelModel voxel_model(const std::string& storage, const std::string& reduction,

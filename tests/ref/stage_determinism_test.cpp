@@ -84,7 +84,7 @@ TEST(StageDumps, WritesTheDocumentedNames) {
   const std::string dir = ::testing::TempDir() + "/vct_stage_dumps";
   std::filesystem::remove_all(dir);
   RunDir run(dir);
-  write_frame_dumps(run, f, s, st);
+  write_frame_dumps(run, f, s);
   for (const char* name :
        {"shadow_map_0.exr", "shadow_map_0.png", "gbuffer_position.exr", "gbuffer_normal.png", "gbuffer_albedo.exr",
         "gbuffer_material.exr", "gbuffer_depth.exr", "gbuffer_coverage.png", "gbuffer_emission.exr", "direct.exr",

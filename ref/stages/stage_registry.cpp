@@ -1,0 +1,193 @@
+#include "stages/stage_registry.h"
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace vct {
+
+namespace {
+
+// Slot accessors. Single stages ignore the index; families grow on demand when asked to.
+template <Image GBuffer::*M>
+Image* gbuffer(FrameResult& f, int, bool) { return &(f.gbuffer.*M); }
+template <Image FrameImages::*M>
+Image* frame_image_slot(FrameResult& f, int, bool) { return &(f.images.*M); }
+template <Volume VoxelGrid::*M>
+Volume* voxels(FrameResult& f, int, bool) { return &(f.voxels.*M); }
+
+Image* shadow_map(FrameResult& f, int i, bool grow) {
+  if (i < 0) return nullptr;
+  if (size_t(i) >= f.shadow_maps.size()) {
+    if (!grow) return nullptr;
+    f.shadow_maps.resize(size_t(i) + 1);
+  }
+  return &f.shadow_maps[size_t(i)].depth;
+}
+Volume* conservative(FrameResult& f, int, bool) { return &f.conservative_occupancy; }
+Volume* holes(FrameResult& f, int, bool) { return &f.holes; }
+// iso[0] is the base level itself (voxel.radiance); the family starts at level 1.
+Volume* iso_level(FrameResult& f, int level, bool grow) {
+  if (level < 1) return nullptr;
+  if (size_t(level) >= f.mips.iso.size()) {
+    if (!grow) return nullptr;
+    f.mips.iso.resize(size_t(level) + 1);
+  }
+  return &f.mips.iso[size_t(level)];
+}
+// aniso[d][0] is level 1 of direction d (the base level is shared with iso[0]).
+template <int D>
+Volume* aniso_level(FrameResult& f, int level, bool grow) {
+  auto& chain = f.mips.aniso[size_t(D)];
+  if (level < 1) return nullptr;
+  if (size_t(level) > chain.size()) {
+    if (!grow) return nullptr;
+    chain.resize(size_t(level));
+  }
+  return &chain[size_t(level) - 1];
+}
+
+using K = StageKind;
+using X = StageIndex;
+using R = StageRole;
+using P = Preview;
+using T = ToleranceModel;
+using C = ConeInput;
+namespace st = stage_names;
+
+// clang-format off
+const std::vector<StageRow> kRows = {
+  // name                        dump stem                        kind       index        role          preview      model              own    cone input            ch PT AOV                  image slot                                         volume slot
+  {st::kShadowMap,             "shadow_map_{}",                 K::Image,  X::Light,    R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     shadow_map,                                        nullptr},
+  {st::kGbufferCoverage,       "gbuffer_coverage",              K::Image,  X::None,     R::Judged,    P::Unit,     T::Coverage,       false, C::Always,            1, "",                     gbuffer<&GBuffer::coverage>,                       nullptr},
+  {st::kGbufferDepth,          "gbuffer_depth",                 K::Image,  X::None,     R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     gbuffer<&GBuffer::depth>,                          nullptr},
+  {st::kGbufferPosition,       "gbuffer_position",              K::Image,  X::None,     R::Judged,    P::Position, T::Position,       false, C::Always,            3, "",                     gbuffer<&GBuffer::position>,                       nullptr},
+  {st::kGbufferNormal,         "gbuffer_normal",                K::Image,  X::None,     R::Judged,    P::Signed,   T::NormalMap,      false, C::Always,            3, "",                     gbuffer<&GBuffer::normal>,                         nullptr},
+  {st::kGbufferAlbedo,         "gbuffer_albedo",                K::Image,  X::None,     R::Judged,    P::Color,    T::Texture,        false, C::Always,            3, "",                     gbuffer<&GBuffer::albedo>,                         nullptr},
+  {st::kGbufferMaterial,       "gbuffer_material",              K::Image,  X::None,     R::Judged,    P::Unit,     T::Texture,        false, C::Always,            4, "",                     gbuffer<&GBuffer::material>,                       nullptr},
+  {st::kGbufferSpecularColor,  "gbuffer_specular_color",        K::Image,  X::None,     R::Judged,    P::Color,    T::Texture,        false, C::Always,            3, "",                     gbuffer<&GBuffer::specular_color>,                 nullptr},
+  {st::kGbufferEmission,       "gbuffer_emission",              K::Image,  X::None,     R::Judged,    P::Color,    T::Texture,        false, C::Always,            3, "",                     gbuffer<&GBuffer::emission>,                       nullptr},
+  {st::kGbufferTextureSlack,   "",                              K::Image,  X::None,     R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     gbuffer<&GBuffer::texture_slack>,                  nullptr},
+  {st::kImageDirect,           "direct",                        K::Image,  X::None,     R::Judged,    P::Color,    T::Shading,        false, C::UnlessSoftShadows, 3, "pt_direct",            frame_image_slot<&FrameImages::direct>,            nullptr},
+  {st::kVoxelOccupancy,        "voxels_occupancy",              K::Volume, X::None,     R::Derived,   P::Volume,   T::VoxelOccupancy, false, C::No,                0, "",                     nullptr,                                           nullptr},
+  {st::kVoxelRadiance,         "voxels_radiance_L0",            K::Volume, X::None,     R::Judged,    P::Volume,   T::VoxelRadiance,  false, C::Always,            4, "",                     nullptr,                                           voxels<&VoxelGrid::radiance>},
+  {st::kVoxelFragments,        "voxels_fragments",              K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::fragments>},
+  {st::kVoxelCasLo,            "voxels_cas_lo",                 K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::cas_lo>},
+  {st::kVoxelCasHi,            "voxels_cas_hi",                 K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::cas_hi>},
+  {st::kVoxelConservative,     "voxels_conservative_occupancy", K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           conservative},
+  {st::kVoxelHoles,            "holes",                         K::Volume, X::None,     R::Judged,    P::Volume,   T::VoxelHoles,     false, C::No,                0, "",                     nullptr,                                           holes},
+  {st::kMipIso,                "voxels_radiance_L{}",           K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           iso_level},
+  {st::kMipPosx,               "aniso_posx_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kPosX>},
+  {st::kMipNegx,               "aniso_negx_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kNegX>},
+  {st::kMipPosy,               "aniso_posy_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kPosY>},
+  {st::kMipNegy,               "aniso_negy_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kNegY>},
+  {st::kMipPosz,               "aniso_posz_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kPosZ>},
+  {st::kMipNegz,               "aniso_negz_L{}",                K::Volume, X::MipLevel, R::Judged,    P::Volume,   T::Mip,            false, C::ChosenMips,        4, "",                     nullptr,                                           aniso_level<kNegZ>},
+  {st::kImageSoftShadow,       "soft_shadow",                   K::Image,  X::None,     R::Judged,    P::Unit,     T::ConeVisibility, true,  C::No,                1, "",                     frame_image_slot<&FrameImages::soft_shadow>,       nullptr},
+  {st::kImageIndirectDiffuse,  "indirect_diffuse",              K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       true,  C::No,                3, "",                     frame_image_slot<&FrameImages::indirect_diffuse>,  nullptr},
+  {st::kImageIndirectSpecular, "indirect_specular",             K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       true,  C::No,                3, "",                     frame_image_slot<&FrameImages::indirect_specular>, nullptr},
+  {st::kImageDiffuseTerm,      "diffuse_term",                  K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       true,  C::No,                3, "pt_indirect_diffuse",  frame_image_slot<&FrameImages::diffuse_term>,      nullptr},
+  {st::kImageSpecularTerm,     "specular_term",                 K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       true,  C::No,                3, "pt_indirect_specular", frame_image_slot<&FrameImages::specular_term>,     nullptr},
+  {st::kImageEmission,         "emission",                      K::Image,  X::None,     R::Judged,    P::Color,    T::Shading,        false, C::No,                3, "pt_emission",          frame_image_slot<&FrameImages::emission>,          nullptr},
+  {st::kImageParticles,        "particles",                     K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       false, C::WithParticles,     3, "pt_particles",         frame_image_slot<&FrameImages::particles>,         nullptr},
+  {st::kImageFinal,            "final",                         K::Image,  X::None,     R::Judged,    P::Color,    T::Filtered,       true,  C::No,                3, "pt_full",              frame_image_slot<&FrameImages::final_image>,       nullptr},
+};
+// clang-format on
+
+// "12" -> 12; nullopt for empty, signed or non-digit text (std::stol would accept " 1" or "1x").
+std::optional<int> parse_index(const std::string& s) {
+  if (s.empty() || s.size() > 6) return std::nullopt;
+  int v = 0;
+  for (char c : s) {
+    if (c < '0' || c > '9') return std::nullopt;
+    v = v * 10 + (c - '0');
+  }
+  return v;
+}
+
+}  // namespace
+
+const std::vector<StageRow>& stage_rows() { return kRows; }
+
+std::optional<StageRef> find_stage(const std::string& name) {
+  for (const StageRow& row : kRows) {
+    if (row.index == StageIndex::None) {
+      if (name == row.name) return StageRef{&row, 0};
+      continue;
+    }
+    const std::string prefix = std::string(row.name) + ".";
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const auto i = parse_index(name.substr(prefix.size()));
+    if (!i || (row.index == StageIndex::MipLevel && *i < 1)) return std::nullopt;
+    return StageRef{&row, *i};
+  }
+  return std::nullopt;
+}
+
+std::optional<StageKind> namespace_kind(const std::string& name) {
+  const std::string ns = name.substr(0, name.find('.') + 1);
+  if (ns.empty()) return std::nullopt;
+  for (const StageRow& row : kRows) {
+    const std::string row_name = row.name;
+    if (row_name.compare(0, ns.size(), ns) == 0 || row_name + "." == ns) return row.kind;
+  }
+  return std::nullopt;
+}
+
+const StageRow& stage_row(const std::string& name) {
+  for (const StageRow& row : kRows)
+    if (name == row.name) return row;
+  throw std::logic_error("stage registry has no row '" + name + "'");
+}
+
+std::string stage_name(const StageRow& row, int index) {
+  return row.index == StageIndex::None ? std::string(row.name) : std::string(row.name) + "." + std::to_string(index);
+}
+
+std::string dump_stem(const StageRow& row, int index) {
+  std::string s = row.dump_stem;
+  const size_t at = s.find("{}");
+  if (at != std::string::npos) s.replace(at, 2, std::to_string(index));
+  return s;
+}
+
+const StageRow& mip_row(int direction) {
+  for (const StageRow& row : kRows)
+    if (row.index == StageIndex::MipLevel && aniso_direction(row) == direction) return row;
+  throw std::logic_error("stage registry has no mip chain for direction " + std::to_string(direction));
+}
+
+int aniso_direction(const StageRow& row) {
+  const std::string name = row.name;
+  for (int d = 0; d < 6; ++d)
+    if (name == std::string("mip.") + kAnisoDirNames[size_t(d)]) return d;
+  return -1;
+}
+
+const Image* frame_image(const FrameResult& f, const StageRow& row, int index) {
+  if (!row.image) return nullptr;
+  // The accessors only take the address of a member (no growth without `grow`), so reading
+  // through a const frame is safe.
+  const Image* img = row.image(const_cast<FrameResult&>(f), index, false);
+  return img && !img->empty() ? img : nullptr;
+}
+
+const Volume* frame_volume(const FrameResult& f, const StageRow& row, int index) {
+  if (!row.volume) return nullptr;
+  const Volume* vol = row.volume(const_cast<FrameResult&>(f), index, false);
+  return vol && !vol->data.empty() ? vol : nullptr;
+}
+
+std::vector<int> frame_members(const FrameResult& f, const StageRow& row) {
+  std::vector<int> out;
+  const int first = row.index == StageIndex::MipLevel ? 1 : 0;
+  for (int i = first;; ++i) {
+    const bool held = row.kind == StageKind::Image ? row.image && row.image(const_cast<FrameResult&>(f), i, false)
+                                                   : row.volume && row.volume(const_cast<FrameResult&>(f), i, false);
+    if (!held) break;
+    if (frame_image(f, row, i) || frame_volume(f, row, i)) out.push_back(i);
+    if (row.index == StageIndex::None) break;
+  }
+  return out;
+}
+
+}  // namespace vct
