@@ -15,10 +15,9 @@
 #include "pt/ray_throughput.h"
 #include "stages/pipeline.h"
 
-#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
+#ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
-#define VCT_BENCH_GL 1
 #endif
 
 namespace vct::app {
@@ -62,7 +61,7 @@ nlohmann::json ref_times(const Scene& scene, const Settings& s, int repeat) {
 // GL stage times (GPU timer queries) after one warm-up frame (shader compilation, driver caches);
 // null with the reason in `note` when there is no GL.
 nlohmann::json gl_times(const Scene& scene, const Settings& s, int repeat, std::string& note, std::string& renderer) {
-#ifdef VCT_BENCH_GL
+#ifdef VCT_HAVE_GL
   try {
     gl::GlContext ctx;
     renderer = ctx.renderer() + " | " + ctx.version();

@@ -19,9 +19,8 @@
 #include "stages/explain.h"
 #include "stages/pipeline.h"
 
-#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
+#ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_pipeline.h"
-#define VCT_RENDER_GL 1
 #endif
 
 namespace vct::app {
@@ -114,7 +113,7 @@ ivec2 parse_pixel(const std::string& text) {
 
 FrameResult render_frame(const Scene& scene, const Settings& s, const std::string& backend) {
   if (backend == "ref") return render_ref_frame(scene, s);
-#ifdef VCT_RENDER_GL
+#ifdef VCT_HAVE_GL
   return vct::gl::render_gl_frame(scene, s);
 #else
   throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");

@@ -16,10 +16,7 @@
 #include "io/run_dir.h"
 #include "io/atomic_file.h"
 #include "options.h"
-#if __has_include("stages/explain.h")
 #include "stages/explain.h"
-#define VCT_HAVE_EXPLAIN 1
-#endif
 #include "scene/gltf_loader.h"
 #include "validate_run.h"
 #include "verdict_summary.h"
@@ -63,16 +60,12 @@ void write_pt(RunDir& run, const PtRun& pt) {
 
 // One pixel's cones for the walkthrough (the centre pixel: it sees the back wall and the floor).
 void write_explanation(RunDir& run, const Scene& scene, const BackendRun& ref, const Settings& s) {
-#ifdef VCT_HAVE_EXPLAIN
   if (!ref.ok()) return;
   const int x = s.vct.width / 2, y = s.vct.height * 3 / 4;
   const PixelExplanation e = explain_pixel(scene, *ref.frame, s.vct, x, y);
   RunDir ed(run.file("explain"));
   write_text_atomically(ed.file("explain.json"), e.json.dump(1) + "\n");
   write_png_linear(ed.file("explain.png"), e.picture, 0.0f, 1.0f);
-#else
-  (void)run, (void)scene, (void)ref, (void)s;
-#endif
 }
 
 nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {

@@ -13,5 +13,7 @@ void register_pathtrace(CLI::App& app, int& exit_code);
 void register_compare(CLI::App& app, int& exit_code);
 void register_validate(CLI::App& app, int& exit_code);
 void register_bench(CLI::App& app, int& exit_code);
+void register_settings(CLI::App& app, int& exit_code);
+void register_stages(CLI::App& app, int& exit_code);
 
 }  // namespace vct::app

@@ -2,7 +2,9 @@
 
 #include <filesystem>
 
+#include "core/error.h"
 #include "core/parallel.h"
+#include "core/settings_table.h"
 
 namespace vct::app {
 
@@ -10,6 +12,8 @@ void add_common_flags(CLI::App* cmd, CommonOptions& o) {
   cmd->add_option("--out", o.out, "Run directory to write (created if missing)");
   cmd->add_option("--config", o.config, "Settings JSON file (keys as in run.json's \"settings\")");
   cmd->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--set", o.sets, "KEY=VALUE: any setting (vct.KEY or pt.KEY; bare keys are vct.*); 'vct settings' lists them")
+      ->take_all();
 }
 
 void add_image_flags(CLI::App* cmd, CommonOptions& o) {
@@ -28,6 +32,11 @@ void add_spp_flag(CLI::App* cmd, CommonOptions& o) {
 Settings resolve_settings(const CommonOptions& o, const Settings& base) {
   Settings s = base;
   if (!o.config.empty()) s = load_settings_file(o.config, s);
+  for (const std::string& kv : o.sets) {
+    const size_t eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--set", "expected KEY=VALUE, got '" + kv + "'");
+    s = with_setting(s, kv.substr(0, eq), kv.substr(eq + 1), "--set");
+  }
   if (o.width) s.vct.width = s.pt.width = *o.width;
   if (o.height) s.vct.height = s.pt.height = *o.height;
   if (o.grid) s.vct.grid = *o.grid;

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -15,9 +16,10 @@ struct CommonOptions {
   std::string config;  // --config FILE.json
   int threads = 0;     // --threads N
   std::optional<int> width, height, grid, spp;
+  std::vector<std::string> sets;  // --set KEY=VALUE ... (any row of core/settings_table.h)
 };
 
-/// --out, --config, --threads.
+/// --out, --config, --threads, --set.
 void add_common_flags(CLI::App* cmd, CommonOptions& o);
 /// --width, --height (image size for VCT and the path tracer).
 void add_image_flags(CLI::App* cmd, CommonOptions& o);
@@ -26,7 +28,7 @@ void add_grid_flag(CLI::App* cmd, CommonOptions& o);
 /// --spp N.
 void add_spp_flag(CLI::App* cmd, CommonOptions& o);
 
-/// `base` <- --config file <- flags; validated (InputError on a bad value); threads applied.
+/// `base` <- --config file <- --set <- flags; validated (InputError on a bad value); threads applied.
 Settings resolve_settings(const CommonOptions& o, const Settings& base = Settings());
 
 /// Default run directory when --out is not given: runs/<command>-<scene stem>.

@@ -7,19 +7,12 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/settings_table.h"
 #include "io/run_dir.h"
-
-#if __has_include("stages/pipeline.h")
-#include "stages/pipeline.h"
-#define VCT_HAVE_REF_PIPELINE 1
-#endif
-#if defined(VCT_HAVE_GL) && __has_include("gl/gl_pipeline.h")
-#include "gl/gl_pipeline.h"
-#define VCT_HAVE_GL_PIPELINE 1
-#endif
-#if __has_include("pt/path_tracer.h")
 #include "pt/path_tracer.h"
-#define VCT_HAVE_PT 1
+#include "stages/pipeline.h"
+#ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
+#include "gl/gl_pipeline.h"
 #endif
 
 namespace vct::app {
@@ -43,20 +36,16 @@ Settings validate_defaults() {
 
 BackendRun run_ref_backend(const Scene& scene, const Settings& s) {
   BackendRun r;
-#ifdef VCT_HAVE_REF_PIPELINE
   Stopwatch sw;
   r.frame = render_ref_frame(scene, s);
   r.ms = sw.ms();
   r.status = "ok";
-#else
-  (void)scene, (void)s;
-#endif
   return r;
 }
 
 BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
   BackendRun r;
-#ifdef VCT_HAVE_GL_PIPELINE
+#ifdef VCT_HAVE_GL
   try {
     Stopwatch sw;
     r.frame = gl::render_gl_frame(scene, s);
@@ -72,6 +61,7 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
   }
 #else
   (void)scene, (void)s;
+  r.status = "unavailable: built without the GL backend (VCT_BUILD_GL=OFF)";
 #endif
   return r;
 }
@@ -86,7 +76,6 @@ Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
 
 PtRun run_pt_backend(const Scene& scene, const Settings& s) {
   PtRun r;
-#ifdef VCT_HAVE_PT
   Stopwatch sw;
   pt::PathTracer tracer(scene, s.pt);
   pt::Accumulator acc(s.pt.width, s.pt.height);
@@ -99,9 +88,6 @@ PtRun run_pt_backend(const Scene& scene, const Settings& s) {
   r.spp = int(acc.samples());
   r.ms = sw.ms();
   r.status = "ok";
-#else
-  (void)scene, (void)s;
-#endif
   return r;
 }
 
@@ -129,24 +115,16 @@ Settings apply_sweep_value(const Settings& s, const std::string& key_in, const s
       {"storage", "storage"}, {"grid", "grid"}};
   auto a = kAliases.find(key_in);
   const std::string key = a != kAliases.end() ? a->second : key_in;
-  nlohmann::json j = s;
-  if (!j["vct"].contains(key)) throw InputError("--sweep", "unknown settings key '" + key_in + "'");
-  nlohmann::json v;
-  try {
-    v = nlohmann::json::parse(value);
-  } catch (const std::exception&) {
-    v = value;  // enum names: light_model=gltf,seed
-  }
   // cones=0,5,9: 0 switches the diffuse cones off, N > 0 traces N of them.
-  if (key == "diffuse_cones" && v.is_number()) {
-    const bool on = v.get<double>() != 0.0;
-    if (on) j["vct"]["diffuse_cone_count"] = v;  // range checked by validate_settings
-    v = on;
+  Settings out = s;
+  if (key == "diffuse_cones" && value != "true" && value != "false") {
+    const Settings counted = value == "0" ? s : with_setting(s, "diffuse_cone_count", value, "--sweep");
+    out = with_setting(counted, key, value == "0" ? "false" : "true", "--sweep");
+  } else {
+    out = with_setting(s, key, value, "--sweep");
   }
-  j["vct"][key] = v;
-  if (key == "light_model") j["pt"]["light_model"] = v;
-  Settings out;
-  from_json(j, out);
+  // The path tracer renders the light model the VCT frame assumes.
+  if (key == "light_model") out = with_setting(out, "pt.light_model", value, "--sweep");
   validate_settings(out);
   return out;
 }

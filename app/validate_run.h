@@ -15,17 +15,17 @@
 
 namespace vct::app {
 
-/// What one backend produced: status "ok", "unavailable: ..." (no GL context), "not built yet",
-/// "error: ...".
+/// What one backend produced: status "ok", "unavailable: ..." (no GL context, or a build
+/// without GL), "error: ...".
 struct BackendRun {
-  std::string status = "not built yet";
+  std::string status = "not run";
   std::optional<FrameResult> frame;
   double ms = 0.0;
   bool ok() const { return frame.has_value(); }
 };
 
 struct PtRun {
-  std::string status = "not built yet";
+  std::string status = "not run";
   std::map<std::string, Image> aovs;  // pt_full, pt_full_var, ...
   double ms = 0.0;
   int spp = 0;

@@ -56,6 +56,15 @@ void check_setting_range(const SettingField<S>& f, const S& s, const std::string
 /// text as strings. Throws InputError naming `what` (e.g. "--set") for malformed text.
 nlohmann::json setting_value_from_text(SettingType type, const std::string& text, const std::string& what);
 
+/// A setting's value as people write it: floats shortest ("0.0005", not 0.0005000000237),
+/// choices and text unquoted.
+std::string value_text(const nlohmann::json& v);
+
+/// `s` with one field set from text: `key` is "vct.K", "pt.K" or a bare vct key K; the text is
+/// parsed by the field's type. Not validated (validate_settings checks the ranges). Throws
+/// InputError(what, ...) naming an unknown key or malformed text.
+Settings with_setting(const Settings& s, const std::string& key, const std::string& text, const std::string& what);
+
 /// The table as Markdown (docs/settings.md is this output; a test keeps it current).
 std::string settings_markdown();
 

@@ -1,0 +1,339 @@
+#include "core/settings_table.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <type_traits>
+
+#include "core/error.h"
+
+namespace vct {
+
+namespace {
+
+// JSON names of the enumerations (the settings files' and run.json's spelling).
+template <typename Enum>
+const std::vector<std::pair<Enum, const char*>>& enum_names();
+template <>
+const std::vector<std::pair<LightModel, const char*>>& enum_names() {
+  static const std::vector<std::pair<LightModel, const char*>> m{{LightModel::Gltf, "gltf"}, {LightModel::Seed, "seed"}};
+  return m;
+}
+template <>
+const std::vector<std::pair<Voxelizer, const char*>>& enum_names() {
+  static const std::vector<std::pair<Voxelizer, const char*>> m{{Voxelizer::Conservative, "conservative"},
+                                                                {Voxelizer::GpuEmulation, "gpu"}};
+  return m;
+}
+template <>
+const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
+  static const std::vector<std::pair<VoxelStorage, const char*>> m{{VoxelStorage::Rgba8, "rgba8"},
+                                                                   {VoxelStorage::Rgba16f, "rgba16f"}};
+  return m;
+}
+template <>
+const std::vector<std::pair<Reduction, const char*>>& enum_names() {
+  static const std::vector<std::pair<Reduction, const char*>> m{
+      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"}};
+  return m;
+}
+template <>
+const std::vector<std::pair<DiffuseWeighting, const char*>>& enum_names() {
+  static const std::vector<std::pair<DiffuseWeighting, const char*>> m{{DiffuseWeighting::Cosine, "cosine"},
+                                                                       {DiffuseWeighting::SeedSum, "seed"}};
+  return m;
+}
+
+template <typename Enum>
+std::string enum_name(Enum e) {
+  for (const auto& [value, name] : enum_names<Enum>())
+    if (value == e) return name;
+  return "?";
+}
+
+template <typename Enum>
+std::vector<std::string> choice_names() {
+  std::vector<std::string> out;
+  for (const auto& [value, name] : enum_names<Enum>()) out.push_back(name);
+  return out;
+}
+
+std::string join(const std::vector<std::string>& items, const char* sep) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+// An integer setting given a number it cannot hold (1e300, 2^32 + 16, 16.5) is bad input: the
+// plain conversion would be undefined (float) or wrap silently to a value that may validate
+// (reachable from an external stage set's manifest "settings": fuzz/regressions/scene_compare/).
+template <typename T>
+bool fits_integer(const nlohmann::json& v) {
+  using L = std::numeric_limits<T>;
+  if (v.is_number_unsigned()) return v.get<uint64_t>() <= uint64_t(L::max());
+  if (v.is_number_integer()) return v.get<int64_t>() >= int64_t(L::min()) && v.get<int64_t>() <= int64_t(L::max());
+  const double d = v.get<double>();
+  return std::isfinite(d) && d == std::trunc(d) && d >= double(L::min()) && d <= double(L::max());
+}
+
+template <typename T>
+constexpr SettingType type_of() {
+  if constexpr (std::is_same_v<T, bool>) return SettingType::Bool;
+  else if constexpr (std::is_integral_v<T>) return SettingType::Int;
+  else if constexpr (std::is_floating_point_v<T>) return SettingType::Float;
+  else if constexpr (std::is_same_v<T, std::string>) return SettingType::Text;
+  else return SettingType::Choice;
+}
+
+// A row for a plain member (number, bool or text).
+template <typename S, typename T>
+SettingField<S> field(const char* key, T S::*member, SettingRange range, const char* help,
+                      const char* gl_uniform = nullptr) {
+  SettingField<S> f{key, type_of<T>(), std::move(range), help, gl_uniform, {}, nullptr, nullptr};
+  f.get = [member](const S& s) { return nlohmann::json(s.*member); };
+  f.set = [member, key](S& s, const nlohmann::json& j, const std::string& scope) {
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>)
+      if (j.is_number() && !fits_integer<T>(j))
+        throw InputError("", "setting '" + scope + key + "' = " + j.dump() + " is not an integer in range");
+    try {
+      s.*member = j.get<T>();
+    } catch (const nlohmann::json::exception&) {
+      throw InputError("", "setting '" + scope + key + "' has the wrong type");
+    }
+  };
+  return f;
+}
+
+// A row for an enumeration, stored by its JSON name.
+template <typename S, typename E>
+SettingField<S> choice(const char* key, E S::*member, const char* help) {
+  SettingField<S> f{key, SettingType::Choice, {}, help, nullptr, choice_names<E>(), nullptr, nullptr};
+  f.get = [member](const S& s) { return nlohmann::json(enum_name(s.*member)); };
+  f.set = [member, key](S& s, const nlohmann::json& j, const std::string& scope) {
+    if (!j.is_string()) throw InputError("", "setting '" + scope + key + "' must be a string");
+    const std::string name = j.get<std::string>();
+    for (const auto& [value, n] : enum_names<E>())
+      if (name == n) {
+        s.*member = value;
+        return;
+      }
+    throw InputError("", "setting '" + scope + key + "' is '" + name + "', expected one of " +
+                             join(choice_names<E>(), "|"));
+  };
+  return f;
+}
+
+SettingRange closed(double lo, double hi) { return {lo, hi}; }
+SettingRange open(double lo, double hi) { return {lo, hi, true, true}; }
+SettingRange open_lo(double lo, double hi) { return {lo, hi, true, false}; }
+SettingRange at_least(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
+SettingRange powers_of_two(double lo, double hi) { return {lo, hi, false, false, true}; }
+SettingRange one_of(std::vector<int> values) { return {0, 0, false, false, false, std::move(values)}; }
+SettingRange any() { return {0, 0, false, false, false, {}, true}; }
+
+using V = VctSettings;
+using P = PtSettings;
+
+}  // namespace
+
+std::string to_string(LightModel m) { return enum_name(m); }
+std::string to_string(Voxelizer v) { return enum_name(v); }
+std::string to_string(VoxelStorage v) { return enum_name(v); }
+std::string to_string(Reduction r) { return enum_name(r); }
+std::string to_string(DiffuseWeighting w) { return enum_name(w); }
+
+const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
+  // clang-format off
+  static const std::vector<SettingField<V>> fields = {
+    field("width", &V::width, closed(1, 16384), "image width in pixels"),
+    field("height", &V::height, closed(1, 16384), "image height in pixels", "u_image_height"),
+    field("shadow_map_size", &V::shadow_map_size, closed(16, 16384), "shadow map side in texels", "u_shadow_size"),
+    field("pcf_kernel", &V::pcf_kernel, closed(1, 9), "PCF taps per side (seed report: 3)", "u_pcf_kernel"),
+    field("shadow_bias", &V::shadow_bias, any(), "constant depth bias in window-depth [0,1] units", "u_shadow_bias"),
+    choice("light_model", &V::light_model, "KHR_lights_punctual (gltf) or the seed's falloff (docs/scenes.md)"),
+    field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
+    choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),
+    field("msaa_samples", &V::msaa_samples, one_of({1, 4, 8}), "MSAA samples of the voxelization pass"),
+    choice("storage", &V::storage, "voxel texture format"),
+    choice("reduction", &V::reduction, "how the fragments of a voxel combine"),
+    field("anisotropic", &V::anisotropic, any(), "six directional mip volumes", "u_anisotropic"),
+    field("diffuse_cones", &V::diffuse_cones, any(), "trace the diffuse cones", "u_diffuse_cones"),
+    field("specular_cones", &V::specular_cones, any(), "trace the specular cone", "u_specular_cones"),
+    field("soft_shadows", &V::soft_shadows, any(), "cone-traced shadows instead of PCF", "u_soft_shadows"),
+    field("diffuse_aperture_deg", &V::diffuse_aperture_deg, open(0, 180), "diffuse cone aperture, degrees"),
+    field("diffuse_cone_count", &V::diffuse_cone_count, closed(1, kMaxDiffuseConeCount), "diffuse cones: 1 along the normal + count-1 tilted"),
+    field("diffuse_cone_tilt_deg", &V::diffuse_cone_tilt_deg, open(0, 90), "angle of the tilted cones from the normal, degrees"),
+    choice("diffuse_weighting", &V::diffuse_weighting, "cosine-weighted mean, or the seed's plain sum"),
+    field("random_rotation", &V::random_rotation, any(), "rotate the diffuse cones per pixel (hash of pixel, frame)", "u_random_rotation"),
+    field("cone_quality", &V::cone_quality, {0.01, 4.0, true, false}, "step = diameter x quality (smaller = more steps)", "u_cone_quality"),
+    field("cone_offset_voxels", &V::cone_offset_voxels, any(), "cone start offset, in voxels of level 0"),
+    field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
+    field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
+    field("bounces", &V::bounces, closed(1, 64), "temporal multibounce frames (1 = direct light in voxels only)"),
+    field("restitution", &V::restitution, closed(0, 1), "multibounce attenuation factor", "u_restitution"),
+    field("convergence_tolerance", &V::convergence_tolerance, any(), "> 0: stop multibounce when the relative energy change is at most this"),
+    field("time", &V::time, any(), "particle time, seconds", "u_time"),
+    field("frame", &V::frame, any(), "frame index of the random cone rotation hash"),
+    field("particles", &V::particles, any(), "render and voxelize the fire particles"),
+    field("depth_prepass", &V::depth_prepass, any(), "GL depth pre-pass (occlusion culling; the image must not change)"),
+    field("gl_fault", &V::gl_fault, any(), "a deliberate GL bug for tests (docs/gl_backend.md, fault switch)"),
+  };
+  // clang-format on
+  return fields;
+}
+
+const std::vector<SettingField<PtSettings>>& pt_setting_fields() {
+  // clang-format off
+  static const std::vector<SettingField<P>> fields = {
+    field("width", &P::width, closed(1, 16384), "path tracer image width"),
+    field("height", &P::height, closed(1, 16384), "path tracer image height"),
+    field("spp", &P::spp, at_least(1), "samples per pixel"),
+    field("max_depth", &P::max_depth, closed(1, 1024), "longest path, in bounces"),
+    field("rr_start_depth", &P::rr_start_depth, any(), "depth at which Russian roulette starts"),
+    field("seed", &P::seed, any(), "random seed"),
+    field("checkpoint_seconds", &P::checkpoint_seconds, any(), "seconds between resumable checkpoints"),
+    choice("light_model", &P::light_model, "as vct.light_model"),
+  };
+  // clang-format on
+  return fields;
+}
+
+namespace {
+std::string number(double v) {  // 90 rather than std::to_string's 90.000000
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+}  // namespace
+
+template <typename S>
+std::string allowed_text(const SettingField<S>& f) {
+  const SettingRange& r = f.range;
+  switch (f.type) {
+    case SettingType::Bool: return "true|false";
+    case SettingType::Choice: return join(f.choices, "|");
+    case SettingType::Text: return "text";
+    case SettingType::Int:
+    case SettingType::Float: break;
+  }
+  if (r.unbounded) return "any";
+  if (!r.only.empty()) {
+    std::vector<std::string> items;
+    for (int v : r.only) items.push_back(std::to_string(v));
+    const std::string last = items.back();
+    items.pop_back();
+    return join(items, ", ") + " or " + last;
+  }
+  if (std::isinf(r.hi)) return ">= " + number(r.lo);
+  if (f.type == SettingType::Int && !r.lo_open && !r.hi_open)
+    return (r.power_of_two ? "a power of two in " : "") + number(r.lo) + ".." + number(r.hi);
+  return std::string(r.lo_open ? "(" : "[") + number(r.lo) + ", " + number(r.hi) + (r.hi_open ? ")" : "]");
+}
+
+template <typename S>
+void check_setting_range(const SettingField<S>& f, const S& s, const std::string& scope) {
+  if ((f.type != SettingType::Int && f.type != SettingType::Float) || f.range.unbounded) return;
+  const double v = f.get(s).template get<double>();
+  const SettingRange& r = f.range;
+  bool ok = std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi);
+  if (!r.only.empty()) {
+    ok = false;
+    for (int a : r.only) ok = ok || v == double(a);
+  }
+  if (r.power_of_two) ok = ok && v > 0 && std::exp2(std::round(std::log2(v))) == v;
+  if (ok) return;
+  const std::string allowed = allowed_text(f);
+  const bool interval = allowed[0] == '(' || allowed[0] == '[' || std::isdigit(static_cast<unsigned char>(allowed[0]));
+  const bool list = !r.only.empty();
+  throw InputError("", scope + f.key + " must be " + (interval && !list ? "in " : "") + allowed + " (got " + number(v) + ")");
+}
+
+template std::string allowed_text(const SettingField<VctSettings>&);
+template std::string allowed_text(const SettingField<PtSettings>&);
+template void check_setting_range(const SettingField<VctSettings>&, const VctSettings&, const std::string&);
+template void check_setting_range(const SettingField<PtSettings>&, const PtSettings&, const std::string&);
+
+nlohmann::json setting_value_from_text(SettingType type, const std::string& text, const std::string& what) {
+  if (type == SettingType::Choice || type == SettingType::Text) return text;
+  nlohmann::json v;
+  try {
+    v = nlohmann::json::parse(text);
+  } catch (const std::exception&) {
+    throw InputError(what, "'" + text + "' is not a " + (type == SettingType::Bool ? "boolean" : "number"));
+  }
+  if (type == SettingType::Bool ? !v.is_boolean() : !v.is_number())
+    throw InputError(what, "'" + text + "' is not a " + (type == SettingType::Bool ? "boolean" : "number"));
+  return v;
+}
+
+// The shortest decimal that reads back as the same float.
+std::string shortest_float(float f) {
+  for (int digits = 1; digits < 9; ++digits) {
+    std::ostringstream o;
+    o.precision(digits);
+    o << f;
+    if (std::stof(o.str()) == f) return o.str();
+  }
+  std::ostringstream o;
+  o.precision(9);
+  o << f;
+  return o.str();
+}
+
+std::string value_text(const nlohmann::json& v) {
+  if (v.is_number_float()) return shortest_float(float(v.get<double>()));
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+namespace {
+template <typename S>
+bool set_field(const std::vector<SettingField<S>>& fields, S& s, const std::string& key, const std::string& text,
+               const std::string& what, const std::string& scope) {
+  for (const auto& f : fields) {
+    if (key != f.key) continue;
+    const nlohmann::json value = setting_value_from_text(f.type, text, what);
+    try {
+      f.set(s, value, scope);
+    } catch (const InputError& e) {
+      throw InputError(what, e.what());
+    }
+    return true;
+  }
+  return false;
+}
+}  // namespace
+
+Settings with_setting(const Settings& s, const std::string& key, const std::string& text, const std::string& what) {
+  Settings out = s;
+  const bool pt = key.rfind("pt.", 0) == 0;
+  const std::string bare = pt ? key.substr(3) : key.rfind("vct.", 0) == 0 ? key.substr(4) : key;
+  const bool found = pt ? set_field(pt_setting_fields(), out.pt, bare, text, what, "pt.")
+                        : set_field(vct_setting_fields(), out.vct, bare, text, what, "vct.");
+  if (!found) throw InputError(what, "unknown setting '" + key + "' (vct settings lists them)");
+  return out;
+}
+
+namespace {
+template <typename S>
+void markdown_rows(std::ostringstream& o, const std::vector<SettingField<S>>& fields, const S& defaults,
+                   const char* scope) {
+  for (const auto& f : fields)
+    o << "| `" << scope << f.key << "` | `" << value_text(f.get(defaults)) << "` | " << allowed_text(f) << " | " << f.help
+      << (f.gl_uniform ? std::string(" (GLSL `") + f.gl_uniform + "`)" : std::string()) << " |\n";
+}
+}  // namespace
+
+std::string settings_markdown() {
+  std::ostringstream o;
+  o << "| key | default | allowed | meaning |\n| --- | --- | --- | --- |\n";
+  markdown_rows(o, vct_setting_fields(), VctSettings(), "vct.");
+  markdown_rows(o, pt_setting_fields(), PtSettings(), "pt.");
+  o << "| `threads` | `0` | 0..1024 | worker threads (0 = all cores) |\n";
+  return o.str();
+}
+
+}  // namespace vct

@@ -1,0 +1,82 @@
+// The stage registry: names resolve to their rows and family members, every row's slot reaches
+// the FrameResult field it names, and the rows keep the pipeline order the verdicts rely on.
+#include "stages/stage_registry.h"
+
+#include <set>
+
+#include <gtest/gtest.h>
+
+namespace vct {
+namespace {
+
+TEST(StageRegistry, FamilyMembersParseAndPrintTheSameName) {
+  const auto sm = find_stage("shadow_map.3");
+  ASSERT_TRUE(sm);
+  EXPECT_STREQ(sm->row->name, "shadow_map");
+  EXPECT_EQ(sm->index, 3);
+  EXPECT_EQ(stage_name(*sm->row, sm->index), "shadow_map.3");
+  const auto mip = find_stage("mip.negz.5");
+  ASSERT_TRUE(mip);
+  EXPECT_EQ(aniso_direction(*mip->row), int(kNegZ));
+  EXPECT_EQ(dump_stem(*mip->row, 5), "aniso_negz_L5");
+  EXPECT_EQ(dump_stem(*find_stage("mip.iso.2")->row, 2), "voxels_radiance_L2");
+}
+
+TEST(StageRegistry, RefusesNamesThatAreNotMembers) {
+  EXPECT_FALSE(find_stage("mip.iso.0"));   // level 0 is voxel.radiance
+  EXPECT_FALSE(find_stage("mip.iso.x"));
+  EXPECT_FALSE(find_stage("mip.iso. 1"));
+  EXPECT_FALSE(find_stage("shadow_map"));  // a family needs its index
+  EXPECT_FALSE(find_stage("gbuffer.nope"));
+  EXPECT_EQ(namespace_kind("gbuffer.nope"), StageKind::Image);  // still an image by namespace
+  EXPECT_EQ(namespace_kind("mip.whatever.1"), StageKind::Volume);
+  EXPECT_FALSE(namespace_kind("final"));
+}
+
+TEST(StageRegistry, SlotsReachTheFieldsTheyName) {
+  FrameResult f;
+  *find_stage("gbuffer.normal")->row->image(f, 0, true) = Image(2, 2, 3);
+  EXPECT_EQ(f.gbuffer.normal.width, 2);
+  *find_stage("shadow_map.1")->row->image(f, 1, true) = Image(4, 4, 1);
+  ASSERT_EQ(f.shadow_maps.size(), 2u);
+  EXPECT_EQ(f.shadow_maps[1].depth.width, 4);
+  *find_stage("mip.posy.2")->row->volume(f, 2, true) = Volume(8, 8, 8, 4);
+  ASSERT_EQ(f.mips.aniso[kPosY].size(), 2u);  // aniso[d][0] is level 1
+  EXPECT_EQ(f.mips.aniso[kPosY][1].nx, 8);
+  *find_stage("mip.iso.1")->row->volume(f, 1, true) = Volume(2, 2, 2, 4);
+  ASSERT_EQ(f.mips.iso.size(), 2u);  // iso[0] is the base level
+  EXPECT_EQ(f.mips.iso[1].nx, 2);
+  // Members present: only what holds data.
+  EXPECT_EQ(frame_members(f, stage_row(stage_names::kShadowMap)), (std::vector<int>{1}));
+  EXPECT_EQ(frame_members(f, mip_row(kPosY)), (std::vector<int>{2}));
+  EXPECT_TRUE(frame_members(f, stage_row(stage_names::kGbufferAlbedo)).empty());
+}
+
+TEST(StageRegistry, NamesAreUniqueAndFamiliesNumbered) {
+  std::set<std::string> names;
+  for (const StageRow& row : stage_rows()) {
+    EXPECT_TRUE(names.insert(row.name).second) << row.name;
+    const bool family = row.index != StageIndex::None;
+    EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
+    EXPECT_TRUE(row.image || row.volume || row.role == StageRole::Derived) << row.name;
+    if (row.role != StageRole::Derived) EXPECT_EQ(row.kind == StageKind::Image, row.image != nullptr) << row.name;
+  }
+}
+
+TEST(StageRegistry, PipelineOrderPutsCausesBeforeEffects) {
+  auto pos = [](const char* name) {
+    const auto& rows = stage_rows();
+    for (size_t i = 0; i < rows.size(); ++i)
+      if (std::string(rows[i].name) == name) return i;
+    return rows.size();
+  };
+  EXPECT_LT(pos("shadow_map"), pos("voxel.radiance"));
+  EXPECT_LT(pos("gbuffer.normal"), pos("image.direct"));
+  EXPECT_LT(pos("voxel.occupancy"), pos("voxel.radiance"));
+  EXPECT_LT(pos("voxel.radiance"), pos("mip.iso"));
+  EXPECT_LT(pos("mip.negz"), pos("image.indirect_diffuse"));
+  EXPECT_LT(pos("image.indirect_diffuse"), pos("image.final"));
+}
+
+}  // namespace
+}  // namespace vct
