@@ -1,22 +1,14 @@
 #include "compare/isolated_stages.h"
 
 #include "compare/tolerance.h"
-#include "stages/composite.h"
-#include "stages/indirect_pass.h"
-#include "stages/soft_shadow.h"
+#include "stages/pipeline.h"
 
 namespace vct::cmp {
 
 FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s) {
   FrameResult r = test;
   r.backend = "ref-on-" + test.backend + "-inputs";
-  FrameImages& im = r.images;
-  if (s.soft_shadows) im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow);
-  IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
-  im.indirect_diffuse = std::move(ind.diffuse);
-  im.indirect_specular = std::move(ind.specular);
-  im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());
-  composite_frame(scene, r.gbuffer, im);
+  trace_cone_stages(scene, s, r);
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include "gl_frame.h"
 #include "gl_resources.h"
 #include "stages/cone_sets.h"
+#include "stages/multibounce.h"
 
 namespace vct::gl {
 namespace {
@@ -203,11 +204,7 @@ void voxel_passes(GlFrame& f) {
     resolve(f, radiance[cur]);
     build_mips(f, radiance[cur], aniso[cur]);
     f.out.multibounce_energy.push_back(total_radiance(f, radiance[cur], n));
-    const size_t k = f.out.multibounce_energy.size();
-    if (f.s.convergence_tolerance > 0.0f && k >= 2) {
-      const double a = f.out.multibounce_energy[k - 2], e = f.out.multibounce_energy[k - 1];
-      if (std::abs(e - a) <= double(f.s.convergence_tolerance) * std::max(std::abs(e), 1e-30)) break;
-    }
+    if (multibounce_converged(f.out.multibounce_energy, f.s.convergence_tolerance)) break;
   }
   f.radiance = radiance[cur];
   f.aniso = aniso[cur];

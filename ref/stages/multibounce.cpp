@@ -40,6 +40,12 @@ void finish_frame(const Scene& scene, const VctSettings& s, MultibounceResult& r
 }
 }  // namespace
 
+bool multibounce_converged(const std::vector<double>& energy, float tolerance) {
+  if (tolerance <= 0.0f || energy.size() < 2) return false;
+  const double before = energy[energy.size() - 2], now = energy.back();
+  return std::abs(now - before) <= double(tolerance) * std::abs(before);
+}
+
 MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization& vox,
                                           const std::vector<ShadowMap>& shadow_maps, const VctSettings& s,
                                           bool keep_frames) {
@@ -56,8 +62,7 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
     r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce);
     r.timings_ms["bounce_inject"] += sw.ms();
     finish_frame(scene, s, r);
-    const double before = r.energy[r.energy.size() - 2], now = r.energy.back();
-    if (s.convergence_tolerance > 0.0f && std::abs(now - before) <= double(s.convergence_tolerance) * before) break;
+    if (multibounce_converged(r.energy, s.convergence_tolerance)) break;
   }
   return r;
 }

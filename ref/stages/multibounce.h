@@ -27,6 +27,11 @@ BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, con
 /// order (double accumulation, voxel order).
 double total_energy(const Volume& radiance);
 
+/// The one stop rule both backends use (the GL pass calls it too, so near the threshold both run
+/// the same number of frames): true when tolerance > 0, at least two frames ran, and
+/// |E_k - E_{k-1}| <= tolerance * E_{k-1} (a dark scene, E = 0 twice, has converged).
+bool multibounce_converged(const std::vector<double>& energy, float tolerance);
+
 struct MultibounceResult {
   VoxelGrid grid;   // the last frame's base level (particles included)
   VoxelMips mips;   // its mips

@@ -37,6 +37,19 @@ Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, FrameResul
 }
 }  // namespace
 
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r) {
+  FrameImages& im = r.images;
+  if (s.soft_shadows)
+    timed(r, "direct_soft_shadows", [&] { im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow); });
+  timed(r, "indirect_cones", [&] {
+    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
+    im.indirect_diffuse = std::move(ind.diffuse);
+    im.indirect_specular = std::move(ind.specular);
+    im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());
+  });
+  timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, im); });
+}
+
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
   const VctSettings& s = settings.vct;
   FrameResult r;
@@ -60,19 +73,10 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
   r.info["fragments"] = std::to_string(vox.fragments.size());
   r.info["covered_voxels"] = std::to_string(vox.covered);
   FrameImages& im = r.images;
-  if (s.soft_shadows) {
-    timed(r, "direct_soft_shadows", [&] { im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow); });
-  } else {
+  if (!s.soft_shadows)
     timed(r, "direct", [&] { im.direct = shade_direct(scene, r.gbuffer, r.shadow_maps, s); });
-  }
-  timed(r, "indirect_cones", [&] {
-    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
-    im.indirect_diffuse = std::move(ind.diffuse);
-    im.indirect_specular = std::move(ind.specular);
-    im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());
-  });
   timed(r, "particles", [&] { im.particles = render_particles(scene, r.gbuffer, s); });
-  timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, im); });
+  trace_cone_stages(scene, s, r);
   r.timings_ms["total"] = total.ms();
   return r;
 }

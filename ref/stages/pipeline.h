@@ -9,6 +9,12 @@
 
 namespace vct {
 
+/// The cone-traced tail of a frame, on whatever G-buffer and mips `r` holds (its own, or a test
+/// renderer's: compare/isolated_stages.h): soft-shadowed direct light when soft_shadows is on,
+/// the indirect cones, then the composite. r.images.direct (PCF) and r.images.particles are its
+/// inputs otherwise. Records "direct_soft_shadows", "indirect_cones", "composite" timings.
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r);
+
 /// Runs every stage of the CPU reference. Threads come from set_thread_count(); the result is
 /// byte-identical for any thread count.
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings);

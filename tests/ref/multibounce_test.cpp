@@ -63,4 +63,15 @@ TEST(Multibounce, OneBounceIsDirectOnly) {
 }
 
 }  // namespace
+// The stop rule is relative to the frame before (both backends call this function): near the
+// threshold a rule relative to the newer frame would stop one frame earlier on one side.
+TEST(Multibounce, StopRuleIsRelativeToTheFrameBefore) {
+  EXPECT_FALSE(multibounce_converged({1.0}, 0.1f));         // one frame: nothing to compare
+  EXPECT_FALSE(multibounce_converged({1.0, 1.05}, 0.0f));   // tolerance 0: run every frame
+  EXPECT_TRUE(multibounce_converged({1.0, 1.0999}, 0.1f));
+  EXPECT_FALSE(multibounce_converged({1.0, 1.105}, 0.1f));  // 0.105 > 0.1 * 1.0 (but <= 0.1 * 1.105)
+  EXPECT_TRUE(multibounce_converged({0.0, 0.0}, 0.1f));     // a dark scene has converged
+  EXPECT_FALSE(multibounce_converged({0.0, 1e-9}, 0.1f));
+}
+
 }  // namespace vct
