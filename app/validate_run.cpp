@@ -19,6 +19,7 @@
 #endif
 #if __has_include("pt/path_tracer.h")
 #include "pt/path_tracer.h"
+#include "pt/progress.h"
 #define VCT_HAVE_PT 1
 #endif
 
@@ -84,13 +85,17 @@ Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
   return out;
 }
 
-PtRun run_pt_backend(const Scene& scene, const Settings& s) {
+PtRun run_pt_backend(const Scene& scene, const Settings& s, bool progress) {
   PtRun r;
 #ifdef VCT_HAVE_PT
   Stopwatch sw;
   pt::PathTracer tracer(scene, s.pt);
   pt::Accumulator acc(s.pt.width, s.pt.height);
-  tracer.render(acc, uint32_t(s.pt.spp));
+  pt::ProgressBar bar(progress, 0, uint32_t(s.pt.spp));
+  tracer.render(acc, uint32_t(s.pt.spp), [&bar](const pt::Accumulator& a, const pt::RayCounts& rays) {
+    bar.update(a.samples(), rays.primary + rays.secondary + rays.shadow);
+    return true;
+  });
   for (int a = 0; a < pt::kAovCount; ++a) {
     const std::string name = pt::kAovNames[a];
     r.aovs[name] = acc.mean(pt::Aov(a));
@@ -100,7 +105,7 @@ PtRun run_pt_backend(const Scene& scene, const Settings& s) {
   r.ms = sw.ms();
   r.status = "ok";
 #else
-  (void)scene, (void)s;
+  (void)scene, (void)s, (void)progress;
 #endif
   return r;
 }

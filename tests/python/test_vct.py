@@ -6,6 +6,7 @@ with the reference, the path tracer's emission matches VCT's (both see the same 
 import json
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -176,3 +177,17 @@ def test_path_tracer_and_bias(scene, ref):
     # Emission is seen directly by both: no bias beyond float rounding.
     assert rows["emission"]["available"]
     assert abs(rows["emission"]["relative_bias"]) < 1e-4
+
+
+def test_the_docs_example_plots_a_sweep(tmp_path):
+    """docs/bias_vs_grid.py at a tiny size: it runs, prints one line per grid, writes the plot."""
+    root = os.environ.get("VCT_SOURCE_DIR") or os.path.join(os.path.dirname(__file__), "..", "..")
+    out = tmp_path / "bias.png"
+    r = subprocess.run([sys.executable, os.path.join(root, "docs", "bias_vs_grid.py"), "--grids", "16,32", "--size", "32",
+                        "--spp", "2", "--threads", "1", "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert [line.split()[1] for line in r.stderr.splitlines() if line.startswith("grid")] == ["16", "32"]
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    bad = subprocess.run([sys.executable, os.path.join(root, "docs", "bias_vs_grid.py"), "--grids", "7"],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "grid" in bad.stderr and "Traceback" not in bad.stderr
