@@ -24,6 +24,8 @@ def verdict_sentence(verdicts):
         more = " (%d stages fail in all; later ones usually follow from it)" % fails if fails > 1 else ""
         # The note's first clause: the card beside it holds the whole note.
         note = st.get("note", "beyond its bound").split(";")[0].rstrip(".")
+        if len(note) > 150:  # two lines at most: the images must stay on the first screen
+            note = note[:147].rstrip() + "..."
         return "fail", "GL fails at %s: %s%s." % (first, note, more)
     warns = [s["stage"] for s in stages if s["verdict"] == "warn"]
     missing = [s["stage"] for s in stages if s["verdict"] == "missing"]
