@@ -3,6 +3,8 @@
 // runs (app/validate_run.h), stage sets (compare/stage_set.h), compare_stage_sets
 // (compare/stage_compare.h) and measure_bias (compare/bias.h). Nothing is re-implemented here.
 // Settings and verdicts cross as JSON text; __init__.py turns them into dicts. docs/python.md.
+#include <cstdlib>
+
 #include <nanobind/nanobind.h>
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/string.h>
@@ -204,7 +206,13 @@ void bind_functions(nb::module_& m) {
   m.def("_settings_as_run_by_gl", [](const std::string& t, const cmp::StageSet& gl) {
     Settings s = settings_from_text(t);
     // app::settings_as_run_by_gl's rule, read from the set's info (the frame is gone by now).
-    if (gl.info.contains("msaa_samples")) s.vct.msaa_samples = std::stoi(gl.info["msaa_samples"].get<std::string>());
+    // Ours store info as strings; an external manifest may hold a number.
+    if (gl.info.contains("msaa_samples")) {
+      const nlohmann::json& m = gl.info["msaa_samples"];
+      if (m.is_number_integer()) s.vct.msaa_samples = m.get<int>();
+      else if (m.is_string()) s.vct.msaa_samples = std::atoi(m.get<std::string>().c_str());
+      validate_settings(s);
+    }
     return settings_text(s);
   });
 }
