@@ -16,6 +16,8 @@
 #include "io/run_dir.h"
 #include "io/atomic_file.h"
 #include "options.h"
+#include "phase_progress.h"
+#include "pt/progress.h"
 #include "stages/explain.h"
 #include "scene/gltf_loader.h"
 #include "validate_run.h"
@@ -76,13 +78,14 @@ nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
 
 // One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
 nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
-                         bool gl_available) {
+                         bool gl_available, PhaseProgress& progress) {
   const auto [key, values] = parse_sweep(spec);
   nlohmann::json rows = nlohmann::json::array();
   for (const std::string& value : values) {
     const Settings s = apply_sweep_value(base, key, value);
     std::printf("  sweep %s=%s ...\n", key.c_str(), value.c_str());
     std::fflush(stdout);
+    progress.begin("sweep " + key + "=" + value + (gl_available ? ": gl, ref, compare, bias" : ": ref, bias"));
     nlohmann::json row = {{"key", key}, {"value", value}};
     // GL first: the reference then emulates the coverage rule the driver actually ran.
     const BackendRun gl = gl_available ? run_gl_backend(scene, s) : BackendRun{};
@@ -112,6 +115,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
         }
       }
     }
+    progress.end();
     rows.push_back(row);
   }
   return {{"key", key}, {"values", values}, {"rows", rows}};
@@ -121,9 +125,12 @@ int run(const ValidateOptions& o) {
   const Settings s = resolve(o.common);
   const Scene scene = load_scene(o.scene);
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
+  // Phases: gl, ref, pt, stage sets, GPU-vs-CPU comparison, bias, each sweep value, report.
+  PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 6 + (o.no_report ? 0 : 1));
   for (const auto& sw : o.sweeps) {  // bad specs and values fail before any rendering
     const auto [key, values] = parse_sweep(sw);
     for (const auto& v : values) apply_sweep_value(s, key, v);
+    progress.add_phases(int(values.size()));
   }
   RunDir run(out);
   run.json()["command"] = "validate";
@@ -136,7 +143,10 @@ int run(const ValidateOptions& o) {
   std::fflush(stdout);
 
   // GL first: the reference then emulates the coverage rule the driver actually ran.
+  progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
+                 std::to_string(s.vct.grid) + ")");
   const BackendRun gl = run_gl_backend(scene, s);
+  progress.end();
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
               gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
@@ -147,47 +157,59 @@ int run(const ValidateOptions& o) {
                 ref_settings.vct.msaa_samples, s.vct.msaa_samples, ref_settings.vct.msaa_samples);
     run.json()["settings_effective"] = ref_settings;
   }
+  progress.begin("CPU reference frame");
   const BackendRun ref = run_ref_backend(scene, ref_settings);
+  progress.end();
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
   std::fflush(stdout);
-  const PtRun pt = run_pt_backend(scene, s);
+  progress.begin("path tracer, " + std::to_string(s.pt.spp) + " spp");
+  const PtRun pt = run_pt_backend(scene, s, progress.enabled());
+  progress.end();
   run.json()["backends"]["pt"] = {{"status", pt.status}, {"ms", pt.ms}, {"spp", pt.spp}};
   std::printf("  pt   %-12s %8.1f s  %d spp\n", pt.status.c_str(), pt.ms / 1000, pt.spp);
   run.save();
 
+  progress.begin("writing the stage sets");
   cmp::StageSet ref_set, gl_set;
   if (ref.ok()) write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
   if (gl.ok()) write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
   if (pt.ok()) write_pt(run, pt);
   write_explanation(run, scene, ref, s);
+  progress.end();
 
   int exit_code = kExitOk;
+  progress.begin("GL vs CPU reference, stage by stage");
   if (ref.ok() && gl.ok()) {
     cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
     // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
     // tie upstream does not fail a correct marcher downstream.
     cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
     run.json()["verdicts"] = cmp::to_json(rep);
+    progress.end();
     print_verdicts(rep, "GPU (gl) vs CPU reference");
     if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;
   } else {
     const std::string why = !gl.ok() ? "gl " + gl.status : "ref " + ref.status;
     run.json()["verdicts"] = {{"overall", "missing"}, {"first_failing", ""}, {"note", why}, {"stages", nlohmann::json::array()}};
+    progress.end();
     std::printf("GPU vs CPU: not compared (%s)\n", why.c_str());
     if (gl.status.rfind("error", 0) == 0) exit_code = kExitFailed;
   }
   std::vector<cmp::BiasComponent> bias;
+  progress.begin("bias against the path tracer");
   if (ref.ok() && pt.ok()) {
     bias = cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"});
     run.json()["bias"] = {{"ref", bias_json(bias)}};
     if (gl.ok()) run.json()["bias"]["gl"] = bias_json(cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}));
+    progress.end();
     print_bias(bias);
   }
+  progress.end();
   run.save();
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
-    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok()));
+    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), progress));
     run.json()["sweeps"] = sweeps;
     run.save();
   }
@@ -196,7 +218,9 @@ int run(const ValidateOptions& o) {
   run.save();
   if (!o.no_report) {
     std::string why;
+    progress.begin("HTML report");
     const std::string index = make_report(out, why);
+    progress.end();
     if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
     else std::printf("%s\n", index.c_str());
   }

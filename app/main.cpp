@@ -1,5 +1,5 @@
 // vct: the VCT Oracle command line. Exit codes: 0 ok / passed, 1 comparison failed,
-// 2 bad input or usage, 3 environment missing (DESIGN.md §5).
+// 2 bad input or usage, 3 environment missing (README.md).
 #include <cstdio>
 #include <exception>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// Flags shared by the subcommands (DESIGN.md §5) and how they become Settings.
+// Flags shared by the subcommands (README.md) and how they become Settings.
 #pragma once
 
 #include <optional>

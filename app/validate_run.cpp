@@ -10,6 +10,7 @@
 #include "core/settings_table.h"
 #include "io/run_dir.h"
 #include "pt/path_tracer.h"
+#include "pt/progress.h"
 #include "stages/pipeline.h"
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_pipeline.h"
@@ -74,12 +75,16 @@ Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
   return out;
 }
 
-PtRun run_pt_backend(const Scene& scene, const Settings& s) {
+PtRun run_pt_backend(const Scene& scene, const Settings& s, bool progress) {
   PtRun r;
   Stopwatch sw;
   pt::PathTracer tracer(scene, s.pt);
   pt::Accumulator acc(s.pt.width, s.pt.height);
-  tracer.render(acc, uint32_t(s.pt.spp));
+  pt::ProgressBar bar(progress, 0, uint32_t(s.pt.spp));
+  tracer.render(acc, uint32_t(s.pt.spp), [&bar](const pt::Accumulator& a, const pt::RayCounts& rays) {
+    bar.update(a.samples(), rays.primary + rays.secondary + rays.shadow);
+    return true;
+  });
   for (int a = 0; a < pt::kAovCount; ++a) {
     const std::string name = pt::kAovNames[a];
     r.aovs[name] = acc.mean(pt::Aov(a));

@@ -38,7 +38,8 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s);
 /// allows 4), and the CPU reference must then emulate the same coverage rule, or every voxel
 /// stage differs for a reason that is not a GPU bug. Unchanged when GL did not run.
 Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl);
-PtRun run_pt_backend(const Scene& scene, const Settings& s);
+/// `progress`: draw the path tracer's pass bar on stderr (ref/pt/progress.h; only on a terminal).
+PtRun run_pt_backend(const Scene& scene, const Settings& s, bool progress = false);
 
 /// Settings validate starts from (before --config and flags): small enough that the default
 /// job (ref + gl + pt + report) finishes in a few minutes on 2 cores (docs/compare.md).

@@ -1,4 +1,4 @@
-// Per-stage verdicts of a comparison (DESIGN.md §7, docs/compare.md) and the report that collects
+// Per-stage verdicts of a comparison (docs/compare.md) and the report that collects
 // them in pipeline order; serialised into run.json["verdicts"].
 #pragma once
 

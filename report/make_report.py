@@ -6,17 +6,16 @@ Prints each index.html path. Missing parts are shown as missing, never as errors
 import html
 import json
 import os
-import re
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vct_report import runio, svg  # noqa: E402
+from vct_report.glance import glance  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SEED_GLOB_DIR = os.environ.get("VCT_SEED_DIR", "/work/shared/seed")
 E = html.escape
 
 
@@ -305,27 +304,10 @@ def voxel_view(p):
 
 
 # ---------------------------------------------------------------- performance
-def parse_seed_tables():
-    """The seed report's performance tables (its 'Performance' section), parsed from the text."""
-    try:
-        names = sorted(f for f in os.listdir(SEED_GLOB_DIR) if f.endswith(".txt"))
-        text = open(os.path.join(SEED_GLOB_DIR, names[0])).read()
-    except (OSError, IndexError):
-        return None
-    t = {}
-    m = re.search(r"Grid Size\tNo HDR, No TM\tHDR, No TM\tHDR \+ TM\n((?:\d+\t.*\n)+)", text)
-    if m:
-        t["voxelization"] = [[c.replace(" ms", "") for c in line.split("\t")] for line in m.group(1).strip().splitlines()]
-    m = re.search(r"Size\t([\d\t]+)\nTime \(HDR\)\t(.*)\n", text)
-    if m:
-        t["cone_tracing"] = list(zip(m.group(1).split("\t"), [c.replace(" ms", "") for c in m.group(2).split("\t")]))
-    m = re.search(r"Isotropic\tAnisotropic\n(.*)\n", text)
-    if m:
-        t["aniso"] = [c.replace(" ms", "") for c in m.group(1).split("\t")]
-    m = re.search(r"Time with NO Occlusion Culling\tTime with Occlusion Culling\n(.*)\n", text)
-    if m:
-        t["culling"] = [c.replace(" ms", "") for c in m.group(1).split("\t")]
-    return t
+def seed_tables():
+    """The seed report's published performance tables: data in the repository
+    (vct_report/seed_tables.json names its source), not read from anywhere else."""
+    return runio.load_json(os.path.join(HERE, "vct_report", "seed_tables.json"))
 
 
 def performance(p):
@@ -342,11 +324,12 @@ def performance(p):
     else:
         out.append(missing("stage timings"))
     out.append(sweeps(p))
-    seed = parse_seed_tables()
-    out.append("<h3>The seed's tables (Ryzen 3500U / Vega 8, its report) beside ours</h3>")
+    seed = seed_tables()
     if not seed:
-        out.append(missing("seed report text (%s)" % SEED_GLOB_DIR))
+        out.append(missing("the seed's tables (vct_report/seed_tables.json)"))
         return "".join(out)
+    out.append("<h3>The seed's tables beside ours</h3><p class='small'>Source: %s Machine: %s. Times in %s.</p>" % (
+        E(seed["source"]), E(seed["machine"]), E(seed["unit"])))
     ours_vox = {}
     ours_cone = {}
     for sw in j.get("sweeps", []):
@@ -357,16 +340,16 @@ def performance(p):
     if "voxelization" in seed:
         out.append("<table><tr><th>grid</th><th>seed: no HDR, no TM</th><th>seed: HDR, no TM</th><th>seed: HDR + TM</th>"
                    "<th>ours ref voxelize</th><th>ours GL voxelize</th></tr>")
-        for row in seed["voxelization"]:
-            o = ours_vox.get(row[0], (None, None))
-            out.append("<tr><td>%s</td>%s<td class=num>%s</td><td class=num>%s</td></tr>" % (
-                E(row[0]), "".join("<td class=num>%s</td>" % E(c) for c in row[1:]), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
+        for row in seed["voxelization"]["rows"]:
+            o = ours_vox.get(str(row[0]), (None, None))
+            out.append("<tr><td>%d</td>%s<td class=num>%s</td><td class=num>%s</td></tr>" % (
+                row[0], "".join("<td class=num>%.2f</td>" % c for c in row[1:]), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
         out.append("</table>")
     if "cone_tracing" in seed:
         out.append("<table><tr><th>grid</th><th>seed cone tracing (HDR)</th><th>ours ref cones</th><th>ours GL cones</th></tr>")
-        for g, ms in seed["cone_tracing"]:
-            o = ours_cone.get(g, (None, None))
-            out.append("<tr><td>%s</td><td class=num>%s</td><td class=num>%s</td><td class=num>%s</td></tr>" % (E(g), E(ms), fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
+        for g, ms in seed["cone_tracing"]["rows"]:
+            o = ours_cone.get(str(g), (None, None))
+            out.append("<tr><td>%d</td><td class=num>%.2f</td><td class=num>%s</td><td class=num>%s</td></tr>" % (g, ms, fmt(o[0], "%.2f"), fmt(o[1], "%.2f")))
         out.append("</table>")
     def ours_pair(key, stage):
         """Our frame/stage times for a false,true sweep of `key`, as table rows (ref, gl)."""
@@ -382,10 +365,10 @@ def performance(p):
         return rows
     if "aniso" in seed:
         out.append("<table><tr><th></th><th>isotropic</th><th>anisotropic</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr>%s</table>" % (
-            E(seed["aniso"][0]), E(seed["aniso"][1]), ours_pair("anisotropic", "indirect_cones")))
+            fmt(seed["aniso"]["row"][0], "%.2f"), fmt(seed["aniso"]["row"][1], "%.2f"), ours_pair("anisotropic", "indirect_cones")))
     if "culling" in seed:
         out.append("<table><tr><th></th><th>no occlusion culling</th><th>with depth pre-pass</th></tr><tr><td>seed</td><td class=num>%s</td><td class=num>%s</td></tr>%s</table>" % (
-            E(seed["culling"][0]), E(seed["culling"][1]), ours_pair("depth_prepass", "total")))
+            fmt(seed["culling"]["row"][0], "%.2f"), fmt(seed["culling"]["row"][1], "%.2f"), ours_pair("depth_prepass", "total")))
     out.append("<p>Ours for these rows: <code>vct bench</code> and <code>vct validate --sweep grid=32,64,128,256</code> / "
                "<code>--sweep anisotropic=false,true</code> / <code>--sweep depth_prepass=false,true</code> fill them.</p>")
     return "".join(out)
@@ -432,10 +415,13 @@ def build(run_dir):
     css = open(os.path.join(HERE, "vct_report", "style.css")).read()
     js = open(os.path.join(HERE, "vct_report", "viewer.js")).read()
     scene = run.json.get("scene", {}).get("source", os.path.basename(run.path))
-    sections = [summary(p), final_images(p), bias_section(p), walkthrough(p), performance(p)]
+    # The first screen answers the question (vct_report/glance.py); the long tables follow.
+    verdicts = run.json.get("verdicts") or load_compare_json(run)
+    sections = [glance(p, verdicts), summary(p), final_images(p), bias_section(p), walkthrough(p), performance(p)]
     doc = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>VCT Oracle: %s</title><style>%s</style></head><body>" % (E(str(scene)), css),
-           "<header><h1>VCT Oracle report: %s</h1><div class='sub'>%s</div></header>" % (E(str(scene)), E(run.path)),
-           "<nav><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a>"
+           "<header><h1>VCT Oracle report: %s</h1><div class='sub' title='%s'>run %s</div></header>" % (
+               E(str(scene)), E(run.path), E(os.path.basename(run.path))),
+           "<nav><a href='#glance'>at a glance</a><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a>"
            "<a href='#walkthrough'>walkthrough</a><a href='#performance'>performance</a></nav><main>",
            "".join(sections),
            "<p>Report status (for tests): <code id='status' data-ok='pending'>pending</code></p>",

@@ -30,7 +30,8 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-# Python venv for the report and image metrics (FLIP). Rebuilt only when requirements change.
+# Python venv for the report, image metrics (FLIP) and the `import vct` module's build and tests
+# (nanobind, pytest, matplotlib). Rebuilt only when requirements change.
 if [ ! -f .venv/.requirements-done ] || ! cmp -s report/requirements.txt .venv/.requirements-done; then
   echo "setup: making .venv"
   python3 -m venv .venv
@@ -52,8 +53,22 @@ if [ ! -d tools/gltf-validator/node_modules/gltf-validator ]; then
   npm ci --silent --no-audit --no-fund --prefix tools/gltf-validator
 fi
 
+# The Python module (docs/python.md) is built against the venv's Python and nanobind; a build
+# directory configured before it existed is switched on here (once).
+PY_ARGS=(-DVCT_PYTHON=ON "-DPython_EXECUTABLE=$PWD/.venv/bin/python")
 if [ ! -f "$BUILD_DIR/build.ninja" ]; then
-  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache ${CMAKE_ARGS:-}
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+    "${PY_ARGS[@]}" ${CMAKE_ARGS:-}
+elif ! grep -q '^VCT_PYTHON:BOOL=ON' "$BUILD_DIR/CMakeCache.txt"; then
+  cmake -S . -B "$BUILD_DIR" "${PY_ARGS[@]}"
 fi
 cmake --build "$BUILD_DIR" -j "$(nproc)"
 echo "setup: built $BUILD_DIR/bin/vct"
+
+# `import vct` in the venv: a .pth file puts the build's package folder on its path, so every
+# rebuild is what `.venv/bin/python` imports (sanitizer builds have no module: VCT_PYTHON is off).
+if [ -d "$BUILD_DIR/python/vct" ]; then
+  site=$(.venv/bin/python -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+  echo "$PWD/$BUILD_DIR/python" > "$site/vct_oracle.pth"
+  echo "setup: import vct -> $BUILD_DIR/python/vct"
+fi

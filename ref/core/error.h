@@ -1,4 +1,4 @@
-// The two kinds of failure the command line maps to exit codes (DESIGN.md §5):
+// The two kinds of failure the command line maps to exit codes (README.md):
 // bad input or usage -> 2, missing environment (e.g. no GL context) -> 3.
 #pragma once
 

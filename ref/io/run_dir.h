@@ -1,4 +1,4 @@
-// A run directory (DESIGN.md §6): images, volumes and run.json. Everything needed to rebuild the
+// A run directory (docs/pipeline.md): images, volumes and run.json. Everything needed to rebuild the
 // report lives here; every file is written atomically.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Definitions shared by the CPU reference and the GLSL shaders (DESIGN.md §3): the BRDF, the spot
+// Definitions shared by the CPU reference and the GLSL shaders (docs/pipeline.md): the BRDF, the spot
 // falloff of both light models, the cone set, the hash and the parameter block layout.
 // This file compiles as C++17 (with GLM, inside namespace vct::sh) and as GLSL 4.50 (the GL
 // backend prepends "#version 450" and "#define VCT_GLSL 1"). Keep to the common subset:

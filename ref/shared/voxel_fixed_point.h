@@ -1,4 +1,4 @@
-// The deterministic voxel reduction shared by the CPU reference and the GL build (DESIGN.md §4):
+// The deterministic voxel reduction shared by the CPU reference and the GL build (docs/pipeline.md):
 // every fragment adds round(value * 2^14) per channel to a uint32 counter with an integer atomic
 // add (wrapping modulo 2^32 on both sides), a fourth counter counts fragments, and a resolve pass
 // turns (sum, count) into the stored value with integer arithmetic only. Every step is exact in

@@ -120,6 +120,45 @@
     try { draw(); status.voxels = "ok"; } catch (e) { status.voxels = "error"; }
   }
 
+  // The first screen's flip panel: alternates the two chosen final images (PNG previews) every
+  // 700 ms while "flip" is ticked; a click flips by hand.
+  function setupFlip() {
+    const list = window.VCT_FLIP, img = document.getElementById("glance-flip-img");
+    if (!list || !img) return;
+    const pair = document.getElementById("glance-flip-pair"), auto = document.getElementById("glance-flip-auto");
+    const shown = document.getElementById("glance-flip-shown");
+    let second = false;
+    function show() {
+      const ij = pair.value.split(",").map(Number), k = ij[second ? 1 : 0];
+      img.src = list[k][1];
+      shown.textContent = list[k][0];
+    }
+    pair.addEventListener("input", () => { second = false; show(); });
+    img.addEventListener("click", () => { auto.checked = false; second = !second; show(); });
+    setInterval(() => { if (auto.checked) { second = !second; show(); } }, 700);
+    show();
+  }
+
+  // For the browser test (docs/report.md): which first-screen elements lie wholly inside the
+  // first viewport, i.e. are seen without scrolling.
+  function checkGlance() {
+    const ids = ["verdict-sentence", "glance-stage", "glance-mask", "glance-ref", "glance-gl", "glance-pt",
+      "glance-flip", "glance-bias"];
+    status.viewport = [window.innerWidth, window.innerHeight];
+    status.glance = {};
+    ids.forEach((id) => {
+      const el = document.getElementById(id);
+      if (!el) { status.glance[id] = "absent"; return; }
+      const r = el.getBoundingClientRect();
+      const inside = r.width > 0 && r.height > 0 && r.top >= 0 && r.left >= 0 &&
+        r.bottom <= window.innerHeight + 0.5 && r.right <= window.innerWidth + 0.5;
+      status.glance[id] = inside ? "in" : "out (" + [r.left, r.top, r.right, r.bottom].map(Math.round).join(",") + ")";
+    });
+    // At narrow widths the first screen re-flows instead of running off to the right.
+    const g = document.getElementById("glance");
+    status.glanceOverflow = g ? g.scrollWidth > g.clientWidth + 1 : false;
+  }
+
   window.addEventListener("load", () => {
     const imgs = Array.from(document.images);
     status.images = imgs.length;
@@ -129,6 +168,8 @@
     });
     setupViewer();
     setupVoxels();
+    setupFlip();
+    checkGlance();
     report();
   });
 })();

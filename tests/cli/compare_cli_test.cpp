@@ -1,4 +1,4 @@
-// vct compare's exit codes on real files: 0 pass, 1 fail, 2 bad input (DESIGN.md §5).
+// vct compare's exit codes on real files: 0 pass, 1 fail, 2 bad input (README.md).
 #include <gtest/gtest.h>
 
 #include <cstdlib>

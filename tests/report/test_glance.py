@@ -1,0 +1,56 @@
+"""The first screen's verdict sentence and stage choice (report/vct_report/glance.py) on
+hand-made verdicts: a fail names the first failing stage and the first clause of its note, ties
+only are a match with the warning count, no stages say why GL was not compared; and every stage
+name the pipeline dumps has docs and sources that exist in the repository."""
+import os
+import re
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "report"))
+
+from vct_report.glance import focus_stage, verdict_sentence  # noqa: E402
+from vct_report.stage_docs import STAGE_DOCS, stage_doc  # noqa: E402
+
+
+def stage(name, verdict, note=""):
+    return {"stage": name, "verdict": verdict, "note": note}
+
+
+def test_a_failure_names_the_first_failing_stage():
+    v = {"first_failing": "voxel.radiance", "stages": [
+        stage("gbuffer.depth", "pass"), stage("voxel.radiance", "fail", "11 of 5166 voxels beyond the bound; 3 ties"),
+        stage("image.final", "fail")]}
+    cls, text = verdict_sentence(v)
+    assert cls == "fail"
+    assert text == ("GL fails at voxel.radiance: 11 of 5166 voxels beyond the bound "
+                    "(2 stages fail in all; later ones usually follow from it).")
+    assert focus_stage(v)["stage"] == "voxel.radiance"
+
+
+def test_ties_only_are_a_match_with_the_warning_count():
+    v = {"first_failing": "", "stages": [stage("a", "pass"), stage("image.direct", "warn"), stage("b", "warn")]}
+    assert verdict_sentence(v) == ("warn", "GL matches the CPU reference at every stage (3 compared); "
+                                           "2 warnings are ties the tolerance models allow (first: image.direct).")
+    assert focus_stage(v)["stage"] == "image.direct"
+
+
+def test_all_pass_and_not_compared():
+    v = {"first_failing": "", "stages": [stage("a", "pass"), stage("b", "pass")]}
+    assert verdict_sentence(v) == ("pass", "GL matches the CPU reference at every stage (2 compared).")
+    assert focus_stage(v) is None
+    cls, text = verdict_sentence({"stages": [], "note": "gl unavailable: no EGL device"})
+    assert cls == "missing" and "gl unavailable: no EGL device" in text
+
+
+def test_every_pointer_is_to_a_file_in_the_repository():
+    for name in ("shadow_map.0", "gbuffer.normal", "image.direct", "voxel.occupancy", "voxel.holes", "voxel.radiance",
+                 "mip.iso.2", "mip.posx.1", "image.indirect_diffuse", "image.indirect_specular", "image.soft_shadow",
+                 "image.particles", "image.final"):
+        assert stage_doc(name) is not None, name
+    for _, _, docs, ref_src, gl_src in STAGE_DOCS:
+        doc_file, section = docs.split(" § ")
+        assert ("# " + section) in open(os.path.join(ROOT, doc_file)).read() or ("### " + section) in open(
+            os.path.join(ROOT, doc_file)).read(), docs
+        for path in re.sub(r" \([^)]*\)", "", ref_src + ", " + gl_src).split(", "):
+            assert os.path.exists(os.path.join(ROOT, path)), path
