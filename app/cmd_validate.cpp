@@ -19,6 +19,7 @@
 #include "phase_progress.h"
 #include "pt/progress.h"
 #include "stages/explain.h"
+#include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
 #include "validate_run.h"
 #include "verdict_summary.h"
@@ -138,6 +139,8 @@ int run(const ValidateOptions& o) {
                          {"lights", scene.spot_lights.size()}};
   run.json()["settings"] = s;
   run.json()["environment"] = environment_info();
+  // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).
+  run.json()["stage_registry"] = stage_registry_json();
   std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  -> %s\n", scene.source.c_str(), s.vct.width,
               s.vct.height, s.vct.grid, s.pt.spp, thread_count(), out.c_str());
   std::fflush(stdout);

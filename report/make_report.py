@@ -13,6 +13,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vct_report import runio, svg  # noqa: E402
 from vct_report.glance import glance  # noqa: E402
+from vct_report import registry  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -125,12 +126,12 @@ def load_compare_json(run):
 # ---------------------------------------------------------------- final images + viewer
 def final_images(p):
     run = p.run
-    cands = [("ref", run.stage_file("ref", "image.final"), run.stage_file("ref", "image.final", False)),
-             ("gl", run.stage_file("gl", "image.final"), run.stage_file("gl", "image.final", False)),
+    cands = [("ref", run.stage_file("ref", registry.FINAL), run.stage_file("ref", registry.FINAL, False)),
+             ("gl", run.stage_file("gl", registry.FINAL), run.stage_file("gl", registry.FINAL, False)),
              ("pt", run.file("pt", "pt_full.png"), run.file("pt", "pt_full.exr"))]
     for side in run.sets:
         if side not in ("ref", "gl"):
-            cands.append((side, run.stage_file(side, "image.final"), run.stage_file(side, "image.final", False)))
+            cands.append((side, run.stage_file(side, registry.FINAL), run.stage_file(side, registry.FINAL, False)))
     out = ['<h2 id="final">Final images</h2><div class="row">']
     labels = {"ref": "CPU reference (VCT)", "gl": "GL (VCT)", "pt": "path tracer (ground truth)"}
     for name, png, _ in cands:
@@ -223,7 +224,9 @@ def walkthrough(p):
     times = j.get("timings_ms", {})
     verdicts = {s["stage"]: s for s in (j.get("verdicts") or {}).get("stages", [])}
     out = ['<h2 id="walkthrough">Walkthrough: the pipeline stage by stage</h2>']
-    for key, title, prefixes, text, settings, timing_key in STAGES:
+    reg = registry.from_run(j)
+    for key, title, text, settings, timing_key in STAGES:
+        prefixes = reg.step_prefixes(key)
         body = ['<div class="stage" id="stage-%s"><h3>%s</h3><p>%s</p>' % (key, E(title), E(text))]
         body.append('<div class="settings">%s</div>' % " &middot; ".join(
             "%s = %s" % (E(k), E(json.dumps(vct[k]))) for k in settings if k in vct))
@@ -232,10 +235,6 @@ def walkthrough(p):
             if t:
                 body.append("<div>time: %s</div>" % E(", ".join(t)))
         stage_names = [s for s in (run.stages("ref") or run.stages("gl")) if any(s == pre or (pre.endswith(".") and s.startswith(pre)) for pre in prefixes)]
-        if key == "inject":
-            stage_names = ["voxel.radiance"]
-        if key == "voxelize":
-            stage_names = [s for s in ("voxel.conservative", "voxel.fragments") if s in run.stages("ref") or s in run.stages("gl")]
         figs = []
         for st in stage_names:
             for side in ("ref", "gl"):
@@ -247,7 +246,7 @@ def walkthrough(p):
                     E(st), verdict_cell(v["verdict"]), E(v.get("bound", "")), E(v.get("note", ""))))
         if key == "voxelize":
             figs.append(voxel_view(p))
-            for extra in ("voxel.occupancy", "voxel.holes"):
+            for extra in registry.VOXEL_DERIVED:
                 if extra in verdicts:
                     v = verdicts[extra]
                     figs.append('<div><table><tr><th>%s</th>%s</tr><tr><td colspan=2>%s</td></tr></table></div>' % (
@@ -284,7 +283,7 @@ def explain_table(ex):
 def voxel_view(p):
     run = p.run
     side = "ref" if "ref" in run.sets else next(iter(run.sets), None)
-    path = run.stage_file(side, "voxel.radiance", False) if side else None
+    path = run.stage_file(side, registry.VOXEL_RADIANCE, False) if side else None
     vol = runio.read_nrrd(path) if path else None
     if vol is None:
         return missing("voxel radiance volume for the 3D view")

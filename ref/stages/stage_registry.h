@@ -120,6 +120,14 @@ struct StageRow {
   // `grow`, else nullptr for a member the frame does not have.
   Image* (*image)(FrameResult& f, int i, bool grow);
   Volume* (*volume)(FrameResult& f, int i, bool grow);
+  // For readers (docs/external_format.md, the report's first screen and walkthrough): what the
+  // stage holds, the docs/pipeline.md section that defines it, the files that compute it on each
+  // side ("-" = reference only), and the report walkthrough step that shows it ("" = none).
+  const char* what;
+  const char* docs_section;
+  const char* ref_source;
+  const char* gl_source;
+  const char* walkthrough_step;
 };
 
 /// Every row, in pipeline order.

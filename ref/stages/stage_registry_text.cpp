@@ -90,7 +90,12 @@ nlohmann::json stage_registry_json() {
                     {"own_inputs", row.own_inputs},
                     {"cone_input", cone_input_name(row.cone_input)},
                     {"channels", row.channels},
-                    {"pt_aov", row.pt_aov}});
+                    {"pt_aov", row.pt_aov},
+                    {"what", row.what},
+                    {"docs", std::string("docs/pipeline.md § ") + row.docs_section},
+                    {"ref_source", row.ref_source},
+                    {"gl_source", row.gl_source},
+                    {"walkthrough_step", row.walkthrough_step}});
   }
   return rows;
 }

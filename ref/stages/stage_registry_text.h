@@ -10,7 +10,8 @@
 namespace vct {
 
 /// One object per row, in pipeline order: name, family ("light", "mip_level" or null), kind,
-/// role, dump_stem, tolerance_model, own_inputs, cone_input, channels, pt_aov.
+/// role, dump_stem, tolerance_model, own_inputs, cone_input, channels, pt_aov, what, docs,
+/// ref_source, gl_source, walkthrough_step.
 nlohmann::json stage_registry_json();
 
 std::string stage_registry_markdown();

@@ -6,7 +6,7 @@ here reads run.json and files the run already wrote: no image is decoded, nothin
 import html
 import os
 
-from .stage_docs import stage_doc
+from . import registry
 
 E = html.escape
 
@@ -73,7 +73,7 @@ def focus_card(page, verdicts):
     mimg = ('<a href="%s"><img id="glance-mask" class="mask" src="%s" alt="error mask of %s"></a>' % (
         E(page.rel(mpath)), E(page.rel(mpath)), E(name)) if mpath and os.path.exists(mpath)
         else "<div class='missing'>missing: mask</div>")
-    doc = stage_doc(name)
+    doc = registry.from_run(page.run.json).doc(name)
     where = ("<div class='small'><b>computes</b> %s<br><b>docs</b> <code>%s</code><br><b>ref</b> <code>%s</code>"
              "<br><b>gl</b> <code>%s</code></div>" % tuple(E(x) for x in doc)) if doc else ""
     return ("<div class='card' id='glance-stage'><h3>%s: <code>%s</code> <span class='v-%s'>&nbsp;%s&nbsp;</span></h3>"
@@ -85,8 +85,8 @@ def focus_card(page, verdicts):
 def final_strip(page):
     """The three final images side by side plus a flip panel that alternates two of them."""
     run = page.run
-    cands = [("ref", "CPU reference", run.stage_file("ref", "image.final")),
-             ("gl", "GL", run.stage_file("gl", "image.final")),
+    cands = [("ref", "CPU reference", run.stage_file("ref", registry.FINAL)),
+             ("gl", "GL", run.stage_file("gl", registry.FINAL)),
              ("pt", "path tracer", run.file("pt", "pt_full.png"))]
     figs = []
     for key, label, png in cands:

@@ -2,7 +2,11 @@
 // the FrameResult field it names, and the rows keep the pipeline order the verdicts rely on.
 #include "stages/stage_registry.h"
 
+#include <filesystem>
+#include <fstream>
+#include <regex>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -76,6 +80,29 @@ TEST(StageRegistry, PipelineOrderPutsCausesBeforeEffects) {
   EXPECT_LT(pos("voxel.radiance"), pos("mip.iso"));
   EXPECT_LT(pos("mip.negz"), pos("image.indirect_diffuse"));
   EXPECT_LT(pos("image.indirect_diffuse"), pos("image.final"));
+}
+
+// Readers follow the registry's pointers (the report's first screen prints them): every docs
+// section is a heading of docs/pipeline.md and every source file exists.
+TEST(StageRegistry, PointersLeadToTheRepository) {
+  std::ifstream in(std::string(VCT_SOURCE_DIR) + "/docs/pipeline.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  for (const StageRow& row : stage_rows()) {
+    EXPECT_NE(doc.str().find(std::string("### ") + row.docs_section), std::string::npos)
+        << row.name << ": no heading '" << row.docs_section << "' in docs/pipeline.md";
+    for (const char* sources : {row.ref_source, row.gl_source}) {
+      // "a.cpp (fn), b.frag" -> a.cpp, b.frag; "-" = none on that side.
+      const std::string list = std::regex_replace(sources, std::regex(" \\([^)]*\\)"), "");
+      std::stringstream items(list);
+      for (std::string path; std::getline(items, path, ',');) {
+        path.erase(0, path.find_first_not_of(' '));
+        if (path == "-") continue;
+        EXPECT_TRUE(std::filesystem::exists(std::string(VCT_SOURCE_DIR) + "/" + path)) << row.name << ": " << path;
+      }
+    }
+    EXPECT_GT(std::string(row.what).size(), 0u) << row.name;
+  }
 }
 
 }  // namespace

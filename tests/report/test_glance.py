@@ -10,7 +10,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "report"))
 
 from vct_report.glance import focus_stage, verdict_sentence  # noqa: E402
-from vct_report.stage_docs import STAGE_DOCS, stage_doc  # noqa: E402
+from vct_report.registry import Registry  # noqa: E402
 
 
 def stage(name, verdict, note=""):
@@ -43,14 +43,20 @@ def test_all_pass_and_not_compared():
     assert cls == "missing" and "gl unavailable: no EGL device" in text
 
 
-def test_every_pointer_is_to_a_file_in_the_repository():
-    for name in ("shadow_map.0", "gbuffer.normal", "image.direct", "voxel.occupancy", "voxel.holes", "voxel.radiance",
-                 "mip.iso.2", "mip.posx.1", "image.indirect_diffuse", "image.indirect_specular", "image.soft_shadow",
-                 "image.particles", "image.final"):
-        assert stage_doc(name) is not None, name
-    for _, _, docs, ref_src, gl_src in STAGE_DOCS:
-        doc_file, section = docs.split(" § ")
-        assert ("# " + section) in open(os.path.join(ROOT, doc_file)).read() or ("### " + section) in open(
-            os.path.join(ROOT, doc_file)).read(), docs
-        for path in re.sub(r" \([^)]*\)", "", ref_src + ", " + gl_src).split(", "):
-            assert os.path.exists(os.path.join(ROOT, path)), path
+def test_the_registry_answers_for_family_members():
+    rows = [{"name": "image.final", "family": None, "what": "the frame", "docs": "docs/pipeline.md § Final composite",
+             "ref_source": "r", "gl_source": "g", "walkthrough_step": "final"},
+            {"name": "mip.iso", "family": "mip_level", "what": "iso", "docs": "d", "ref_source": "r", "gl_source": "g",
+             "walkthrough_step": "mips"}]
+    for n in ("voxel.radiance", "voxel.conservative", "voxel.fragments", "voxel.occupancy", "voxel.holes"):
+        rows.append({"name": n, "family": None, "what": n, "docs": "d", "ref_source": "r", "gl_source": "g",
+                     "walkthrough_step": ""})
+    reg = Registry(rows)
+    assert reg.doc("mip.iso.3")[0] == "iso"
+    assert reg.doc("mip.iso.x") is None and reg.doc("nope") is None
+    assert reg.step_prefixes("mips") == ["mip.iso."]
+    try:
+        Registry(rows[1:])  # no image.final: the report's named stages must exist
+        assert False
+    except ValueError as e:
+        assert "image.final" in str(e)
