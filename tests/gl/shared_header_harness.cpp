@@ -17,25 +17,28 @@ namespace {
 
 const std::string& embedded_file(const std::string& name) {
   const auto it = embedded_files().find(name);
-  if (it == embedded_files().end()) throw std::runtime_error("element harness: no embedded " + name);
+  if (it == embedded_files().end())
+    throw std::runtime_error("element harness: no embedded " + name);
   return it->second;
 }
 
 std::string harness_source(const std::vector<ElementCase>& cases, const std::string& header) {
   std::string s = header;
-  s +=
-      "\nlayout(local_size_x = 64) in;\n"
-      "layout(std430, binding = 0) readonly buffer ElementInputs { uvec4 in_words[]; };\n"
-      "layout(std430, binding = 1) writeonly buffer ElementOutputs { uvec4 out_words[]; };\n"
-      "uniform uint u_points;\nuniform uint u_in_stride;\nuniform uint u_out_stride;\nuniform int u_case;\n"
-      "uint g_point = 0u;  // set first thing in main()\n"
-      "uvec4 uin(uint k) { return in_words[g_point * u_in_stride + k]; }\n"
-      "vec4 fin(uint k) { return uintBitsToFloat(uin(k)); }\n"
-      "void putu(uint k, uvec4 v) { out_words[g_point * u_out_stride + k] = v; }\n"
-      "void put(uint k, vec4 v) { putu(k, floatBitsToUint(v)); }\n";
+  s += "\nlayout(local_size_x = 64) in;\n"
+       "layout(std430, binding = 0) readonly buffer ElementInputs { uvec4 in_words[]; };\n"
+       "layout(std430, binding = 1) writeonly buffer ElementOutputs { uvec4 out_words[]; };\n"
+       "uniform uint u_points;\nuniform uint u_in_stride;\nuniform uint u_out_stride;\nuniform int "
+       "u_case;\n"
+       "uint g_point = 0u;  // set first thing in main()\n"
+       "uvec4 uin(uint k) { return in_words[g_point * u_in_stride + k]; }\n"
+       "vec4 fin(uint k) { return uintBitsToFloat(uin(k)); }\n"
+       "void putu(uint k, uvec4 v) { out_words[g_point * u_out_stride + k] = v; }\n"
+       "void put(uint k, vec4 v) { putu(k, floatBitsToUint(v)); }\n";
   for (size_t c = 0; c < cases.size(); ++c)
-    s += "void element_case_" + std::to_string(c) + "() { // " + cases[c].function + "\n" + cases[c].glsl + "\n}\n";
-  s += "void main() {\n  g_point = gl_GlobalInvocationID.x;\n  if (g_point >= u_points) return;\n  switch (u_case) {\n";
+    s += "void element_case_" + std::to_string(c) + "() { // " + cases[c].function + "\n" +
+         cases[c].glsl + "\n}\n";
+  s += "void main() {\n  g_point = gl_GlobalInvocationID.x;\n  if (g_point >= u_points) return;\n  "
+       "switch (u_case) {\n";
   for (size_t c = 0; c < cases.size(); ++c)
     s += "    case " + std::to_string(c) + ": element_case_" + std::to_string(c) + "(); break;\n";
   s += "  }\n}\n";
@@ -47,11 +50,12 @@ std::string describe_input(const ElementCase& c, const glm::uvec4* in) {
   char buf[160];
   for (size_t k = 0; k < c.in_kinds.size(); ++k) {
     if (c.in_kinds[k] == 'u')
-      std::snprintf(buf, sizeof buf, "%s(%uu, %uu, %uu, %uu)", k ? ", " : "", in[k].x, in[k].y, in[k].z, in[k].w);
+      std::snprintf(buf, sizeof buf, "%s(%uu, %uu, %uu, %uu)", k ? ", " : "", in[k].x, in[k].y,
+                    in[k].z, in[k].w);
     else {
       const glm::vec4 f = floats(in[k]);
-      std::snprintf(buf, sizeof buf, "%s(%.9g, %.9g, %.9g, %.9g)", k ? ", " : "", double(f.x), double(f.y),
-                    double(f.z), double(f.w));
+      std::snprintf(buf, sizeof buf, "%s(%.9g, %.9g, %.9g, %.9g)", k ? ", " : "", double(f.x),
+                    double(f.y), double(f.z), double(f.w));
     }
     out += buf;
   }
@@ -89,23 +93,30 @@ ElementResult compare_case(const ElementCase& c, const std::vector<glm::uvec4>& 
         char buf[240];
         if (bound == 0.0f) {
           score = std::numeric_limits<double>::infinity();
-          std::snprintf(buf, sizeof buf, "output %d.%c: GL 0x%08x (%.9g) vs C++ 0x%08x (%.9g), exact expected", k,
+          std::snprintf(buf, sizeof buf,
+                        "output %d.%c: GL 0x%08x (%.9g) vs C++ 0x%08x (%.9g), exact expected", k,
                         "xyzw"[i], g, double(gf), w, double(wf));
         } else {
           const double err = std::abs(double(gf) - double(wf));
-          score = std::isfinite(err) ? err / double(bound) : std::numeric_limits<double>::infinity();
-          if (err > double(bound) + double(FLT_MIN) || !std::isfinite(err)) score = std::max(score, 1.0 + 1e-9);
-          else if (score > 1.0) score = 1.0;  // within the denormal-flush allowance
+          score =
+              std::isfinite(err) ? err / double(bound) : std::numeric_limits<double>::infinity();
+          if (err > double(bound) + double(FLT_MIN) || !std::isfinite(err))
+            score = std::max(score, 1.0 + 1e-9);
+          else if (score > 1.0)
+            score = 1.0;  // within the denormal-flush allowance
           r.worst_abs = std::max(r.worst_abs, err);
           r.worst_ulps = std::max(r.worst_ulps, ulp_distance(gf, wf));
-          std::snprintf(buf, sizeof buf, "output %d.%c: GL %.9g vs C++ %.9g, |diff| %.3g = %.3g x bound %.3g (%.0f ulp)",
-                        k, "xyzw"[i], double(gf), double(wf), err, score, double(bound), ulp_distance(gf, wf));
+          std::snprintf(
+              buf, sizeof buf,
+              "output %d.%c: GL %.9g vs C++ %.9g, |diff| %.3g = %.3g x bound %.3g (%.0f ulp)", k,
+              "xyzw"[i], double(gf), double(wf), err, score, double(bound), ulp_distance(gf, wf));
           r.worst_ratio = std::max(r.worst_ratio, std::isfinite(score) ? score : 1e300);
         }
         if (score > 1.0) r.pass = false;
         if (score > worst_score) {
           worst_score = score;
-          worst_text = std::string(buf) + " at point " + std::to_string(p) + ", input " + describe_input(c, in);
+          worst_text = std::string(buf) + " at point " + std::to_string(p) + ", input " +
+                       describe_input(c, in);
         }
       }
     }
@@ -122,14 +133,17 @@ std::string shared_header_glsl(const std::vector<std::pair<std::string, std::str
                   embedded_file("voxel_fixed_point.h") + "\n";
   for (const auto& [from, to] : perturb) {
     const auto at = h.find(from);
-    if (at == std::string::npos) throw std::runtime_error("element harness: perturbation '" + from + "' not found");
+    if (at == std::string::npos)
+      throw std::runtime_error("element harness: perturbation '" + from + "' not found");
     h.replace(at, from.size(), to);
   }
   return h;
 }
 
-std::vector<ElementResult> run_element_cases(const std::vector<ElementCase>& cases, const std::string& header) {
-  const Program program({{GL_COMPUTE_SHADER, "shared_header_element.comp", harness_source(cases, header)}});
+std::vector<ElementResult> run_element_cases(const std::vector<ElementCase>& cases,
+                                             const std::string& header) {
+  const Program program(
+      {{GL_COMPUTE_SHADER, "shared_header_element.comp", harness_source(cases, header)}});
   std::vector<ElementResult> results;
   for (size_t c = 0; c < cases.size(); ++c) {
     const ElementCase& e = cases[c];
@@ -139,7 +153,8 @@ std::vector<ElementResult> run_element_cases(const std::vector<ElementCase>& cas
     GLuint buffers[2];
     glCreateBuffers(2, buffers);
     const size_t out_words = n * size_t(e.outputs);
-    glNamedBufferStorage(buffers[0], GLsizeiptr(e.inputs.size() * sizeof(glm::uvec4)), e.inputs.data(), 0);
+    glNamedBufferStorage(buffers[0], GLsizeiptr(e.inputs.size() * sizeof(glm::uvec4)),
+                         e.inputs.data(), 0);
     // Filled with a pattern no case writes, so a skipped store shows as a mismatch.
     const std::vector<glm::uvec4> fill(out_words, glm::uvec4(0xDEADBEEFu));
     glNamedBufferStorage(buffers[1], GLsizeiptr(out_words * sizeof(glm::uvec4)), fill.data(), 0);

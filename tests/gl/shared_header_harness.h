@@ -66,11 +66,13 @@ inline float as_float(uint32_t w) {
 
 /// The shared headers as GLSL sees them (gl/gl_program.cpp's prelude), with every occurrence of
 /// each `from` replaced by `to` when a perturbation is given (the harness's own failure check).
-std::string shared_header_glsl(const std::vector<std::pair<std::string, std::string>>& perturb = {});
+std::string shared_header_glsl(
+    const std::vector<std::pair<std::string, std::string>>& perturb = {});
 
 /// Runs every case on the current GL context with one compute program built from `header`
 /// (shared_header_glsl()) and compares with the C++ side. Throws std::runtime_error on GL
 /// failures (compile errors name the case's source).
-std::vector<ElementResult> run_element_cases(const std::vector<ElementCase>& cases, const std::string& header);
+std::vector<ElementResult> run_element_cases(const std::vector<ElementCase>& cases,
+                                             const std::string& header);
 
 }  // namespace vct::gl::test
