@@ -7,6 +7,7 @@
 // 1), an operation's budget is its relative error in units of u, GL and C++ budgets add up.
 #include <cmath>
 #include <cstdio>
+#include <regex>
 #include <set>
 
 #include "gl_test_util.h"
@@ -803,6 +804,24 @@ std::vector<ElementCase> all_cases() {
 }
 
 }  // namespace
+
+// No shared function escapes: every VCT_FN / VCT_FP_FN declared in the headers the shaders get
+// is called by some case's GLSL (a function added to vct_shared.h needs a case here).
+TEST(SharedHeaderElement, EverySharedFunctionHasACase) {
+  const std::string header = shared_header_glsl();
+  std::string called;
+  for (const ElementCase& c : all_cases()) called += c.glsl + "\n";
+  const std::regex decl(R"(VCT_(?:FP_)?FN\s+\w+\s+(\w+)\s*\()");
+  size_t functions = 0;
+  for (auto it = std::sregex_iterator(header.begin(), header.end(), decl);
+       it != std::sregex_iterator(); ++it) {
+    const std::string name = (*it)[1];
+    ++functions;
+    EXPECT_TRUE(std::regex_search(called, std::regex("\\b" + name + "\\s*\\(")))
+        << name << " (ref/shared/) has no element case";
+  }
+  EXPECT_GE(functions, 26u);  // the regex still finds the declarations (26 today)
+}
 
 TEST(SharedHeaderElement, EveryFunctionMatchesTheCppBuildWithinItsGlslBound) {
   VCT_REQUIRE_GL();
