@@ -722,12 +722,13 @@ ElementCase particle_state_case() {
     const sh::ParticleEmitterBlock e = emitter(k);
     for (uint32_t id = 0; id < 64; id += 3)
       for (float t : times) {
-        // The cycle floor((t - birth)/lifetime) jumps at each respawn: GL's division (2.5 ulp) may
-        // land on the other side of an integer within ~1e-6 of it, so those points are left out.
+        // The cycle floor((t - birth)/lifetime) jumps at each respawn: the two sides' quotients
+        // differ by up to ~16 u |q| (birth, since, the division), so points within 1e-4 max(1, |q|)
+        // of an integer could land on different cycles and are left out.
         const double life = std::max(double(e.spawn_extent_lifetime.w), 1e-6);
         const double q =
             (double(t) - double(id) / std::max(double(e.origin_count.w), 1.0) * life) / life;
-        if (std::abs(q - std::round(q)) < 1e-4) continue;
+        if (std::abs(q - std::round(q)) < 1e-4 * std::max(1.0, std::abs(q))) continue;
         c.inputs.insert(
             c.inputs.end(),
             {words(e.origin_count), words(e.spawn_extent_lifetime), words(e.velocity_min),
