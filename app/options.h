@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/settings.h"
+#include "scene/gltf_loader.h"
 
 namespace vct::app {
 
@@ -15,10 +16,13 @@ struct CommonOptions {
   std::string config;  // --config FILE.json
   int threads = 0;     // --threads N
   std::optional<int> width, height, grid, spp;
+  SceneLoadOptions scene_load;  // --allow-outside-scene-dir
 };
 
 /// --out, --config, --threads.
 void add_common_flags(CLI::App* cmd, CommonOptions& o);
+/// --allow-outside-scene-dir, on every command that loads a scene (docs/scenes.md, "File access").
+void add_scene_access_flag(CLI::App* cmd, SceneLoadOptions& o);
 /// --width, --height (image size for VCT and the path tracer).
 void add_image_flags(CLI::App* cmd, CommonOptions& o);
 /// --grid N.
