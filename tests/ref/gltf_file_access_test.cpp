@@ -132,10 +132,10 @@ TEST(GltfFileAccess, FilesInsideTheFolderAndDataUrisLoad) {
 // tinygltf looks for a URI below the working directory when it is not beside the scene. The
 // policy sits in its file callbacks too, so that second place is not read either.
 TEST(GltfFileAccess, TinygltfsWorkingDirectoryFallbackGoesThroughThePolicy) {
+  const std::string path = textured_scene("cwd_fallback", "only_in_cwd.png");  // makes outside.png
   const fs::path cwd = test::temp_dir() / "cwd";
   fs::create_directories(cwd);
   fs::copy_file(test::temp_dir() / "outside.png", cwd / "only_in_cwd.png", fs::copy_options::overwrite_existing);
-  const std::string path = textured_scene("cwd_fallback", "only_in_cwd.png");
   const fs::path old = fs::current_path();
   fs::current_path(cwd);
   std::string refused;
