@@ -66,7 +66,10 @@ bool file_exists(const std::string& path, void* user) {
   return access->refusal(path).empty() && tinygltf::FileExists(path, nullptr);
 }
 
-std::string expand_nothing(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+// No ~ or $VAR expansion; only an absolute URI (allowed outside files) is taken back from its join.
+std::string expand_path(const std::string& path, void* user) {
+  return static_cast<const FileAccess*>(user)->unjoin_absolute(path);
+}
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   const auto* access = static_cast<const FileAccess*>(user);
@@ -101,7 +104,20 @@ std::string decode_uri_as_tinygltf(const std::string& uri) {
 }
 
 FileAccess::FileAccess(const std::string& scene_dir, bool allow_outside)
-    : dir_(resolved(scene_dir.empty() ? fs::path(".") : fs::path(scene_dir))), allow_outside_(allow_outside) {}
+    : dir_(resolved(scene_dir.empty() ? fs::path(".") : fs::path(scene_dir))),
+      base_(scene_dir),
+      allow_outside_(allow_outside) {}
+
+std::string FileAccess::unjoin_absolute(const std::string& joined) const {
+  if (!allow_outside_) return joined;
+  for (const std::string& folder : {base_, std::string(".")}) {
+    if (folder.empty()) continue;  // tinygltf does not join to an empty folder
+    const std::string prefix = folder.back() == '/' ? folder : folder + "/";
+    if (joined.size() > prefix.size() && joined.compare(0, prefix.size(), prefix) == 0 && joined[prefix.size()] == '/')
+      return joined.substr(prefix.size());
+  }
+  return joined;
+}
 
 void FileAccess::check_uri(const std::string& file, const std::string& uri, const std::string& where) const {
   if (allow_outside_) return;
@@ -119,7 +135,7 @@ std::string FileAccess::refusal(const std::string& path) const {
 }
 
 tinygltf::FsCallbacks FileAccess::callbacks() const {
-  return {&file_exists, &expand_nothing, &read_whole_file, &write_nothing, const_cast<FileAccess*>(this)};
+  return {&file_exists, &expand_path, &read_whole_file, &write_nothing, const_cast<FileAccess*>(this)};
 }
 
 void check_document_uris(const nlohmann::json& doc, const std::string& file, const FileAccess& access) {

@@ -32,8 +32,14 @@ class FileAccess {
 
   const std::filesystem::path& scene_dir() const { return dir_; }
 
+  /// tinygltf joins every URI to a folder ("<base>/<uri>", then "./<uri>"), which turns an
+  /// absolute path into a relative one; given such a join of an absolute URI, the URI itself.
+  /// Only when outside files are allowed (refused otherwise before tinygltf runs).
+  std::string unjoin_absolute(const std::string& joined) const;
+
  private:
   std::filesystem::path dir_;  // absolute, symlinks resolved
+  std::string base_;           // the folder as tinygltf was given it
   bool allow_outside_;
 };
 
