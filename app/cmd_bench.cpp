@@ -28,7 +28,7 @@ struct BenchFlags {
 void run(const BenchFlags& f) {
   const Settings settings = resolve_settings(f.common);
   check_memory_budget(settings);
-  const Scene scene = load_scene(f.scene);
+  const Scene scene = load_scene(f.scene, f.common.scene_load);
   BenchOptions o = f.bench;
   o.gl = !f.no_gl;
   o.pt = !f.no_pt;
@@ -50,6 +50,7 @@ void register_bench(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("bench", "Stage times CPU ref vs GL (ratios), path tracer vs raw Embree");
   cmd->add_option("--scene,scene", f->scene, "glTF 2.0 file (default: built-in scene)");
   add_common_flags(cmd, f->common);
+  add_scene_access_flag(cmd, f->common.scene_load);
   add_image_flags(cmd, f->common);
   add_grid_flag(cmd, f->common);
   cmd->add_option("--repeat", f->bench.repeat, "Frames per backend (median reported)")->check(CLI::Range(1, 100));

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "compare_scene.h"
+#include "options.h"
 #include "compare/isolated_stages.h"
 #include "compare/metrics.h"
 #include "compare/stage_compare.h"
@@ -31,6 +32,7 @@ struct CompareArgs {
   std::string scene, config;  // --scene, --config: isolated judgement of cone stages
   double abs = 0.0, rel = 0.0;
   size_t worst = 10;
+  SceneLoadOptions scene_load;  // --allow-outside-scene-dir, with --scene
 };
 
 // A run directory of `vct validate` holds ref/ and gl/; a stage directory holds the manifest.
@@ -73,7 +75,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
                   "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
     return code;
   }
-  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config);
+  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load);
   cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
   cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
   const int code = finish(rep, a, title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
@@ -130,6 +132,7 @@ void register_compare(CLI::App& app, int& exit_code) {
                   "Stage sets: judge B's cone stages on B's own inputs, re-traced in this glTF scene "
                   "(or builtin:cornell_box), as vct validate does");
   cmd->add_option("--config", a->config, "With --scene: settings JSON for what B's manifest does not say");
+  add_scene_access_flag(cmd, a->scene_load);
   cmd->callback([a, &exit_code]() { exit_code = run(*a); });
 }
 

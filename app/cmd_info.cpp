@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/settings.h"
+#include "options.h"
 #include "scene/gltf_loader.h"
 
 namespace vct::app {
@@ -189,14 +190,16 @@ void register_info(CLI::App& app, int& exit_code) {
   struct Args {
     std::string scene;
     bool json = false;
+    SceneLoadOptions scene_load;
   };
   static Args storage;  // lives as long as the process (CLI11 binds by reference); static, not
   auto* args = &storage;  // new, so LeakSanitizer sees no leak
   CLI::App* cmd = app.add_subcommand("info", "Print a summary of a glTF scene (no SCENE = built-in default)");
   cmd->add_option("scene", args->scene, "glTF 2.0 file (.gltf or .glb)");
   cmd->add_flag("--json", args->json, "Print the summary as JSON");
+  add_scene_access_flag(cmd, args->scene_load);
   cmd->callback([args, &exit_code]() {
-    const Scene scene = load_scene(args->scene);
+    const Scene scene = load_scene(args->scene, args->scene_load);
     if (args->json) {
       std::printf("%s\n", summary(scene).dump(2).c_str());
     } else {

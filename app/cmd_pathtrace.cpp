@@ -33,7 +33,7 @@ int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
   if (f.max_depth) s.pt.max_depth = *f.max_depth;
   if (f.light_model) s.pt.light_model = *f.light_model == "seed" ? LightModel::Seed : LightModel::Gltf;
   validate_settings(s);
-  const Scene scene = load_scene(f.scene);
+  const Scene scene = load_scene(f.scene, common.scene_load);
 
   pt::PathtraceRunOptions o;
   o.out_dir = common.out.empty() ? default_out_dir("pathtrace", f.scene) : common.out;
@@ -76,6 +76,7 @@ void register_pathtrace(CLI::App& app, int& exit_code) {
       "pathtrace", "Path-traced ground truth with AOVs (resumes from a checkpoint in --out; no SCENE = built-in)");
   cmd->add_option("scene", flags->scene, "glTF 2.0 file (.gltf or .glb); empty = built-in default scene");
   add_common_flags(cmd, *common);
+  add_scene_access_flag(cmd, common->scene_load);
   add_image_flags(cmd, *common);
   add_spp_flag(cmd, *common);
   cmd->add_option("--max-depth", flags->max_depth, "Maximum number of bounces (1 = direct light only)")

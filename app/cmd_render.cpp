@@ -161,10 +161,11 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
                                         "x" + std::to_string(settings.vct.height) + " image");
     }
   }
-  const Scene scene = load_scene(scene_path);
+  const Scene scene = load_scene(scene_path, common.scene_load);
+  // Locked before rendering, so a second process writing the same --out is refused at once.
+  RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);
   const FrameResult frame = render_frame(scene, settings, flags.backend);
   if (frame.images.final_image.empty()) throw EnvironmentError("backend '" + flags.backend + "' produced no frame");
-  RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out);
   run.json()["command"] = "render";
   run.json()["backend"] = frame.backend;
   run.json()["settings"] = settings;
@@ -190,7 +191,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
                           {"predicted", format_bytes(predicted.total())},
                           {"peak_rss_bytes", peak_rss_bytes()},
                           {"peak_rss", format_bytes(peak_rss_bytes())}};
-  run.save();
+  run.finish();
   std::printf("vct render: %s frame of %s in %.0f ms -> %s\n", frame.backend.c_str(), scene.source.c_str(),
               frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0, run.path().c_str());
 }
@@ -207,6 +208,7 @@ void register_render(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("render", "Render one VCT frame (no SCENE = built-in default scene)");
   cmd->add_option("scene", *scene_path, "glTF 2.0 file (.gltf or .glb)");
   add_common_flags(cmd, *common);
+  add_scene_access_flag(cmd, common->scene_load);
   add_image_flags(cmd, *common);
   add_grid_flag(cmd, *common);
   add_vct_flags(cmd, *flags);

@@ -124,7 +124,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
 
 int run(const ValidateOptions& o) {
   const Settings s = resolve(o.common);
-  const Scene scene = load_scene(o.scene);
+  const Scene scene = load_scene(o.scene, o.common.scene_load);
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets, GPU-vs-CPU comparison, bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 6 + (o.no_report ? 0 : 1));
@@ -133,7 +133,7 @@ int run(const ValidateOptions& o) {
     for (const auto& v : values) apply_sweep_value(s, key, v);
     progress.add_phases(int(values.size()));
   }
-  RunDir run(out);
+  RunDir run(out, RunRole::Run);  // locked; INCOMPLETE until finish()
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()},
                          {"lights", scene.spot_lights.size()}};
@@ -218,7 +218,7 @@ int run(const ValidateOptions& o) {
   }
   if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
   run.json()["exit_code"] = exit_code;
-  run.save();
+  run.finish();  // everything is written; the report is rebuilt from these files alone
   if (!o.no_report) {
     std::string why;
     progress.begin("HTML report");
@@ -237,6 +237,7 @@ void register_validate(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("validate", "ref + gl + pt, every comparison, run directory and HTML report");
   cmd->add_option("scene", o->scene, "glTF scene (default: the built-in Cornell box)");
   add_common_flags(cmd, o->common);
+  add_scene_access_flag(cmd, o->common.scene_load);
   add_image_flags(cmd, o->common);
   add_grid_flag(cmd, o->common);
   add_spp_flag(cmd, o->common);

@@ -89,9 +89,10 @@ VctSettings settings_of_test_set(const cmp::StageSet& test, const std::string& c
 }
 
 IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string& scene_arg,
-                                    const std::string& config) {
+                                    const std::string& config,
+                                    const SceneLoadOptions& scene_load) {
   IsolatedInputs in;
-  in.scene = load_scene(scene_arg == kBuiltinSceneName ? std::string() : scene_arg);
+  in.scene = load_scene(scene_arg == kBuiltinSceneName ? std::string() : scene_arg, scene_load);
   in.settings = settings_of_test_set(test, config);
   in.frame = cmp::frame_from_stage_set(test, in.scene, in.settings);
   return in;

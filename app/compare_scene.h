@@ -7,6 +7,7 @@
 
 #include "compare/stage_set.h"
 #include "core/settings.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "stages/stage_types.h"
 
@@ -29,6 +30,6 @@ struct IsolatedInputs {
 /// `scene_arg` is a glTF path or "builtin:cornell_box". Throws InputError on a missing scene, a
 /// missing cone input (named), a size mismatch or a scene that cannot be B's.
 IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string& scene_arg,
-                                    const std::string& config);
+                                    const std::string& config, const SceneLoadOptions& scene_load = {});
 
 }  // namespace vct::app

@@ -1,5 +1,6 @@
 // vct: the VCT Oracle command line. Exit codes: 0 ok / passed, 1 comparison failed,
 // 2 bad input or usage, 3 environment missing (README.md).
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -12,6 +13,10 @@
 
 int main(int argc, char** argv) {
   using namespace vct;
+  // Past a file-size limit (ulimit -f) the kernel sends SIGXFSZ, which kills the process with a
+  // core dump by default; ignored, the write fails with EFBIG and write_atomically reports it as
+  // one line, leaving no partial file (issue 19).
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"VCT Oracle: CPU reference, GL build and path-traced ground truth for voxel cone tracing"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "vct 0.1.0");

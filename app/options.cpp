@@ -16,6 +16,11 @@ void add_common_flags(CLI::App* cmd, CommonOptions& o) {
       ->take_all();
 }
 
+void add_scene_access_flag(CLI::App* cmd, SceneLoadOptions& o) {
+  cmd->add_flag("--allow-outside-scene-dir", o.allow_outside_scene_dir,
+                "Let the scene's URIs name files outside its folder (absolute paths, '..', file:, symbolic links)");
+}
+
 void add_image_flags(CLI::App* cmd, CommonOptions& o) {
   cmd->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 16384));

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/settings.h"
+#include "scene/gltf_loader.h"
 
 namespace vct::app {
 
@@ -17,10 +18,13 @@ struct CommonOptions {
   int threads = 0;     // --threads N
   std::optional<int> width, height, grid, spp;
   std::vector<std::string> sets;  // --set KEY=VALUE ... (any row of core/settings_table.h)
+  SceneLoadOptions scene_load;    // --allow-outside-scene-dir
 };
 
 /// --out, --config, --threads, --set.
 void add_common_flags(CLI::App* cmd, CommonOptions& o);
+/// --allow-outside-scene-dir, on every command that loads a scene (docs/scenes.md, "File access").
+void add_scene_access_flag(CLI::App* cmd, SceneLoadOptions& o);
 /// --width, --height (image size for VCT and the path tracer).
 void add_image_flags(CLI::App* cmd, CommonOptions& o);
 /// --grid N.

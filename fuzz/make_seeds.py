@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Seed corpora for the fuzz targets, written into fuzz/corpus/.
-gltf: the small committed scenes, minified, plus each as a .glb (buffer moved into the BIN chunk).
+gltf: the committed scenes (but tiny_triangles), minified, plus each as a .glb (buffer moved into the
+BIN chunk), and inputs at the limits of issue 19 (nesting, a URI leaving the folder, a huge PNG header).
 stage_set: a small run dir's manifest (two stages) + a NRRD + an EXR, joined as fuzz_inputs.h says.
 scene_compare: whole stage sets of the built-in scene at the sizes of scene_compare_steps.h: the ref/
 of two validate runs (`vct render --dump` writes no manifest),
@@ -31,11 +32,32 @@ def glb(doc):
 def gltf_seeds():
     out = corpus / "gltf"
     out.mkdir(parents=True, exist_ok=True)
-    for name in ["plane_spot", "thin_wall", "cornell_box", "furnace_sphere"]:
+    # The scene zoo but tiny_triangles (600 KB minified: over the fuzzer's -max_len).
+    for name in ["plane_spot", "thin_wall", "cornell_box", "furnace_sphere", "demo_room"]:
         doc = json.loads((root / "scenes" / f"{name}.gltf").read_text())
+        for image in doc.get("images", []):  # textures embedded: the fuzzer's folder has none
+            if "uri" in image and not image["uri"].startswith("data:"):
+                png = (root / "scenes" / image["uri"]).read_bytes()
+                image["uri"] = "data:image/png;base64," + base64.b64encode(png).decode()
         (out / f"{name}.gltf").write_text(json.dumps(doc, separators=(",", ":")))
         if len(doc.get("buffers", [])) == 1:
             (out / f"{name}.glb").write_bytes(glb(doc))
+    # Inputs at the limits of issue 19: nesting just under and over kMaxJsonNesting, an image URI
+    # leaving the folder, a PNG whose header claims 100000 x 100000 pixels (as a data URI).
+    plane = json.loads((root / "scenes" / "plane_spot.gltf").read_text())
+    text = json.dumps(plane, separators=(",", ":"))
+    # Seeds named refused_* must be refused (tests/ref/fuzz_regression_test.cpp), the others load.
+    for depth, stem in ((127, "nesting_127"), (129, "refused_nesting_129")):
+        (out / f"{stem}.gltf").write_text('{"extras":' + "[" * depth + "]" * depth + "," + text[1:])
+    for name, uri in [("refused_uri_dotdot", "../../../../../../etc/passwd"),
+                      ("refused_huge_png", "data:image/png;base64," + base64.b64encode(
+                          b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + b"IHDR" +
+                          struct.pack(">IIBBBBB", 100000, 100000, 8, 6, 0, 0, 0) + bytes(4)).decode())]:
+        doc = json.loads(text)
+        doc["images"] = [{"uri": uri}]
+        doc["textures"] = [{"source": 0}]
+        doc["materials"][0].setdefault("pbrMetallicRoughness", {})["baseColorTexture"] = {"index": 0}
+        (out / f"{name}.gltf").write_text(json.dumps(doc, separators=(",", ":")))
 
 
 def stage_set_seeds(run_dir):

@@ -30,7 +30,20 @@ asan() {
   configure build-asan -DVCT_SANITIZE=ON
   timed "ASan+UBSan build" cmake --build build-asan -j "$JOBS"
   # Everything, LeakSanitizer on (GL tests included: Mesa llvmpipe passes it too).
-  timed "ASan+UBSan tests" env ASAN_OPTIONS="detect_leaks=1" \
+  # intercept_tls_get_addr=0: GCC 12's sanitizer runtime (as LLVM up to 16) guesses, in its
+  # __tls_get_addr interceptor, that a dynamic TLS block whose address is 16 mod 4096 carries a
+  # glibc 2.19 header and records the two words before it as a TLS range; since glibc 2.25 there
+  # is no such header (Debian 12 has 2.36), so now and then (by where malloc put the block) the
+  # range is garbage and LeakSanitizer's stop-the-world tracer dies scanning it at exit:
+  # "LeakSanitizer has encountered a fatal error" with no leak reported (google/sanitizers#1322).
+  # Dynamic TLS comes from libraries loaded with dlopen, here Mesa's driver under EGL, which is
+  # why only GL tests and CLI tests running `vct validate` were hit, intermittently
+  # (GlScenes.EverySceneRenders, KillResume.ValidateKilledMidRunRerunsToTheSameOutputs); the
+  # failure was not reproduced on demand, so this is the known mechanism that fits, and the
+  # runtime's own workaround (docs/performance.md, "Sanitizers"). Without
+  # the interceptor LSan does not scan dlopen'ed libraries' dynamic TLS: that can only add
+  # reports (a pointer kept only there), never hide a leak of ours (our TLS is static).
+  timed "ASan+UBSan tests" env ASAN_OPTIONS="detect_leaks=1:intercept_tls_get_addr=0" \
     ctest --test-dir build-asan --output-on-failure -j "$JOBS"
 }
 

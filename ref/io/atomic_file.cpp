@@ -2,6 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +16,14 @@ namespace vct {
 
 namespace fs = std::filesystem;
 
+namespace {
+// The errno values that mean "this place cannot take the file", as opposed to a bug.
+bool is_write_error(int err) {
+  return err == ENOSPC || err == EDQUOT || err == EFBIG || err == EIO || err == EACCES || err == EPERM ||
+         err == EROFS;
+}
+}  // namespace
+
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
@@ -21,20 +32,31 @@ void write_atomically(const std::string& path, const std::function<void(const st
                                                    target.filename().string()))
                               .string();
   try {
+    errno = 0;  // so a failure below is judged by its own errno, not an old one
     write(tmp);
     fs::rename(tmp, target);
-  } catch (...) {
+  } catch (const std::exception&) {
+    const int err = errno;
     std::error_code ignored;
     fs::remove(tmp, ignored);
+    if (is_write_error(err)) throw_write_error(path, err);
     throw;
   }
+}
+
+void throw_write_error(const std::string& path, int err) {
+  const std::string why = std::strerror(err);
+  if (err == EACCES || err == EPERM || err == EROFS) throw InputError(path, "cannot write: " + why);
+  throw EnvironmentError(path + ": cannot write: " + why +
+                         (err == EFBIG ? " (a file-size limit, ulimit -f?)" : err == EIO ? "" : " (disk full?)") +
+                         "; nothing was left under this name");
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {
   write_atomically(path, [&](const std::string& tmp) {
     std::ofstream out(tmp, std::ios::binary);
     out << text;
-    out.flush();
+    out.close();  // close() writes what is buffered: a full disk shows here
     if (!out) throw std::runtime_error(path + ": cannot write");
   });
 }

@@ -8,8 +8,13 @@
 namespace vct {
 
 /// Calls write(tmp_path), then renames tmp_path to `path`. On any exception the temporary is
-/// removed and the exception propagates.
+/// removed and the exception propagates; one that a full disk or a file-size limit caused (errno
+/// ENOSPC, EDQUOT, EFBIG) becomes an EnvironmentError, a read-only place (EACCES, EPERM, EROFS)
+/// an InputError, both naming `path` and the system's reason (issue 19).
 void write_atomically(const std::string& path, const std::function<void(const std::string& tmp_path)>& write);
+
+/// The one-line error for a failed write of `path` with errno `err`, as write_atomically throws it.
+[[noreturn]] void throw_write_error(const std::string& path, int err);
 
 /// Writes `text` to `path` atomically.
 void write_text_atomically(const std::string& path, const std::string& text);

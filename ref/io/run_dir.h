@@ -1,8 +1,15 @@
 // A run directory (docs/pipeline.md): images, volumes and run.json. Everything needed to rebuild the
 // report lives here; every file is written atomically.
+//
+// The directory a command is asked to write (--out) is a "run": while a process writes it, it
+// holds an exclusive lock on <dir>/.vct-lock, so a second process writing the same --out is
+// refused with one line instead of interleaving files; and until the command finishes, the file
+// INCOMPLETE says so (run.json "status": "incomplete"), so a run killed midway (kill -9, a full
+// disk) is told from a finished one. Rerunning the command finishes it (issue 19, docs/report.md).
 #pragma once
 
 #include <chrono>
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,10 +19,24 @@
 
 namespace vct {
 
+/// File names a run keeps beside its outputs.
+inline constexpr const char* kRunLockFile = ".vct-lock";
+inline constexpr const char* kIncompleteMarker = "INCOMPLETE";
+
+/// Part: a folder inside a run (ref/, pt/ ...), written by the process that holds the run.
+/// Run: the directory of a command's --out: locked, and INCOMPLETE until finish().
+enum class RunRole { Part, Run };
+
+class RunLock;
+
 class RunDir {
  public:
-  /// Creates `path` (and parents) if missing. Throws InputError if it exists as a file.
-  explicit RunDir(std::string path);
+  /// Creates `path` (and parents) if missing. Throws InputError if it exists as a file, cannot
+  /// be written (read-only), or (Run) another process is writing it.
+  explicit RunDir(std::string path, RunRole role = RunRole::Part);
+  ~RunDir();
+  RunDir(const RunDir&) = default;
+  RunDir& operator=(const RunDir&) = default;
 
   const std::string& path() const { return path_; }
   std::string file(const std::string& relative) const;
@@ -31,12 +52,18 @@ class RunDir {
   nlohmann::json& json() { return json_; }
   /// Records a stage time in run.json["timings_ms"][backend][stage].
   void add_timing(const std::string& backend, const std::string& stage, double ms);
-  /// Writes run.json (atomically); call whenever a consistent state is reached.
+  /// Writes run.json (atomically); call whenever a consistent state is reached. A Run's
+  /// run.json carries "status": "incomplete" until finish().
   void save() const;
+  /// A Run is done: run.json says "status": "complete" and INCOMPLETE is removed.
+  void finish();
 
  private:
   std::string path_;
   nlohmann::json json_;
+  RunRole role_ = RunRole::Part;
+  bool finished_ = false;
+  std::shared_ptr<RunLock> lock_;
 };
 
 /// Wall-clock stopwatch for stage timings.

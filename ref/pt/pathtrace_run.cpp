@@ -41,7 +41,7 @@ void write_outputs(RunDir& dir, const Accumulator& acc) {
 
 PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, const PathtraceRunOptions& opt) {
   const PtSettings& ps = settings.pt;
-  RunDir dir(opt.out_dir);
+  RunDir dir(opt.out_dir, RunRole::Run);  // locked; INCOMPLETE until every pass is done
   merge_existing_run_json(dir);
   const std::string ckpt_path = dir.file(kCheckpointFile);
   const ParticleOptions particles{settings.vct.particles, settings.vct.time};
@@ -114,7 +114,8 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
                     {"aovs", std::vector<std::string>(kAovNames, kAovNames + kAovCount)}};
   dir.add_timing("pt", "setup", build_ms);  // BVH, emitter tables, particle layer
   dir.add_timing("pt", "render", result.render_seconds * 1e3);
-  dir.save();
+  if (result.completed) dir.finish();
+  else dir.save();
   return result;
 }
 

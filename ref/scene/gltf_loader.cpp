@@ -12,8 +12,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/memory_budget.h"
 #include "scene/embedded_scenes.h"
+#include "scene/gltf_file_access.h"
+#include "scene/gltf_image_budget.h"
 #include "scene/gltf_internal.h"
+#include "scene/json_nesting.h"
 
 namespace vct {
 namespace gltf {
@@ -66,6 +70,14 @@ nlohmann::json precheck_json(const std::string& text, const std::string& name, s
   const size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos || text[first] != '{') {
     throw InputError(name, "not a glTF file (neither a JSON object nor a GLB container)");
+  }
+  // Before any parser: tinygltf converts the JSON by recursion and a deep enough document ends
+  // the process with a stack overflow (json_nesting.h).
+  const NestingScan nesting = scan_json_nesting(text);
+  if (nesting.exceeded) {
+    throw InputError(name, "JSON nests deeper than " + std::to_string(kMaxJsonNesting) + " levels (at byte " +
+                               std::to_string(nesting.offset) + "); vct reads glTF nested at most " +
+                               std::to_string(kMaxJsonNesting) + " deep (docs/scenes.md, \"Limits\")");
   }
   nlohmann::json j;
   try {
@@ -172,10 +184,19 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
   return scene;
 }
 
-Scene parse(const std::string& bytes, bool glb, const std::string& name, const std::string& base_dir) {
+Scene parse(const std::string& bytes, bool glb, const std::string& name, const std::string& base_dir,
+            const SceneLoadOptions& options) {
   std::vector<std::string> warnings;
   const nlohmann::json doc = precheck_json(glb ? check_glb(bytes, name) : bytes, name, warnings);
+  // The policy is checked on every URI before tinygltf opens any file, and tinygltf opens files
+  // only through the policy's callbacks (gltf_file_access.h).
+  const gltf::FileAccess access(base_dir, options.allow_outside_scene_dir);
+  gltf::check_document_uris(doc, name, access);
+  gltf::ImageBudget budget;
+  budget.available = options.image_memory_budget ? options.image_memory_budget : physical_memory_bytes();
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks(access.callbacks());
+  loader.SetImageLoader(&gltf::load_image_within_budget, &budget);
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -189,6 +210,7 @@ Scene parse(const std::string& bytes, bool glb, const std::string& name, const s
   } catch (const std::exception& e) {
     throw InputError(name, std::string("glTF parse failed: ") + e.what());
   }
+  if (!budget.refusal.empty()) throw InputError(name, budget.refusal);
   if (!ok) throw InputError(name, "tinygltf: " + name_image(one_line(err.empty() ? "parse failed" : err), doc));
   std::istringstream lines(warn);
   for (std::string line; std::getline(lines, line);) {
@@ -199,24 +221,25 @@ Scene parse(const std::string& bytes, bool glb, const std::string& name, const s
 
 }  // namespace
 
-Scene load_gltf_file(const std::string& path) {
+Scene load_gltf_file(const std::string& path, const SceneLoadOptions& options) {
   const std::string bytes = read_bytes(path);
   const std::string base_dir = fs::path(path).parent_path().string();
   const bool glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   if (!glb && fs::path(path).extension() == ".glb") throw InputError(path, "not a GLB file (bad magic, expected \"glTF\")");
-  return parse(bytes, glb, path, base_dir.empty() ? "." : base_dir);
+  return parse(bytes, glb, path, base_dir.empty() ? "." : base_dir, options);
 }
 
-Scene load_gltf_text(const std::string& json_text, const std::string& name, const std::string& base_dir) {
+Scene load_gltf_text(const std::string& json_text, const std::string& name, const std::string& base_dir,
+                     const SceneLoadOptions& options) {
   if (json_text.empty()) throw InputError(name, "empty file");
-  return parse(json_text, false, name, base_dir);
+  return parse(json_text, false, name, base_dir, options);
 }
 
-Scene load_scene(const std::string& path_or_empty) {
-  if (!path_or_empty.empty()) return load_gltf_file(path_or_empty);
+Scene load_scene(const std::string& path_or_empty, const SceneLoadOptions& options) {
+  if (!path_or_empty.empty()) return load_gltf_file(path_or_empty, options);
   const std::string& text = embedded_scene("cornell_box.gltf");
   if (text.empty()) throw InputError(kBuiltinSceneName, "the built-in scene is missing from this build");
-  return load_gltf_text(text, kBuiltinSceneName, "");
+  return load_gltf_text(text, kBuiltinSceneName, "", options);
 }
 
 }  // namespace vct

@@ -1,7 +1,9 @@
 // Nothing lost (issue 9 item 6): `vct pathtrace` killed with SIGKILL after it wrote a checkpoint
 // resumes to the same bytes as an uninterrupted run, and `vct validate` killed mid-run and rerun
 // gives the same outputs. After a kill, no file under a final output name is partial: everything
-// present is either complete or a ".tmp-<pid>" temporary (atomic writes, ref/io/atomic_file.h).
+// present is either complete or a ".tmp-<pid>" temporary (atomic writes, ref/io/atomic_file.h),
+// the killed run directory says INCOMPLETE (issue 19; its lock died with the process, so the
+// rerun is not refused), and the rerun finishes it: INCOMPLETE gone, run.json "complete".
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -68,19 +70,26 @@ std::vector<std::string> pathtrace_args(const fs::path& out, const std::string& 
 }
 
 // What a kill may leave: temporaries (".tmp-<pid>", left out here), checkpoints (each written
-// whole), and finished outputs. Any other file under a final name must already hold exactly the
+// whole), the run's INCOMPLETE marker and lock file, and finished outputs. Any other file under a final name must already hold exactly the
 // bytes of the uninterrupted run: a partial file would differ. Returns the offenders.
 std::string partial_outputs(const fs::path& dir, const std::map<std::string, std::string>& complete,
                             const std::string& skip) {
   std::string bad;
   for (const auto& [name, bytes] : files_below(dir, ".tmp-")) {
-    if (name.find("checkpoint") != std::string::npos) continue;
+    if (name.find("checkpoint") != std::string::npos || name == "INCOMPLETE" || name == ".vct-lock") continue;
     if (!skip.empty() && name.find(skip) != std::string::npos) continue;
     const auto it = complete.find(name);
     if (it == complete.end()) bad += " unexpected:" + name;
     else if (it->second != bytes) bad += " partial:" + name;
   }
   return bad;
+}
+
+// A finished run: no INCOMPLETE, no lock file, run.json "status": "complete".
+void expect_finished(const fs::path& dir) {
+  EXPECT_FALSE(fs::exists(dir / "INCOMPLETE"));
+  EXPECT_FALSE(fs::exists(dir / ".vct-lock"));
+  EXPECT_NE(test::slurp(dir / "run.json").find("\"status\": \"complete\""), std::string::npos);
 }
 
 TEST(KillResume, PathtraceKilledAfterCheckpointResumesToTheSameBytes) {
@@ -101,11 +110,13 @@ TEST(KillResume, PathtraceKilledAfterCheckpointResumesToTheSameBytes) {
   kill9(pid);
   ASSERT_TRUE(checkpointed) << "the render ended before its first checkpoint: make it longer";
   EXPECT_EQ(partial_outputs(killed, reference, ""), "");
+  EXPECT_TRUE(fs::exists(killed / "INCOMPLETE"));
 
   std::string args;
   for (const auto& s : pathtrace_args(killed, config)) args += "'" + s + "' ";
   ASSERT_EQ(test::run_vct(args), 0);
   EXPECT_EQ(differences(reference, files_below(killed, ".tmp-")), "");
+  expect_finished(killed);
 }
 
 TEST(KillResume, ValidateKilledMidRunRerunsToTheSameOutputs) {
@@ -136,9 +147,14 @@ TEST(KillResume, ValidateKilledMidRunRerunsToTheSameOutputs) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill9(pid);
   EXPECT_EQ(partial_outputs(killed, reference, "gl/"), "");
+  EXPECT_TRUE(fs::exists(killed / "INCOMPLETE")) << "the killed run does not say it is incomplete";
+  if (fs::exists(killed / "run.json")) {
+    EXPECT_NE(test::slurp(killed / "run.json").find("\"status\": \"incomplete\""), std::string::npos);
+  }
 
   EXPECT_EQ(test::run_vct(quoted(args_for(killed))), whole_rc);
   EXPECT_EQ(differences(reference, files_below(killed, "gl/")), "");
+  expect_finished(killed);
 }
 
 }  // namespace

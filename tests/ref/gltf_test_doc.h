@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -112,6 +113,13 @@ inline std::filesystem::path temp_dir() {
     return Dir{p};
   }();
   return dir.path;
+}
+
+inline std::string slurp_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline std::string write_file(const std::string& name, const std::string& bytes) {

@@ -1,0 +1,63 @@
+#include "scene/gltf_image_budget.h"
+
+#include <climits>
+
+#include "core/memory_budget.h"
+#include "io/encoded_image_header.h"
+
+namespace vct::gltf {
+
+namespace {
+
+constexpr uint64_t kDecodedChannels = 4;  // tinygltf asks stb_image for RGBA
+
+uint64_t decoded_bytes(uint64_t width, uint64_t height, int bits) {
+  return width * height * kDecodedChannels * (bits == 16 ? 2u : 1u);
+}
+
+std::string describe(const tinygltf::Image& image, int index, const EncodedImageHeader& h) {
+  return "image " + std::to_string(index) + (image.uri.empty() ? "" : " '" + image.uri.substr(0, 200) + "'") + ": its " +
+         h.format + " header says " + std::to_string(h.width) + " x " + std::to_string(h.height) + " pixels, " +
+         std::to_string(h.channels) + " channel(s) of " + std::to_string(h.bits) + " bits";
+}
+
+}  // namespace
+
+uint64_t image_decode_bytes(uint64_t width, uint64_t height, int bits) {
+  return 2 * decoded_bytes(width, height, bits) + width * height * 4;
+}
+
+uint64_t image_kept_bytes(uint64_t width, uint64_t height, int bits) {
+  return decoded_bytes(width, height, bits) + width * height * 4;
+}
+
+bool load_image_within_budget(tinygltf::Image* image, int index, std::string* err, std::string* warn, int req_width,
+                              int req_height, const unsigned char* bytes, int size, void* user) {
+  auto& budget = *static_cast<ImageBudget*>(user);
+  const auto header = read_encoded_image_header(bytes, size > 0 ? size_t(size) : 0);
+  if (header) {
+    // Each factor is below 2^32, so the products below fit in 64 bits.
+    const EncodedImageHeader& h = *header;
+    if (h.width == 0 || h.height == 0) {
+      budget.refusal = describe(*image, index, h) + ": an image needs at least one pixel";
+      return false;
+    }
+    const uint64_t need = image_decode_bytes(h.width, h.height, h.bits);
+    const uint64_t left = budget.available > budget.kept ? budget.available - budget.kept : 0;
+    if (budget.available > 0 && need > left) {
+      budget.refusal = describe(*image, index, h) + ": decoding it needs " + format_bytes(need) + ", but only " +
+                       format_bytes(left) + " of the " + format_bytes(budget.available) +
+                       " memory budget is left; refused before decoding (docs/scenes.md, \"Limits\")";
+      return false;
+    }
+    if (decoded_bytes(h.width, h.height, h.bits) > uint64_t(INT_MAX)) {
+      budget.refusal = describe(*image, index, h) + ": its decoded " + format_bytes(decoded_bytes(h.width, h.height, h.bits)) +
+                       " are more than the 2 GiB per image the decoder (stb_image) handles; refused before decoding";
+      return false;
+    }
+    budget.kept += image_kept_bytes(h.width, h.height, h.bits);
+  }
+  return tinygltf::LoadImageData(image, index, err, warn, req_width, req_height, bytes, size, nullptr);
+}
+
+}  // namespace vct::gltf
