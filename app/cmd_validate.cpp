@@ -16,6 +16,7 @@
 #include "io/run_dir.h"
 #include "io/atomic_file.h"
 #include "options.h"
+#include "phase_times.h"
 #if __has_include("stages/explain.h")
 #include "stages/explain.h"
 #define VCT_HAVE_EXPLAIN 1
@@ -125,8 +126,9 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
 }
 
 int run(const ValidateOptions& o) {
+  PhaseTimes phases;
   const Settings s = resolve(o.common);
-  const Scene scene = load_scene(o.scene);
+  const Scene scene = phases.time("load scene", [&] { return load_scene(o.scene); });
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   for (const auto& sw : o.sweeps) {  // bad specs and values fail before any rendering
     const auto [key, values] = parse_sweep(sw);
@@ -143,7 +145,7 @@ int run(const ValidateOptions& o) {
   std::fflush(stdout);
 
   // GL first: the reference then emulates the coverage rule the driver actually ran.
-  const BackendRun gl = run_gl_backend(scene, s);
+  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s); }, true);
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
               gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
@@ -154,27 +156,32 @@ int run(const ValidateOptions& o) {
                 ref_settings.vct.msaa_samples, s.vct.msaa_samples, ref_settings.vct.msaa_samples);
     run.json()["settings_effective"] = ref_settings;
   }
-  const BackendRun ref = run_ref_backend(scene, ref_settings);
+  const BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings); }, true);
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
   std::fflush(stdout);
-  const PtRun pt = run_pt_backend(scene, s);
+  const PtRun pt = phases.time("render pt", [&] { return run_pt_backend(scene, s); }, true);
   run.json()["backends"]["pt"] = {{"status", pt.status}, {"ms", pt.ms}, {"spp", pt.spp}};
   std::printf("  pt   %-12s %8.1f s  %d spp\n", pt.status.c_str(), pt.ms / 1000, pt.spp);
   run.save();
 
   cmp::StageSet ref_set, gl_set;
-  if (ref.ok()) write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
-  if (gl.ok()) write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
-  if (pt.ok()) write_pt(run, pt);
-  write_explanation(run, scene, ref, s);
+  if (ref.ok())
+    phases.time("write stage set ref", [&] { write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct)); });
+  if (gl.ok())
+    phases.time("write stage set gl", [&] { write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct)); });
+  if (pt.ok()) phases.time("write pt images", [&] { write_pt(run, pt); });
+  phases.time("explain one pixel", [&] { write_explanation(run, scene, ref, s); });
 
   int exit_code = kExitOk;
   if (ref.ok() && gl.ok()) {
-    cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+    cmp::Report rep = phases.time("compare gl vs ref (stages, difference images)", [&] {
+      return cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+    });
     // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
     // tie upstream does not fail a correct marcher downstream.
-    cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
+    phases.time("compare cones on gl's voxels (isolated re-trace)",
+                [&] { cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set); });
     run.json()["verdicts"] = cmp::to_json(rep);
     print_verdicts(rep, "GPU (gl) vs CPU reference");
     if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;
@@ -186,24 +193,35 @@ int run(const ValidateOptions& o) {
   }
   std::vector<cmp::BiasComponent> bias;
   if (ref.ok() && pt.ok()) {
-    bias = cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"});
+    bias = phases.time("bias ref vs pt", [&] { return cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"}); });
     run.json()["bias"] = {{"ref", bias_json(bias)}};
-    if (gl.ok()) run.json()["bias"]["gl"] = bias_json(cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}));
+    if (gl.ok())
+      run.json()["bias"]["gl"] = bias_json(phases.time(
+          "bias gl vs pt", [&] { return cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}); }));
     print_bias(bias);
   }
   run.save();
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
-    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok()));
+    for (const auto& spec : o.sweeps)
+      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok())); });
     run.json()["sweeps"] = sweeps;
     run.save();
   }
   if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
   run.json()["exit_code"] = exit_code;
+  run.json()["phases"] = phases.to_json();  // the report shows the phases before it (its own come after)
   run.save();
+  std::string index, why;
   if (!o.no_report) {
-    std::string why;
-    const std::string index = make_report(out, why);
+    Stopwatch report_sw;
+    index = make_report(out, why);
+    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms());
+    run.json()["phases"] = phases.to_json();
+    run.save();
+  }
+  std::fputs(phases.table().c_str(), stdout);
+  if (!o.no_report) {
     if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
     else std::printf("%s\n", index.c_str());
   }

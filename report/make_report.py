@@ -8,11 +8,13 @@ import json
 import os
 import re
 import sys
+import time
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vct_report import runio, svg  # noqa: E402
+from vct_report.part_times import TIMES  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -162,12 +164,14 @@ def flip_for(run, comp, vct_exr, pt_exr, out_dir):
         return None, None
     import subprocess
     path = os.path.join(out_dir, "flip_%s.png" % comp)
+    t0 = time.perf_counter()
     try:
         r = subprocess.run([sys.executable, os.path.join(HERE, "vct_report", "flip_one.py"), pt_exr, vct_exr, path],
                            capture_output=True, text=True, timeout=180)
         mean = float(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 and r.stdout.strip() else None
     except (subprocess.TimeoutExpired, ValueError, IndexError):
         mean = None
+    TIMES.nested("FLIP", 1000 * (time.perf_counter() - t0))
     if mean is None:
         return None, None
     return mean, path if os.path.exists(path) else None
@@ -432,7 +436,9 @@ def build(run_dir):
     css = open(os.path.join(HERE, "vct_report", "style.css")).read()
     js = open(os.path.join(HERE, "vct_report", "viewer.js")).read()
     scene = run.json.get("scene", {}).get("source", os.path.basename(run.path))
-    sections = [summary(p), final_images(p), bias_section(p), walkthrough(p), performance(p)]
+    sections = [TIMES.run(name, fn, p) for name, fn in (("summary and verdicts", summary), ("final images", final_images),
+                                                        ("bias tables and heat maps", bias_section),
+                                                        ("walkthrough", walkthrough), ("performance", performance))]
     doc = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>VCT Oracle: %s</title><style>%s</style></head><body>" % (E(str(scene)), css),
            "<header><h1>VCT Oracle report: %s</h1><div class='sub'>%s</div></header>" % (E(str(scene)), E(run.path)),
            "<nav><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a>"
@@ -445,6 +451,7 @@ def build(run_dir):
     with open(tmp, "w") as f:
         f.write("".join(doc))
     os.replace(tmp, index)
+    TIMES.write(p.out_dir)
     return index
 
 
