@@ -35,6 +35,7 @@ struct ValidateOptions {
   std::vector<std::string> sweeps;
   bool require_gl = false;
   bool no_report = false;
+  std::string flip = "full";
 };
 
 Settings resolve(const CommonOptions& o) {
@@ -215,7 +216,7 @@ int run(const ValidateOptions& o) {
   std::string index, why;
   if (!o.no_report) {
     Stopwatch report_sw;
-    index = make_report(out, why);
+    index = make_report(out, why, o.flip);
     add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms());
     run.json()["phases"] = phases.to_json();
     run.save();
@@ -243,6 +244,10 @@ void register_validate(CLI::App& app, int& exit_code) {
                   "bounces, light_model or any vct.* key); repeatable");
   cmd->add_flag("--require-gl", o->require_gl, "Exit 3 when no GL context is available (default: report and go on)");
   cmd->add_flag("--no-report", o->no_report, "Skip the HTML report");
+  cmd->add_option("--flip", o->flip,
+                  "FLIP maps in the report: full (the full image, default), all (every component; HDR-FLIP costs "
+                  "seconds per map) or none")
+      ->check(CLI::IsMember({"full", "all", "none"}));
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
 
