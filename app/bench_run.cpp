@@ -1,7 +1,12 @@
 #include "bench_run.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -117,6 +122,37 @@ nlohmann::json path_tracer(const Scene& scene, const Settings& s, const BenchOpt
           {"full_paths", rate_json(pt::measure_path_tracer(scene, ps, o.pt_spp))}};
 }
 
+// The whole validate job as a user runs it (its own process: start-up, renders, writes, report),
+// with the phase times it records in run.json (app/phase_times.h).
+nlohmann::json validate_row(const BenchOptions& o) {
+  char exe[4096];
+  const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n <= 0) return {{"note", "cannot find the vct executable"}};
+  exe[n] = 0;
+  char dir_template[] = "/tmp/vct-bench-validate-XXXXXX";
+  const char* dir = mkdtemp(dir_template);
+  if (!dir) return {{"note", "cannot make a temporary directory"}};
+  const std::string out = std::string(dir) + "/run";
+  std::string cmd = std::string("'") + exe + "' validate";
+  if (!o.scene_path.empty()) cmd += " '" + o.scene_path + "'";
+  cmd += " " + o.validate_args + " --threads " + std::to_string(thread_count()) + " --out '" + out + "' > '" + std::string(dir) + "/log' 2>&1";
+  Stopwatch sw;
+  const int rc = std::system(cmd.c_str());
+  nlohmann::json row = {{"wall_ms", sw.ms()}, {"exit_code", rc}};
+  try {
+    std::ifstream in(out + "/run.json");
+    const nlohmann::json run = nlohmann::json::parse(in);
+    row["phases"] = run.at("phases");
+    row["settings"] = {{"width", run["settings"]["vct"]["width"]}, {"grid", run["settings"]["vct"]["grid"]},
+                       {"spp", run["settings"]["pt"]["spp"]}};
+  } catch (const std::exception&) {
+    row["note"] = "validate wrote no phase times (see its log)";
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+  return row;
+}
+
 }  // namespace
 
 nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptions& o) {
@@ -134,6 +170,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   if (!renderer.empty()) j["machine"]["gl_renderer"] = renderer;
   j["groups"] = groups(j["ref"], j["gl"]);
   if (o.pt) j["path_tracer"] = path_tracer(scene, s, o);
+  if (o.validate) j["validate"] = validate_row(o);
   j["memory"]["peak_rss"] = format_bytes(peak_rss_bytes());
   return j;
 }
@@ -170,6 +207,23 @@ std::string format_path_tracer(const nlohmann::json& p) {
   return out;
 }
 
+std::string format_validate(const nlohmann::json& v) {
+  if (!v.contains("phases")) return line("\nvalidate: %s\n", v.value("note", std::string("not measured")).c_str());
+  const auto& p = v["phases"];
+  std::string out = line("\nvalidate (%dx%d, grid %d^3, %d spp, report): %.2f s wall\n",
+                         v["settings"]["width"].get<int>(), v["settings"]["width"].get<int>(),
+                         v["settings"]["grid"].get<int>(), v["settings"]["spp"].get<int>(), v["wall_ms"].get<double>() / 1000);
+  const double r = p["render_ms"].get<double>(), other = p["other_ms"].get<double>();
+  out += line("  renders %.2f s, everything else %.2f s (%.0f %% of the renders); largest other phases:\n", r / 1000,
+              other / 1000, r > 0 ? 100.0 * other / r : 0.0);
+  std::vector<std::pair<double, std::string>> rest;
+  for (const auto& ph : p["phases"])
+    if (!ph["render"].get<bool>()) rest.emplace_back(ph["ms"].get<double>(), ph["name"].get<std::string>());
+  std::sort(rest.rbegin(), rest.rend());
+  for (size_t i = 0; i < rest.size() && i < 5; ++i) out += line("    %8.2f s  %s\n", rest[i].first / 1000, rest[i].second.c_str());
+  return out;
+}
+
 }  // namespace
 
 std::string format_bench(const nlohmann::json& j) {
@@ -198,6 +252,7 @@ std::string format_bench(const nlohmann::json& j) {
   out += "\n" + stage_table("CPU reference stages (wall clock, median):", j["ref"]);
   if (gl) out += stage_table("GL stages (GPU timer queries, median):", j["gl"]);
   if (j.contains("path_tracer")) out += format_path_tracer(j["path_tracer"]);
+  if (j.contains("validate")) out += format_validate(j["validate"]);
   // The peak is this whole process's: the GL driver's and Embree's memory come on top of the CPU
   // frame the prediction covers (`vct render` reports the two for the CPU frame alone).
   out += line("\nmemory: predicted %s for the CPU frame; peak RSS %s for this process (CPU + GL + path tracer)\n",

@@ -16,10 +16,14 @@ struct BenchOptions {
   bool pt = true;     // measure the path tracer and raw Embree
   int pt_spp = 2;     // passes of the path tracer (at the VCT image size)
   size_t raw_rays = 2000000;
+  bool validate = true;    // time a whole `vct validate` (its defaults) on the scene, phase by phase
+  std::string scene_path;  // what validate is given ("" = the built-in scene)
+  std::string validate_args;  // flags for it (bench's explicit --width/--height/--grid, --validate-spp)
 };
 
 /// Runs the measurements; keys: machine, scene, settings, repeat, ref, gl (or gl_note),
-/// groups [{name, ref_ms, gl_ms, ref_over_gl}], path_tracer {...}.
+/// groups [{name, ref_ms, gl_ms, ref_over_gl}], path_tracer {...}, validate {wall_ms, render_ms,
+/// other_ms, phases} (a child `vct validate` at its defaults, report included).
 nlohmann::json run_bench(const Scene& scene, const Settings& settings, const BenchOptions& o);
 
 /// The report as text: settings line, side-by-side group table, per-stage tables, path tracer.

@@ -3,6 +3,7 @@
 // rtcIntersect1 on the same scene. Defaults: built-in scene, 128^3 grid, 512x512 (the settings'
 // defaults). --out DIR writes DIR/bench.json atomically. Prints; exit code 0 unless input is bad.
 #include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <string>
 
@@ -22,7 +23,8 @@ struct BenchFlags {
   std::string scene;
   CommonOptions common;
   BenchOptions bench;
-  bool no_gl = false, no_pt = false;
+  bool no_gl = false, no_pt = false, no_validate = false;
+  std::optional<int> validate_spp;
 };
 
 void run(const BenchFlags& f) {
@@ -32,6 +34,13 @@ void run(const BenchFlags& f) {
   BenchOptions o = f.bench;
   o.gl = !f.no_gl;
   o.pt = !f.no_pt;
+  o.validate = !f.no_validate;
+  o.scene_path = f.scene;
+  // validate keeps its own defaults (256^2, 64^3, 64 spp) unless bench was given sizes explicitly.
+  if (f.common.width) o.validate_args += " --width " + std::to_string(*f.common.width);
+  if (f.common.height) o.validate_args += " --height " + std::to_string(*f.common.height);
+  if (f.common.grid) o.validate_args += " --grid " + std::to_string(*f.common.grid);
+  if (f.validate_spp) o.validate_args += " --spp " + std::to_string(*f.validate_spp);
   const nlohmann::json result = run_bench(scene, settings, o);
   std::fputs(format_bench(result).c_str(), stdout);
   if (!f.common.out.empty()) {
@@ -58,6 +67,9 @@ void register_bench(CLI::App& app, int& exit_code) {
   cmd->add_option("--raw-rays", f->bench.raw_rays, "Random rays for the raw Embree rate")->check(CLI::Range(1000, 100000000));
   cmd->add_flag("--no-gl", f->no_gl, "Measure the CPU reference only");
   cmd->add_flag("--no-pt", f->no_pt, "Skip the path tracer and raw Embree measurement");
+  cmd->add_option("--validate-spp", f->validate_spp, "Path tracer samples of the timed validate run (default: its 64)")
+      ->check(CLI::Range(1, 1 << 20));
+  cmd->add_flag("--no-validate", f->no_validate, "Skip the timed `vct validate` run (its defaults, report included)");
   cmd->callback([f, &exit_code]() {
     run(*f);
     exit_code = kExitOk;

@@ -17,6 +17,7 @@
 #include "io/atomic_file.h"
 #include "options.h"
 #include "phase_progress.h"
+#include "phase_times.h"
 #include "pt/progress.h"
 #include "stages/explain.h"
 #include "stages/stage_registry_text.h"
@@ -34,6 +35,7 @@ struct ValidateOptions {
   std::vector<std::string> sweeps;
   bool require_gl = false;
   bool no_report = false;
+  std::string flip = "full";
 };
 
 Settings resolve(const CommonOptions& o) {
@@ -123,8 +125,9 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
 }
 
 int run(const ValidateOptions& o) {
+  PhaseTimes phases;
   const Settings s = resolve(o.common);
-  const Scene scene = load_scene(o.scene, o.common.scene_load);
+  const Scene scene = phases.time("load scene", [&] { return load_scene(o.scene, o.common.scene_load); });
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets, GPU-vs-CPU comparison, bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 6 + (o.no_report ? 0 : 1));
@@ -148,7 +151,7 @@ int run(const ValidateOptions& o) {
   // GL first: the reference then emulates the coverage rule the driver actually ran.
   progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
                  std::to_string(s.vct.grid) + ")");
-  const BackendRun gl = run_gl_backend(scene, s);
+  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s); }, true);
   progress.end();
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
@@ -161,13 +164,13 @@ int run(const ValidateOptions& o) {
     run.json()["settings_effective"] = ref_settings;
   }
   progress.begin("CPU reference frame");
-  const BackendRun ref = run_ref_backend(scene, ref_settings);
+  const BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings); }, true);
   progress.end();
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
   std::fflush(stdout);
   progress.begin("path tracer, " + std::to_string(s.pt.spp) + " spp");
-  const PtRun pt = run_pt_backend(scene, s, progress.enabled());
+  const PtRun pt = phases.time("render pt", [&] { return run_pt_backend(scene, s, progress.enabled()); }, true);
   progress.end();
   run.json()["backends"]["pt"] = {{"status", pt.status}, {"ms", pt.ms}, {"spp", pt.spp}};
   std::printf("  pt   %-12s %8.1f s  %d spp\n", pt.status.c_str(), pt.ms / 1000, pt.spp);
@@ -175,19 +178,24 @@ int run(const ValidateOptions& o) {
 
   progress.begin("writing the stage sets");
   cmp::StageSet ref_set, gl_set;
-  if (ref.ok()) write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
-  if (gl.ok()) write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
-  if (pt.ok()) write_pt(run, pt);
-  write_explanation(run, scene, ref, s);
+  if (ref.ok())
+    phases.time("write stage set ref", [&] { write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct)); });
+  if (gl.ok())
+    phases.time("write stage set gl", [&] { write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct)); });
+  if (pt.ok()) phases.time("write pt images", [&] { write_pt(run, pt); });
+  phases.time("explain one pixel", [&] { write_explanation(run, scene, ref, s); });
   progress.end();
 
   int exit_code = kExitOk;
   progress.begin("GL vs CPU reference, stage by stage");
   if (ref.ok() && gl.ok()) {
-    cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+    cmp::Report rep = phases.time("compare gl vs ref (stages, difference images)", [&] {
+      return cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+    });
     // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
     // tie upstream does not fail a correct marcher downstream.
-    cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
+    phases.time("compare cones on gl's voxels (isolated re-trace)",
+                [&] { cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set); });
     run.json()["verdicts"] = cmp::to_json(rep);
     progress.end();
     print_verdicts(rep, "GPU (gl) vs CPU reference");
@@ -202,9 +210,11 @@ int run(const ValidateOptions& o) {
   std::vector<cmp::BiasComponent> bias;
   progress.begin("bias against the path tracer");
   if (ref.ok() && pt.ok()) {
-    bias = cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"});
+    bias = phases.time("bias ref vs pt", [&] { return cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"}); });
     run.json()["bias"] = {{"ref", bias_json(bias)}};
-    if (gl.ok()) run.json()["bias"]["gl"] = bias_json(cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}));
+    if (gl.ok())
+      run.json()["bias"]["gl"] = bias_json(phases.time(
+          "bias gl vs pt", [&] { return cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}); }));
     progress.end();
     print_bias(bias);
   }
@@ -212,18 +222,27 @@ int run(const ValidateOptions& o) {
   run.save();
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
-    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), progress));
+    for (const auto& spec : o.sweeps)
+      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), progress)); });
     run.json()["sweeps"] = sweeps;
     run.save();
   }
   if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
   run.json()["exit_code"] = exit_code;
-  run.finish();  // everything is written; the report is rebuilt from these files alone
+  run.json()["phases"] = phases.to_json();  // the report shows the phases before it (its own come after)
+  run.save();
+  std::string index, why;
   if (!o.no_report) {
-    std::string why;
     progress.begin("HTML report");
-    const std::string index = make_report(out, why);
+    Stopwatch report_sw;
+    index = make_report(out, why, o.flip);
+    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms());
+    run.json()["phases"] = phases.to_json();
     progress.end();
+  }
+  run.finish();  // everything is written; the report is rebuilt from these files alone
+  std::fputs(phases.table().c_str(), stdout);
+  if (!o.no_report) {
     if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
     else std::printf("%s\n", index.c_str());
   }
@@ -246,6 +265,10 @@ void register_validate(CLI::App& app, int& exit_code) {
                   "bounces, light_model or any vct.* key); repeatable");
   cmd->add_flag("--require-gl", o->require_gl, "Exit 3 when no GL context is available (default: report and go on)");
   cmd->add_flag("--no-report", o->no_report, "Skip the HTML report");
+  cmd->add_option("--flip", o->flip,
+                  "FLIP maps in the report: full (the full image, default), all (every component; HDR-FLIP costs "
+                  "seconds per map) or none")
+      ->check(CLI::IsMember({"full", "all", "none"}));
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
 

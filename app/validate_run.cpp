@@ -163,7 +163,7 @@ std::string shell_quote(const std::string& s) {
 }
 }  // namespace
 
-std::string make_report(const std::string& run_dir, std::string& why) {
+std::string make_report(const std::string& run_dir, std::string& why, const std::string& flip) {
   const std::string root = find_source_root();
   if (root.empty()) {
     why = "report/make_report.py not found (set VCT_SOURCE_DIR)";
@@ -171,7 +171,7 @@ std::string make_report(const std::string& run_dir, std::string& why) {
   }
   std::string py = root + "/.venv/bin/python";
   if (!fs::exists(py)) py = "python3";
-  const std::string cmd = shell_quote(py) + " " + shell_quote(root + "/report/make_report.py") + " " +
+  const std::string cmd = "VCT_REPORT_FLIP=" + shell_quote(flip) + " " + shell_quote(py) + " " + shell_quote(root + "/report/make_report.py") + " " +
                           shell_quote(run_dir) + " > " + shell_quote(run_dir + "/report.log") + " 2>&1";
   const int rc = std::system(cmd.c_str());
   const std::string index = (fs::path(run_dir) / "report" / "index.html").string();

@@ -54,6 +54,8 @@ std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& 
 
 /// Finds report/make_report.py and the venv Python next to the executable's source tree;
 /// runs it on `run_dir`. Returns the index.html path, or "" with `why` filled.
-std::string make_report(const std::string& run_dir, std::string& why);
+/// `flip` chooses the FLIP maps ("full": the full image only, "all": every component, "none"),
+/// passed as $VCT_REPORT_FLIP.
+std::string make_report(const std::string& run_dir, std::string& why, const std::string& flip = "full");
 
 }  // namespace vct::app

@@ -7,13 +7,14 @@ import html
 import json
 import os
 import sys
+import time
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vct_report import runio, svg  # noqa: E402
+from vct_report import flip_batch, registry, runio, svg  # noqa: E402
 from vct_report.glance import glance  # noqa: E402
-from vct_report import registry  # noqa: E402
+from vct_report.part_times import TIMES  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -156,18 +157,42 @@ def final_images(p):
 
 
 # ---------------------------------------------------------------- bias
+FLIP_RESULTS = {}  # out png -> mean FLIP (or None), filled by precompute_flips
+
+
+def flip_components(r):
+    """Whether component row r gets a FLIP map: $VCT_REPORT_FLIP = full (default: the full image
+    only; HDR-FLIP costs seconds per map), all, or none (docs/report.md)."""
+    mode = os.environ.get("VCT_REPORT_FLIP", "full")
+    return mode == "all" or (mode == "full" and r.get("component") == "full")
+
+
+def flip_jobs(p):
+    """(pt_exr, vct_exr, out_png) of every FLIP map the bias section shows."""
+    jobs = []
+    for side, rows in (p.run.json.get("bias") or {}).items():
+        for r in rows:
+            if not r.get("available") or not flip_components(r):
+                continue
+            vct_exr, pt_exr = p.run.stage_file(side, r["vct"], False), p.run.file("pt", r["pt"] + ".exr")
+            if vct_exr and pt_exr:
+                jobs.append((pt_exr, vct_exr, os.path.join(p.out_dir, "flip_%s.png" % (side + "_" + r["component"]))))
+    return jobs
+
+
+def precompute_flips(p):
+    """Every FLIP of the page in parallel child processes (vct_report/flip_batch.py)."""
+    t0 = time.perf_counter()
+    FLIP_RESULTS.update(flip_batch.run_all(flip_jobs(p)))
+    TIMES.nested("FLIP", 1000 * (time.perf_counter() - t0))
+
+
 def flip_for(run, comp, vct_exr, pt_exr, out_dir):
-    """Mean HDR-FLIP and its map, computed in a child process (see vct_report/flip_one.py)."""
+    """Mean HDR-FLIP and its map (computed by precompute_flips, see vct_report/flip_one.py)."""
     if not vct_exr or not pt_exr:
         return None, None
-    import subprocess
     path = os.path.join(out_dir, "flip_%s.png" % comp)
-    try:
-        r = subprocess.run([sys.executable, os.path.join(HERE, "vct_report", "flip_one.py"), pt_exr, vct_exr, path],
-                           capture_output=True, text=True, timeout=180)
-        mean = float(r.stdout.strip().splitlines()[-1]) if r.returncode == 0 and r.stdout.strip() else None
-    except (subprocess.TimeoutExpired, ValueError, IndexError):
-        mean = None
+    mean = FLIP_RESULTS.get(path)
     if mean is None:
         return None, None
     return mean, path if os.path.exists(path) else None
@@ -179,6 +204,7 @@ def bias_section(p):
     out = ['<h2 id="bias">Bias against the path tracer</h2>']
     if not b:
         return "".join(out) + missing("bias (needs the CPU reference and the path tracer in this run)")
+    precompute_flips(p)
     out.append("<p>Reference = path tracer; relMSE = mean((VCT-PT)^2/(PT^2+eps)) with eps = 0.01; "
                "mean bias = mean(VCT-PT); relative bias = sum(VCT-PT)/sum(PT); SSIM on luminance (Gaussian 11x11); "
                "FLIP (HDR, flip-evaluator); noise-aware: fraction of pixels with |VCT-PT| > 3 sigma_PT (pooled 5x5 "
@@ -416,7 +442,10 @@ def build(run_dir):
     scene = run.json.get("scene", {}).get("source", os.path.basename(run.path))
     # The first screen answers the question (vct_report/glance.py); the long tables follow.
     verdicts = run.json.get("verdicts") or load_compare_json(run)
-    sections = [glance(p, verdicts), summary(p), final_images(p), bias_section(p), walkthrough(p), performance(p)]
+    sections = [TIMES.run(name, fn, p) for name, fn in (("first screen", lambda page: glance(page, verdicts)),
+                                                        ("summary and verdicts", summary), ("final images", final_images),
+                                                        ("bias tables and heat maps", bias_section),
+                                                        ("walkthrough", walkthrough), ("performance", performance))]
     doc = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>VCT Oracle: %s</title><style>%s</style></head><body>" % (E(str(scene)), css),
            "<header><h1>VCT Oracle report: %s</h1><div class='sub' title='%s'>run %s</div></header>" % (
                E(str(scene)), E(run.path), E(os.path.basename(run.path))),
@@ -430,6 +459,7 @@ def build(run_dir):
     with open(tmp, "w") as f:
         f.write("".join(doc))
     os.replace(tmp, index)
+    TIMES.write(p.out_dir)
     return index
 
 

@@ -45,28 +45,81 @@ sh::DiffuseConeBlock diffuse_cone_block(const VctSettings& s) {
   return b;
 }
 
+ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, float min_lod,
+                     bool prepare)
+    : mips_(mips), volume_(volume), block_(diffuse_cone_block(s)) {
+  count_ = sh::diffuse_cone_count(block_);
+  base_params_ = MarchParams::from_settings(s, grid_of(mips));
+  params_ = base_params_;
+  params_.min_lod = min_lod;
+  diffuse_aperture_ = radians(s.diffuse_aperture_deg);
+  shadow_aperture_ = radians(s.soft_shadow_aperture_deg);
+  random_rotation_ = s.random_rotation;
+  frame_ = uint32_t(s.frame);
+  for (int i = 0; i < count_; ++i) unrotated_[size_t(i)] = sh::diffuse_cone_direction(i, 0.0f, block_);
+  if (prepare) {
+    sampler_ = std::make_unique<MipSampler>(mips);
+    if (!sampler_->usable()) sampler_.reset();
+  }
+}
+
+vec4 ConeFrame::trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const {
+  if (sampler_ && !record) return trace_cone(*sampler_, cone, params);
+  return trace_cone(mips_, cone, params, record);
+}
+
+DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
+                                  std::vector<std::vector<ConeSample>>* records) const {
+  const sh::Frame frame = sh::frame_from_normal(n);
+  DiffuseConeSet set;
+  set.count = count_;
+  if (records) records->assign(size_t(set.count), {});
+  const vec3 origin = volume_.to_texture(p);
+  // rotation == 0 (also -0: phi = rotation + k step is then the same float) is the unrotated set.
+  const bool unrotated = rotation == 0.0f;
+  for (int i = 0; i < set.count; ++i) {
+    Cone& cone = set.geometry[size_t(i)];
+    cone.origin = origin;
+    const vec3 local = unrotated ? unrotated_[size_t(i)] : sh::diffuse_cone_direction(i, rotation, block_);
+    cone.direction = glm::normalize(sh::frame_to_world(frame, local));
+    cone.aperture = diffuse_aperture_;
+  }
+  for (int i = 0; i < set.count; ++i)
+    set.cones[size_t(i)] = trace(set.geometry[size_t(i)], params_, records ? &(*records)[size_t(i)] : nullptr);
+  for (int i = 0; i < set.count; ++i) {
+    set.weights[size_t(i)] = sh::diffuse_cone_weight(i, block_);
+    set.radiance += set.weights[size_t(i)] * vec3(set.cones[size_t(i)]);
+  }
+  return set;
+}
+
+float ConeFrame::rotation_for_pixel(int x, int y) const {
+  if (!random_rotation_) return 0.0f;
+  return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), frame_, block_);
+}
+
+vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
+                         std::vector<ConeSample>* record) const {
+  return trace(specular_cone(volume_, p, n, v, roughness), base_params_, record);
+}
+
+float ConeFrame::shadow(const vec3& p, const vec3& light_position, std::vector<ConeSample>* record) const {
+  Cone cone;
+  cone.origin = volume_.to_texture(p);
+  const vec3 to_light = volume_.to_texture(light_position) - cone.origin;
+  const float dist = glm::length(to_light);
+  if (dist <= 0.0f) return 1.0f;
+  cone.direction = to_light / dist;
+  cone.aperture = shadow_aperture_;
+  MarchParams params = base_params_;
+  params.max_distance = std::min(params.max_distance, dist);  // occluders behind the light don't count
+  return 1.0f - trace(cone, params, record).a;
+}
+
 DiffuseConeSet trace_diffuse_cones(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s,
                                    const vec3& p, const vec3& n, float rotation, float min_lod,
                                    std::vector<std::vector<ConeSample>>* records) {
-  MarchParams params = MarchParams::from_settings(s, grid_of(mips));
-  params.min_lod = min_lod;
-  const sh::Frame frame = sh::frame_from_normal(n);
-  const sh::DiffuseConeBlock block = diffuse_cone_block(s);
-  DiffuseConeSet set;
-  set.count = sh::diffuse_cone_count(block);
-  if (records) records->assign(size_t(set.count), {});
-  for (int i = 0; i < set.count; ++i) {
-    Cone cone;
-    cone.origin = volume.to_texture(p);
-    cone.direction = glm::normalize(sh::frame_to_world(frame, sh::diffuse_cone_direction(i, rotation, block)));
-    cone.aperture = radians(s.diffuse_aperture_deg);
-    const vec4 c = trace_cone(mips, cone, params, records ? &(*records)[size_t(i)] : nullptr);
-    set.cones[size_t(i)] = c;
-    set.geometry[size_t(i)] = cone;
-    set.weights[size_t(i)] = sh::diffuse_cone_weight(i, block);
-    set.radiance += set.weights[size_t(i)] * vec3(c);
-  }
-  return set;
+  return ConeFrame(mips, volume, s, min_lod, false).diffuse(p, n, rotation, records);
 }
 
 float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y) {
@@ -91,16 +144,7 @@ vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const
 
 float trace_shadow_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                         const vec3& light_position, std::vector<ConeSample>* record) {
-  Cone cone;
-  cone.origin = volume.to_texture(p);
-  const vec3 to_light = volume.to_texture(light_position) - cone.origin;
-  const float dist = glm::length(to_light);
-  if (dist <= 0.0f) return 1.0f;
-  cone.direction = to_light / dist;
-  cone.aperture = radians(s.soft_shadow_aperture_deg);
-  MarchParams params = MarchParams::from_settings(s, grid_of(mips));
-  params.max_distance = std::min(params.max_distance, dist);  // occluders behind the light don't count
-  return 1.0f - trace_cone(mips, cone, params, record).a;
+  return ConeFrame(mips, volume, s, 0.0f, false).shadow(p, light_position, record);
 }
 
 }  // namespace vct

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/settings.h"
 #include "scene/scene.h"
 #include "shared/vct_shared.h"
 #include "stages/cone_trace.h"
+#include "stages/mip_sampler.h"
 
 namespace vct {
 
@@ -30,6 +32,45 @@ struct DiffuseConeSet {
   std::array<vec4, kMaxDiffuseCones> cones{};  // each cone's accumulated (rgb, opacity)
   std::array<Cone, kMaxDiffuseCones> geometry{};
   std::array<float, kMaxDiffuseCones> weights{};
+};
+
+/// Everything the cones of one frame share, built once per frame rather than per pixel (issue 20,
+/// item 5): the validated diffuse cone block, the march parameters, the apertures, the cones'
+/// local directions when rotation is off, and (with `prepare`) the mips prepared for fast lookups
+/// (stages/mip_sampler.h). Every trace gives the same bits as the free functions below, which
+/// build one of these without preparing the mips. `mips` and `volume` must outlive it.
+class ConeFrame {
+ public:
+  ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, float min_lod = 0.0f,
+            bool prepare = true);
+
+  /// The diffuse set at world p, unit normal n, rotated by `rotation` about n; `records` as for
+  /// trace_diffuse_cones (recording uses the readable sampler, voxel_sampler.h).
+  DiffuseConeSet diffuse(const vec3& p, const vec3& n, float rotation,
+                         std::vector<std::vector<ConeSample>>* records = nullptr) const;
+  /// The rotation of pixel (x, y) (row 0 = top), 0 when rotation is off.
+  float rotation_for_pixel(int x, int y) const;
+  vec4 specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
+                std::vector<ConeSample>* record = nullptr) const;
+  /// 1 - opacity toward light_position (world), marched no further than the light.
+  float shadow(const vec3& p, const vec3& light_position, std::vector<ConeSample>* record = nullptr) const;
+
+  int diffuse_count() const { return count_; }
+
+ private:
+  vec4 trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const;
+
+  const VoxelMips& mips_;
+  const VoxelVolume& volume_;
+  std::unique_ptr<MipSampler> sampler_;  // null: not prepared (or not preparable)
+  sh::DiffuseConeBlock block_;
+  int count_ = 0;
+  MarchParams params_;       // diffuse and specular
+  MarchParams base_params_;  // without min_lod: the shadow cone's
+  float diffuse_aperture_ = 0.0f, shadow_aperture_ = 0.0f;
+  bool random_rotation_ = false;
+  uint32_t frame_ = 0;
+  std::array<vec3, kMaxDiffuseCones> unrotated_{};  // sh::diffuse_cone_direction(i, 0, block)
 };
 
 /// Traces the diffuse cone set at world point p with unit normal n, rotated by `rotation` radians

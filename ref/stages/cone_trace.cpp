@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/mip_sampler.h"
 #include "stages/voxel_sampler.h"
 
 namespace vct {
@@ -19,12 +20,12 @@ namespace {
 bool inside_unit_cube(const vec3& p) {
   return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= 1.0f && p.y <= 1.0f && p.z <= 1.0f;
 }
-}  // namespace
 
-vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& params,
-                std::vector<ConeSample>* record) {
-  if (mips.iso.empty() || mips.iso[0].nx == 0) return vec4(0.0f);
-  const float voxel = 1.0f / float(mips.iso[0].nx);
+// The march itself, for either sampler (voxel_sampler.h or the frame's MipSampler, which agree
+// bit for bit): one loop, so the two entry points cannot drift apart.
+template <class Sample>
+vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sample& sample,
+           std::vector<ConeSample>* record) {
   const float tan_half = std::tan(0.5f * cone.aperture);
   vec3 color(0.0f);
   float alpha = 0.0f;
@@ -34,7 +35,7 @@ vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& para
     if (!inside_unit_cube(pos)) break;
     const float diameter = std::max(voxel, 2.0f * t * tan_half);
     const float lod = std::max(std::log2(diameter / voxel), params.min_lod);
-    const vec4 s = sample_voxels(mips, pos, lod, cone.direction);
+    const vec4 s = sample(pos, lod, cone.direction);
     const float transmit = 1.0f - alpha;
     color += transmit * vec3(s);
     alpha += transmit * s.a;
@@ -44,6 +45,21 @@ vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& para
     t += std::max(diameter * params.quality, 1e-6f);
   }
   return vec4(color, std::min(alpha, 1.0f));
+}
+
+}  // namespace
+
+vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& params,
+                std::vector<ConeSample>* record) {
+  if (mips.iso.empty() || mips.iso[0].nx == 0) return vec4(0.0f);
+  const auto sample = [&mips](const vec3& pos, float lod, const vec3& dir) { return sample_voxels(mips, pos, lod, dir); };
+  return march(cone, params, 1.0f / float(mips.iso[0].nx), sample, record);
+}
+
+vec4 trace_cone(const MipSampler& mips, const Cone& cone, const MarchParams& params) {
+  if (mips.base_size() == 0) return vec4(0.0f);
+  const auto sample = [&mips](const vec3& pos, float lod, const vec3& dir) { return mips.sample(pos, lod, dir); };
+  return march(cone, params, 1.0f / float(mips.base_size()), sample, nullptr);
 }
 
 }  // namespace vct

@@ -12,7 +12,8 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
   out.diffuse = Image(w, h, 3);
   out.specular = Image(w, h, 3);
   out.diffuse.channel_names = out.specular.channel_names = {"R", "G", "B"};
-  out.diffuse_cones.assign(size_t(sh::diffuse_cone_count(diffuse_cone_block(s))), Image(w, h, 4));
+  const ConeFrame cones(mips, scene.volume, s);  // once per frame: the per-pixel loop only traces
+  out.diffuse_cones.assign(size_t(cones.diffuse_count()), Image(w, h, 4));
   for (auto& img : out.diffuse_cones) img.channel_names = {"R", "G", "B", "A"};
   parallel_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
@@ -20,8 +21,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       const vec3 p = g.position.rgb(x, y);
       const vec3 n = g.normal.rgb(x, y);
       if (s.diffuse_cones) {
-        const DiffuseConeSet set =
-            trace_diffuse_cones(mips, scene.volume, s, p, n, diffuse_rotation_for_pixel(s, x, y));
+        const DiffuseConeSet set = cones.diffuse(p, n, cones.rotation_for_pixel(x, y));
         out.diffuse.set_rgb(x, y, set.radiance);
         for (int i = 0; i < set.count; ++i) {
           float* px = out.diffuse_cones[size_t(i)].pixel(x, y);
@@ -30,7 +30,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       }
       if (s.specular_cones) {
         const float roughness = g.material.at(x, y, 1);
-        out.specular.set_rgb(x, y, vec3(trace_specular_cone(mips, scene.volume, s, p, n, view_vector(scene, p), roughness)));
+        out.specular.set_rgb(x, y, vec3(cones.specular(p, n, view_vector(scene, p), roughness)));
       }
     }
   });

@@ -1,6 +1,7 @@
 #include "stages/multibounce.h"
 
 #include <cmath>
+#include <memory>
 
 #include "io/run_dir.h"
 #include "stages/cone_sets.h"
@@ -10,9 +11,10 @@
 namespace vct {
 
 BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s) {
-  return [&scene, &previous, s](const VoxelFragment& f, const SurfaceMaterial& m) -> vec3 {
-    const DiffuseConeSet set =
-        trace_diffuse_cones(previous, scene.volume, s, f.position, m.shading_normal, 0.0f, kBounceMinLod);
+  // Built once per bounce frame, shared by every copy of the callback (the voxel loop only traces).
+  const auto cones = std::make_shared<const ConeFrame>(previous, scene.volume, s, kBounceMinLod);
+  return [cones, s](const VoxelFragment& f, const SurfaceMaterial& m) -> vec3 {
+    const DiffuseConeSet set = cones->diffuse(f.position, m.shading_normal, 0.0f);
     return s.restitution * m.albedo * set.radiance;
   };
 }

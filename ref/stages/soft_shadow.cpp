@@ -44,6 +44,7 @@ Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& m
     *visibility = Image(w, h, 1, 1.0f);
     visibility->channel_names = {"Y"};
   }
+  const ConeFrame cones(mips, scene.volume, s);  // once per frame: the per-pixel loop only traces
   parallel_rows(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
@@ -53,7 +54,7 @@ Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& m
       vec3 sum(0.0f);
       float vis_sum = 0.0f;
       for (const SpotLight& light : scene.spot_lights) {
-        const float vis = trace_shadow_cone(mips, scene.volume, s, p, light.position);
+        const float vis = cones.shadow(p, light.position);
         vis_sum += vis;
         sum += vis * spot_light_radiance(light, s, p, m.shading_normal, v, m);
       }

@@ -11,7 +11,8 @@ namespace {
 
 TEST(BenchCli, WritesBenchJsonWithRatios) {
   const auto dir = test::fresh_dir("bench");
-  ASSERT_EQ(test::run_vct("bench --grid 16 --width 32 --height 24 --repeat 1 --pt-spp 1 --raw-rays 100000 --threads 2 --out '" +
+  ASSERT_EQ(test::run_vct("bench --grid 16 --width 32 --height 24 --repeat 1 --pt-spp 1 --raw-rays 100000 --threads 2 "
+                          "--validate-spp 4 --out '" +
                           dir.string() + "'"),
             0);
   const nlohmann::json j = nlohmann::json::parse(test::slurp(dir / "bench.json"));
@@ -29,6 +30,17 @@ TEST(BenchCli, WritesBenchJsonWithRatios) {
   } else {
     EXPECT_NEAR(last["ref_over_gl"].get<double>(), total / j["gl"]["total"].get<double>(), 1e-9);
   }
+  // The validate row: a whole validate at the bench's sizes, its phases summing to its parts.
+  const auto& v = j["validate"];
+  ASSERT_TRUE(v.contains("phases")) << v.dump();
+  EXPECT_EQ(v["settings"]["width"], 32);
+  EXPECT_EQ(v["settings"]["spp"], 4);
+  double render = 0.0, other = 0.0;
+  for (const auto& ph : v["phases"]["phases"]) (ph["render"].get<bool>() ? render : other) += ph["ms"].get<double>();
+  EXPECT_GT(render, 0.0);
+  EXPECT_NEAR(v["phases"]["render_ms"].get<double>(), render, 1e-6);
+  EXPECT_NEAR(v["phases"]["other_ms"].get<double>(), other, 1e-6);
+  EXPECT_LE(render + other, v["wall_ms"].get<double>());  // the phases happen inside the child's wall time
   const auto& pt = j["path_tracer"];
   EXPECT_EQ(pt["raw_rays"], 100000);
   EXPECT_GT(pt["raw_intersect_rays_per_second"].get<double>(), 0.0);

@@ -1,0 +1,231 @@
+#!/usr/bin/env python3
+"""Our path tracer against Mitsuba 3 (scalar_rgb) on one Lambertian Cornell box with a spot and an
+area light (issue 16; derivation of the test's bound in docs/compare.md, "Path tracer against
+Mitsuba 3"; figures in docs/performance.md).
+
+  bench/mitsuba_compare.py [--size 128] [--spp 256] [--depth 64] [--vct build/bin/vct]
+      benchmark, run by hand: time, per-pixel variance (from two independent seeds of each
+      renderer) and efficiency 1 / (time x variance), ours over Mitsuba's;
+  bench/mitsuba_compare.py --test [--size 32] [--spp 64]
+      correctness (ctest pt_mitsuba_agreement): the image means of the two renderers agree per
+      channel within 4 standard errors; exit 0 pass, 1 fail, 77 skipped (no mitsuba in the venv).
+
+The scene is scenes/cornell_box.gltf with its two glossy objects made Lambertian and its spot made
+hard-edged (inner 0.75 rad, outer 0.7505 rad): glTF's cone falloff (KHR_lights_punctual) and
+Mitsuba's (linear in angle) differ inside the transition, so the transition is made 0.5 mrad wide.
+Both renderers get the same triangles, albedos, emission (front faces only), camera and light
+(radiant intensity in W/sr; glTF candela are read as such by ref/pt). Our path tracer shoots every
+camera ray through the pixel centre (so its pixels are the VCT frame's), so the test traces
+Mitsuba's camera rays through pixel centres too; the benchmark uses mi.render (box filter).
+"""
+import argparse
+import base64
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+INNER, OUTER = 0.75, 0.7505
+
+
+# ------------------------------------------------------------------ the scene, both ways
+def lambertian_cornell(path):
+    """Writes the benchmark scene (a glTF) and returns its parsed form for Mitsuba."""
+    with open(os.path.join(ROOT, "scenes", "cornell_box.gltf")) as f:
+        g = json.load(f)
+    for m in g["materials"]:
+        pbr = m["pbrMetallicRoughness"]
+        pbr["metallicFactor"], pbr["roughnessFactor"] = 0.0, 1.0
+        m.setdefault("extensions", {})["KHR_materials_specular"] = {"specularFactor": 0.0}
+    spot = g["extensions"]["KHR_lights_punctual"]["lights"][0]
+    spot["spot"] = {"innerConeAngle": INNER, "outerConeAngle": OUTER}
+    with open(path, "w") as f:
+        json.dump(g, f)
+    return g
+
+
+def quat_rotate(q, v):
+    x, y, z, w = q
+    u = np.array([x, y, z])
+    v = np.asarray(v, dtype=np.float64)
+    return v + 2.0 * np.cross(u, np.cross(u, v) + w * v)
+
+
+def accessor(g, blob, index):
+    """One glTF accessor as an (count, width) array (tightly packed views, as the generator writes)."""
+    a = g["accessors"][index]
+    view = g["bufferViews"][a["bufferView"]]
+    dtype = np.dtype({5126: "<f4", 5125: "<u4", 5123: "<u2", 5121: "u1"}[a["componentType"]])
+    width = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[a["type"]]
+    if view.get("byteStride", dtype.itemsize * width) != dtype.itemsize * width:
+        raise SystemExit("mitsuba_compare: interleaved glTF buffers are not supported")
+    start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+    return np.frombuffer(blob, dtype=dtype, count=a["count"] * width, offset=start).reshape(a["count"], width)
+
+
+def write_ply(path, vertices, faces):
+    with open(path, "wb") as f:
+        f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                 % (len(vertices), len(faces))).encode())
+        f.write(np.asarray(vertices, dtype="<f4").tobytes())
+        rows = np.zeros(len(faces), dtype=[("n", "u1"), ("i", "<i4", 3)])
+        rows["n"], rows["i"] = 3, faces
+        f.write(rows.tobytes())
+
+
+def mitsuba_scene(g, work, size, spp, depth, seed):
+    import mitsuba as mi
+    T = mi.ScalarTransform4f
+    blob = base64.b64decode(g["buffers"][0]["uri"].split(",", 1)[1])
+    scene = {"type": "scene",
+             "integrator": {"type": "path", "max_depth": depth + 1}}  # Mitsuba counts the camera segment
+    for n, node in enumerate(g["nodes"]):
+        if "mesh" in node:
+            t = np.array(node.get("translation", [0, 0, 0]), dtype=np.float64)
+            q = node.get("rotation", [0, 0, 0, 1])
+            s = np.array(node.get("scale", [1, 1, 1]), dtype=np.float64)
+            for k, prim in enumerate(g["meshes"][node["mesh"]]["primitives"]):
+                p = accessor(g, blob, prim["attributes"]["POSITION"]).astype(np.float64) * s
+                p = np.array([quat_rotate(q, v) for v in p]) + t
+                idx = accessor(g, blob, prim["indices"]).reshape(-1, 3).astype(np.int32)
+                ply = os.path.join(work, "mesh_%d_%d.ply" % (n, k))
+                write_ply(ply, p, idx)
+                m = g["materials"][prim["material"]]
+                shape = {"type": "ply", "filename": ply, "face_normals": True,
+                         "bsdf": {"type": "diffuse",
+                                  "reflectance": {"type": "rgb", "value": m["pbrMetallicRoughness"]["baseColorFactor"][:3]}}}
+                if "emissiveFactor" in m:
+                    strength = m.get("extensions", {}).get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)
+                    shape["emitter"] = {"type": "area", "radiance": {"type": "rgb",
+                                                                     "value": [c * strength for c in m["emissiveFactor"]]}}
+                scene["shape_%d_%d" % (n, k)] = shape
+        if "camera" in node:
+            cam = g["cameras"][node["camera"]]["perspective"]
+            eye = np.array(node["translation"], dtype=np.float64)
+            q = node.get("rotation", [0, 0, 0, 1])
+            scene["sensor"] = {
+                "type": "perspective", "fov_axis": "y", "fov": math.degrees(cam["yfov"]), "near_clip": cam.get("znear", 0.05),
+                "to_world": T().look_at(origin=eye.tolist(), target=(eye + quat_rotate(q, [0, 0, -1])).tolist(),
+                                        up=quat_rotate(q, [0, 1, 0]).tolist()),
+                "film": {"type": "hdrfilm", "width": size, "height": size, "rfilter": {"type": "box"}, "pixel_format": "rgb"},
+                "sampler": {"type": "independent", "sample_count": spp, "seed": seed}}
+        if "extensions" in node:
+            light = g["extensions"]["KHR_lights_punctual"]["lights"][node["extensions"]["KHR_lights_punctual"]["light"]]
+            pos = np.array(node["translation"], dtype=np.float64)
+            q = node.get("rotation", [0, 0, 0, 1])
+            d = quat_rotate(q, [0, 0, -1])
+            up = quat_rotate(q, [0, 1, 0])
+            scene["spot"] = {"type": "spot", "to_world": T().look_at(origin=pos.tolist(), target=(pos + d).tolist(), up=up.tolist()),
+                             "intensity": {"type": "rgb", "value": [c * light["intensity"] for c in light["color"]]},
+                             "cutoff_angle": math.degrees(OUTER), "beam_width": math.degrees(INNER)}
+    return scene
+
+
+def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
+    """Mitsuba's image and render time. centres=True: every camera ray through the pixel centre,
+    as ref/pt/camera_ray.cpp shoots them (integrator.sample per ray, in Python: for small images);
+    else mi.render with a box pixel filter (the benchmark; variance from two seeds does not count
+    pixel-area integration as noise)."""
+    import mitsuba as mi
+    mi.set_variant("scalar_rgb")
+    scene = mi.load_dict(mitsuba_scene(g, work, size, spp, depth, seed))
+    t0 = time.perf_counter()
+    if not centres:
+        img = np.array(mi.render(scene, seed=seed), dtype=np.float64)[:, :, :3]
+        return img, time.perf_counter() - t0
+    sensor, integrator = scene.sensors()[0], scene.integrator()
+    sampler = sensor.sampler().clone()
+    sampler.seed(seed, 1)
+    img = np.zeros((size, size, 3))
+    for y in range(size):
+        for x in range(size):
+            acc = [0.0, 0.0, 0.0]
+            centre = mi.Point2f((x + 0.5) / size, (y + 0.5) / size)
+            for _ in range(spp):
+                ray, weight = sensor.sample_ray(0.0, 0.5, centre, mi.Point2f(0.5, 0.5))
+                spec = integrator.sample(scene, sampler, ray)[0]
+                for c in range(3):
+                    acc[c] += spec[c] * weight[c]
+                sampler.advance()
+            img[y, x] = np.array(acc) / spp
+    return img, time.perf_counter() - t0
+
+
+def render_ours(vct, scene_path, work, size, spp, depth, seed, threads):
+    out = os.path.join(work, "ours_%d" % seed)
+    cfg = os.path.join(work, "seed_%d.json" % seed)
+    with open(cfg, "w") as f:
+        json.dump({"pt": {"seed": seed}}, f)
+    subprocess.run([vct, "pathtrace", scene_path, "--config", cfg, "--width", str(size), "--height", str(size),
+                    "--spp", str(spp), "--max-depth", str(depth), "--threads", str(threads), "--quiet", "--out", out],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "run.json")) as f:
+        seconds = json.load(f)["pathtrace"]["render_seconds"]
+    import mitsuba as mi
+    mi.set_variant("scalar_rgb")
+    img = np.array(mi.Bitmap(os.path.join(out, "pt_full.exr")), dtype=np.float64)[:, :, :3]
+    return img, seconds
+
+
+# ------------------------------------------------------------------ statistics
+def pair_stats(a, b):
+    """Two independent renders of one image: their mean image's per-channel mean, the standard
+    error of that mean, and the per-pixel variance of one render (docs/compare.md)."""
+    d = a - b
+    pixels = a.shape[0] * a.shape[1]
+    per_pixel_var = (d * d / 2.0).reshape(-1, 3)  # E[(a-b)^2] / 2 = Var of one render, per pixel
+    mean = ((a + b) / 2.0).reshape(-1, 3).mean(axis=0)
+    se = np.sqrt(per_pixel_var.sum(axis=0) / pixels ** 2 / 2.0)  # Var(mean of P pixels of (a+b)/2)
+    return mean, se, float(per_pixel_var.mean())
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--test", action="store_true")
+    ap.add_argument("--size", type=int)
+    ap.add_argument("--spp", type=int)
+    ap.add_argument("--depth", type=int, default=64)
+    ap.add_argument("--threads", type=int, default=1, help="ours; Mitsuba scalar_rgb uses its own pool")
+    ap.add_argument("--vct", default=os.environ.get("VCT_BINARY", os.path.join(ROOT, "build", "bin", "vct")))
+    ap.add_argument("--k", type=float, default=4.0, help="--test bound in standard errors")
+    a = ap.parse_args(argv)
+    size = a.size or (32 if a.test else 128)
+    spp = a.spp or (64 if a.test else 256)
+    try:
+        import mitsuba  # noqa: F401
+    except ImportError:
+        print("mitsuba_compare: mitsuba is not installed in this Python (scripts/setup.sh puts it in .venv)")
+        return 77 if a.test else 3
+    with tempfile.TemporaryDirectory(prefix="vct-mitsuba-") as work:
+        scene_path = os.path.join(work, "cornell_lambert.gltf")
+        g = lambertian_cornell(scene_path)
+        ours = [render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads) for seed in (1, 2)]
+        theirs = [render_mitsuba(g, work, size, spp, a.depth, seed, centres=a.test) for seed in (1, 2)]
+    om, ose, ovar = pair_stats(ours[0][0], ours[1][0])
+    mm, mse, mvar = pair_stats(theirs[0][0], theirs[1][0])
+    z = (om - mm) / np.sqrt(ose ** 2 + mse ** 2)
+    print("Lambertian Cornell box, spot + area light, %d^2, %d spp, depth %d" % (size, spp, a.depth))
+    print("  ours     mean RGB %s  +- %s (1 s.e.)" % (np.round(om, 5), np.round(ose, 5)))
+    print("  mitsuba  mean RGB %s  +- %s" % (np.round(mm, 5), np.round(mse, 5)))
+    print("  z per channel %s  (bound |z| <= %.1f)" % (np.round(z, 2), a.k))
+    if a.test:
+        ok = bool(np.all(np.abs(z) <= a.k)) and bool(np.all(om > 0))
+        print("PASS" if ok else "FAIL")
+        return 0 if ok else 1
+    ot, mt = min(t for _, t in ours), min(t for _, t in theirs)
+    oe, me = 1.0 / (ot * ovar), 1.0 / (mt * mvar)
+    print("  ours     %.2f s (%d thread%s), per-pixel variance %.5g, efficiency %.4g" % (ot, a.threads, "s"[:a.threads > 1], ovar, oe))
+    print("  mitsuba  %.2f s, per-pixel variance %.5g, efficiency %.4g" % (mt, mvar, me))
+    print("  efficiency ratio ours / mitsuba: %.2f" % (oe / me))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
