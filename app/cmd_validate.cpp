@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "facts_notes.h"
 #include "compare/bias.h"
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
@@ -34,6 +35,7 @@ struct ValidateOptions {
   std::vector<std::string> sweeps;
   bool require_gl = false;
   bool no_report = false;
+  GlFlags gl;
 };
 
 Settings resolve(const CommonOptions& o) {
@@ -49,6 +51,7 @@ void record_frame(RunDir& run, const BackendRun& b, const std::string& name) {
   if (!b.ok()) return;
   for (const auto& [stage, ms] : b.frame->timings_ms) run.add_timing(name, stage, ms);
   for (const auto& [k, v] : b.frame->info) run.json()["backends"][name]["info"][k] = v;
+  run.json()["backends"][name]["facts"] = b.frame->facts;
   if (!b.frame->multibounce_energy.empty()) run.json()["multibounce_energy"][name] = b.frame->multibounce_energy;
 }
 
@@ -83,7 +86,7 @@ nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
 
 // One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
 nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
-                         bool gl_available) {
+                         bool gl_available, const GlFlags& gl_flags) {
   const auto [key, values] = parse_sweep(spec);
   nlohmann::json rows = nlohmann::json::array();
   for (const std::string& value : values) {
@@ -92,8 +95,8 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
     std::fflush(stdout);
     nlohmann::json row = {{"key", key}, {"value", value}};
     // GL first: the reference then emulates the coverage rule the driver actually ran.
-    const BackendRun gl = gl_available ? run_gl_backend(scene, s) : BackendRun{};
-    const BackendRun ref = run_ref_backend(scene, settings_as_run_by_gl(s, gl));
+    const BackendRun gl = gl_available ? run_gl_backend(scene, s, gl_flags) : BackendRun{};
+    const BackendRun ref = run_ref_backend(scene, settings_as_run_by_gl(s, gl), sample_positions_of(gl));
     row["ref_status"] = ref.status;
     row["ref_ms"] = ref.ms;
     if (ref.ok()) row["ref_timings_ms"] = ref.frame->timings_ms;
@@ -114,6 +117,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
           cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(*ref.frame, s.vct), gl_set);
           // Cone stages on GL's own voxels (compare/isolated_stages.h), as in run().
           cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
+    note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
           row["gl_verdict"] = cmp::to_string(rep.overall());
           row["gl_first_failing"] = rep.first_failing();
         }
@@ -143,10 +147,10 @@ int run(const ValidateOptions& o) {
   std::fflush(stdout);
 
   // GL first: the reference then emulates the coverage rule the driver actually ran.
-  const BackendRun gl = run_gl_backend(scene, s);
+  const BackendRun gl = run_gl_backend(scene, s, o.gl);
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
-              gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
+              gl.ok() ? gl.frame->facts.renderer.c_str() : "");
   std::fflush(stdout);
   const Settings ref_settings = settings_as_run_by_gl(s, gl);
   if (ref_settings.vct.msaa_samples != s.vct.msaa_samples) {
@@ -154,7 +158,7 @@ int run(const ValidateOptions& o) {
                 ref_settings.vct.msaa_samples, s.vct.msaa_samples, ref_settings.vct.msaa_samples);
     run.json()["settings_effective"] = ref_settings;
   }
-  const BackendRun ref = run_ref_backend(scene, ref_settings);
+  const BackendRun ref = run_ref_backend(scene, ref_settings, sample_positions_of(gl));
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
   std::fflush(stdout);
@@ -175,6 +179,7 @@ int run(const ValidateOptions& o) {
     // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
     // tie upstream does not fail a correct marcher downstream.
     cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
+    note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
     run.json()["verdicts"] = cmp::to_json(rep);
     print_verdicts(rep, "GPU (gl) vs CPU reference");
     if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;
@@ -194,7 +199,7 @@ int run(const ValidateOptions& o) {
   run.save();
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
-    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok()));
+    for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), o.gl));
     run.json()["sweeps"] = sweeps;
     run.save();
   }
@@ -220,6 +225,7 @@ void register_validate(CLI::App& app, int& exit_code) {
   add_image_flags(cmd, o->common);
   add_grid_flag(cmd, o->common);
   add_spp_flag(cmd, o->common);
+  add_gl_flags(cmd, o->gl);
   cmd->add_option("--sweep", o->sweeps,
                   "KEY=V1,V2,... re-render per value, bias and time per setting (grid, cones, aperture, quality, "
                   "bounces, light_model or any vct.* key); repeatable");
