@@ -140,6 +140,10 @@ bool GlContext::open(void* display_handle, const std::string& description, std::
 }
 
 GlContext::GlContext(const std::string& device_spec) {
+  previous_display_ = eglGetCurrentDisplay();
+  previous_context_ = eglGetCurrentContext();
+  previous_draw_ = eglGetCurrentSurface(EGL_DRAW);
+  previous_read_ = eglGetCurrentSurface(EGL_READ);
   const DeviceSpec spec = parse_device_spec(device_spec);
   const std::vector<EglDevice> devices = spec.kind == DeviceSpec::Kind::Surfaceless ? std::vector<EglDevice>{} : list_egl_devices();
   std::string why, tried;
@@ -194,6 +198,9 @@ void GlContext::release() {
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, static_cast<EGLContext>(context_));
   context_ = nullptr;
+  if (previous_context_ != EGL_NO_CONTEXT)
+    eglMakeCurrent(static_cast<EGLDisplay>(previous_display_), static_cast<EGLSurface>(previous_draw_),
+                   static_cast<EGLSurface>(previous_read_), static_cast<EGLContext>(previous_context_));
   // The display is not terminated: EGL displays are per-process singletons and other contexts
   // (another test, the benchmark's next iteration) may still use it.
 }

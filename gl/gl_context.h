@@ -32,6 +32,12 @@ class GlContext {
   void release();  // destroys the context (the display stays: EGL displays are per process)
   void* display_ = nullptr;
   void* context_ = nullptr;
+  // The context current before this one (restored when this one goes): a device probe or a
+  // second context never leaves another context's thread without its context.
+  void* previous_display_ = nullptr;
+  void* previous_context_ = nullptr;
+  void* previous_draw_ = nullptr;
+  void* previous_read_ = nullptr;
   std::string vendor_, renderer_, version_, device_;
   int max_samples_ = 1;
 };
