@@ -52,12 +52,14 @@ int render(const RunnerOptions& o) {
   Settings s = runner_settings(o);
   const Scene scene = load_scene(o.scene);
   GlContext context(o.device);
-  if (o.max_msaa) s.vct.msaa_samples = context.max_framebuffer_samples();
+  if (o.max_msaa) s.vct.msaa_samples = max_settable_samples(context);
   const FrameResult frame = render_gl_frame(context, scene, s, {o.device, o.fault});
   cmp::StageSet set = cmp::stage_set_from_frame(frame, s.vct);
   cmp::write_stage_set(o.out, set);
   const nlohmann::json summary = {{"scene", scene.source}, {"settings", s}, {"facts", frame.facts},
-                                  {"timings_ms", frame.timings_ms}, {"info", frame.info}};
+                                  {"timings_ms", frame.timings_ms}, {"info", frame.info},
+                                  {"fault", o.fault}, {"fault_blamed", o.fault.empty() ? "" : find_gl_fault(o.fault)->blamed},
+                                  {"fault_where", o.fault.empty() ? "" : find_gl_fault(o.fault)->where}};
   write_text_atomically((std::filesystem::path(o.out) / "runner.json").string(), summary.dump(2) + "\n");
   std::printf("vct_gl_runner: %s on %s (%s), grid %d, %d samples%s -> %s\n", scene.source.c_str(),
               frame.facts.renderer.c_str(), frame.facts.device.c_str(), s.vct.grid, frame.facts.msaa_samples,

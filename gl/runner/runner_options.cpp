@@ -2,7 +2,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gl/gl_context.h"
+
 namespace vct::gl {
+
+int max_settable_samples(const GlContext& context) {
+  const int max = context.max_framebuffer_samples();
+  return max >= 8 ? 8 : max >= 4 ? 4 : 1;
+}
 
 Settings runner_settings(const RunnerOptions& o) {
   Settings s;

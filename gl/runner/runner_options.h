@@ -23,6 +23,12 @@ struct RunnerOptions {
   int repeat = 3;                 // timing repetitions (the best is kept)
 };
 
+class GlContext;
+
+/// --max-msaa: the driver's GL_MAX_FRAMEBUFFER_SAMPLES, at most 8 (the largest count the settings
+/// accept, core/settings.h: a driver with 16 or 32 is run at 8, with its own 8x positions).
+int max_settable_samples(const GlContext& context);
+
 /// Library defaults <- --config <- flags, validated (InputError on a bad value).
 Settings runner_settings(const RunnerOptions& o);
 
