@@ -14,13 +14,16 @@ struct GlFault {
   const char* where;   // what it breaks, and in which file
   const char* blamed;  // the first stage a correct comparison fails
   bool host;           // a C++ fault (no #define)
+  // False where a CPU rasterizer (llvmpipe) cannot show it: it serializes the fragments of one
+  // voxel and finishes each pass before the next (docs/compare.md), so only a GPU can.
+  bool visible_on_cpu_rasterizer = true;
 };
 
 inline constexpr GlFault kGlFaults[] = {
     {"half_texel", "voxel depth coordinate + 0.5 voxel (voxelize.frag)", "voxel.occupancy", false},
     {"wrong_axis", "dominant-axis x/y test swapped (voxelize.geom)", "voxel.occupancy", false},
     {"racy_average", "non-atomic load/add/store or load/average/store (voxelize.frag); invisible on llvmpipe",
-     "voxel.radiance", false},
+     "voxel.radiance", false, false},
     {"lost_update", "last writer wins instead of the reduction (voxelize.frag)", "voxel.radiance", false},
     {"wrong_mip", "iso mip l built from level l-2 (mip_iso.comp)", "mip.iso.2", false},
     {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",
@@ -29,7 +32,7 @@ inline constexpr GlFault kGlFaults[] = {
     {"missing_barrier",
      "no glMemoryBarrier between the voxelization draw and the resolve dispatch (gl_pass_voxel.cpp); "
      "invisible on llvmpipe, which finishes each pass before the next",
-     "voxel.radiance", true},
+     "voxel.radiance", true, false},
 };
 
 /// The table row of `name`, or nullptr ("" and unknown names).

@@ -26,10 +26,17 @@ namespace {
 
 void add_flags(CLI::App& app, RunnerOptions& o) {
   app.add_option("scene", o.scene, "glTF 2.0 scene (default: the built-in Cornell box)");
-  app.add_option("--out", o.out, "Directory for the stage set (or the timings)")->required();
+  app.add_option("--out", o.out, "Directory for the stage set (or the timings)");
   app.add_option("--config", o.config, "Settings JSON ({\"vct\": {...}}), under the flags");
   app.add_option("--gl-device", o.device, "EGL device index, a name, or 'surfaceless' (default: first hardware device)");
   app.add_option("--gl-fault", o.fault, "Deliberate fault: " + gl_fault_names());
+  app.add_flag_callback(
+      "--list-faults",
+      [] {
+        for (const GlFault& f : kGlFaults) std::printf("%s\n", f.name);
+        throw CLI::Success();
+      },
+      "Print the fault names, one a line, and exit");
   app.add_option("--width", o.width, "Image width");
   app.add_option("--height", o.height, "Image height");
   app.add_option("--grid", o.grid, "Voxel grid N (N^3)");
@@ -48,6 +55,7 @@ void add_flags(CLI::App& app, RunnerOptions& o) {
 }
 
 int render(const RunnerOptions& o) {
+  if (o.out.empty()) throw InputError("--out", "is required (the stage set directory)");
   check_gl_fault(o.fault, "--gl-fault");
   Settings s = runner_settings(o);
   const Scene scene = load_scene(o.scene);
@@ -59,7 +67,9 @@ int render(const RunnerOptions& o) {
   const nlohmann::json summary = {{"scene", scene.source}, {"settings", s}, {"facts", frame.facts},
                                   {"timings_ms", frame.timings_ms}, {"info", frame.info},
                                   {"fault", o.fault}, {"fault_blamed", o.fault.empty() ? "" : find_gl_fault(o.fault)->blamed},
-                                  {"fault_where", o.fault.empty() ? "" : find_gl_fault(o.fault)->where}};
+                                  {"fault_where", o.fault.empty() ? "" : find_gl_fault(o.fault)->where},
+                                  {"fault_visible_on_cpu_rasterizer",
+                                   o.fault.empty() || find_gl_fault(o.fault)->visible_on_cpu_rasterizer}};
   write_text_atomically((std::filesystem::path(o.out) / "runner.json").string(), summary.dump(2) + "\n");
   std::printf("vct_gl_runner: %s on %s (%s), grid %d, %d samples%s -> %s\n", scene.source.c_str(),
               frame.facts.renderer.c_str(), frame.facts.device.c_str(), s.vct.grid, frame.facts.msaa_samples,

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/error.h"
 #include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
 #include "io/atomic_file.h"
@@ -51,6 +52,7 @@ void print_table(const nlohmann::json& rows) {
 }  // namespace
 
 int run_timings(const RunnerOptions& o) {
+  if (o.out.empty()) throw InputError("--out", "is required (the timings directory)");
   const Settings base = runner_settings(o);
   const Scene scene = load_scene(o.scene);
   GlContext ctx(o.device);
