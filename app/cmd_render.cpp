@@ -148,7 +148,7 @@ FrameResult render_frame(const Scene& scene, const Settings& s, const VctFlags& 
     return render_ref_frame(scene, s, positions);
   }
 #ifdef VCT_RENDER_GL
-  return vct::gl::render_gl_frame(scene, s, {flags.gl.device, gl_fault_of(flags.gl, s)});
+  return vct::gl::render_gl_frame(scene, s, {flags.gl.device, flags.gl.fault});
 #else
   throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");
 #endif

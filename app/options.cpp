@@ -50,6 +50,5 @@ void add_gl_flags(CLI::App* cmd, GlFlags& g) {
   cmd->add_option("--gl-fault", g.fault, "GL: compile a deliberate fault in (testing the oracle; docs/gl_backend.md)");
 }
 
-std::string gl_fault_of(const GlFlags& g, const Settings& s) { return g.fault.empty() ? s.vct.gl_fault : g.fault; }
 
 }  // namespace vct::app

@@ -33,8 +33,6 @@ struct GlFlags {
 };
 /// --gl-device, --gl-fault.
 void add_gl_flags(CLI::App* cmd, GlFlags& g);
-/// The fault to compile in: --gl-fault, else the settings' legacy "gl_fault" key.
-std::string gl_fault_of(const GlFlags& g, const Settings& s);
 
 /// `base` <- --config file <- flags; validated (InputError on a bad value); threads applied.
 Settings resolve_settings(const CommonOptions& o, const Settings& base = Settings());

@@ -59,7 +59,7 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& 
 #ifdef VCT_HAVE_GL_PIPELINE
   try {
     Stopwatch sw;
-    r.frame = gl::render_gl_frame(scene, s, {flags.device, gl_fault_of(flags, s)});
+    r.frame = gl::render_gl_frame(scene, s, {flags.device, flags.fault});
     r.ms = sw.ms();
     r.status = "ok";
   } catch (const EnvironmentError& e) {

@@ -163,6 +163,8 @@ GlContext::GlContext(const std::string& device_spec) {
       // need a context: each device is opened in turn and kept when it matches.
       for (const EglDevice& d : devices) {
         if (!open(device_display(d), describe(d), why)) {
+          // Named by its EGL strings but unusable: say why, rather than "no such device".
+          if (device_matches(d, spec.name)) throw EnvironmentError("GL backend: " + why);
           note();
           continue;
         }

@@ -163,8 +163,7 @@ void to_json(nlohmann::json& j, const VctSettings& s) {
                      {"time", s.time},
                      {"frame", s.frame},
                      {"particles", s.particles},
-                     {"depth_prepass", s.depth_prepass},
-                     {"gl_fault", s.gl_fault}};
+                     {"depth_prepass", s.depth_prepass}};
 }
 
 void from_json(const nlohmann::json& j, VctSettings& s) {
@@ -200,8 +199,6 @@ void from_json(const nlohmann::json& j, VctSettings& s) {
   r.field("frame", s.frame);
   r.field("particles", s.particles);
   r.field("depth_prepass", s.depth_prepass);
-  r.field("gl_fault", s.gl_fault);
-  if (!is_known_gl_fault(s.gl_fault)) throw InputError("", "vct.gl_fault: unknown fault \"" + s.gl_fault + "\"");
   r.finish();
 }
 
@@ -260,13 +257,6 @@ Settings load_settings_file(const std::string& path, const Settings& base) {
   }
 }
 
-bool is_known_gl_fault(const std::string& name) {
-  if (name.empty()) return true;
-  for (const char* f : kGlFaults)
-    if (name == f) return true;
-  return false;
-}
-
 namespace {
 void require(bool ok, const std::string& what) {
   if (!ok) throw InputError("", what);
@@ -296,7 +286,6 @@ void validate_settings(const Settings& s) {
           "diffuse_cone_tilt_deg must be in (0, 90) (got " + shortest(v.diffuse_cone_tilt_deg) + ")");
   require(v.bounces >= 1 && v.bounces <= 64, "bounces must be in 1..64");
   require(v.restitution >= 0.0f && v.restitution <= 1.0f, "restitution must be in [0, 1]");
-  require(is_known_gl_fault(v.gl_fault), "gl_fault: unknown fault \"" + v.gl_fault + "\"");
   const PtSettings& p = s.pt;
   require(p.width > 0 && p.height > 0 && p.width <= 16384 && p.height <= 16384,
           "path tracer image size must be within 1..16384 per side");
