@@ -16,12 +16,14 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 bytes=$(du -sb "$work/bundle" | cut -f1)
 [ "$bytes" -le $((60 * 1024 * 1024)) ] || fail "bundle is $bytes bytes"
 for lib in libEGL libOpenGL libGLdispatch libOpenImageIO libembree libc.so; do
-  if ls "$work/bundle/lib" | grep -q "^$lib"; then fail "bundle carries $lib"; fi
+  if compgen -G "$work/bundle/lib/$lib*" > /dev/null; then fail "bundle carries $lib"; fi
 done
 # Every non-system library resolves inside the bundle.
 resolved=$(LD_LIBRARY_PATH="$work/bundle/lib" ldd "$work/bundle/bin/vct_gl_runner")
-echo "$resolved" | grep -q "libstdc++.so.6 => $work/bundle/lib/" || fail "libstdc++ not taken from the bundle: $resolved"
-if echo "$resolved" | grep -q "not found"; then fail "unresolved library: $resolved"; fi
+# (here-strings, not `echo | grep -q`: grep -q exits at the first match and pipefail would then
+# report echo's SIGPIPE as a failure)
+grep -q "libstdc++.so.6 => $work/bundle/lib/" <<< "$resolved" || fail "libstdc++ not taken from the bundle: $resolved"
+if grep -q "not found" <<< "$resolved"; then fail "unresolved library: $resolved"; fi
 
 # A bare environment: only PATH and what run_gl_runner.sh sets.
 set +e
