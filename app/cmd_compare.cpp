@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "compare_scene.h"
 #include "options.h"
+#include "facts_notes.h"
 #include "compare/isolated_stages.h"
 #include "compare/metrics.h"
 #include "compare/stage_compare.h"
@@ -68,7 +69,8 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
                  const cmp::CompareOptions& opt) {
   const std::string title = test.backend + " vs " + ref.backend;
   if (a.scene.empty()) {
-    const cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+    cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+    note_driver_facts(rep, test.facts, ref.facts);
     const int code = finish(rep, a, title, {{"cone_stages", "end_to_end"}});
     if (has_cone_stage(rep))
       std::printf("cone stages were judged end to end (an upstream voxel tie changes every cone through it); "
@@ -78,6 +80,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
   const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load);
   cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
   cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
+  note_driver_facts(rep, test.facts, ref.facts);
   const int code = finish(rep, a, title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
   std::printf("cone stages were judged on B's own G-buffer, direct light and mips, re-traced in %s\n",
               in.scene.source.c_str());

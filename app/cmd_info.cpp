@@ -13,6 +13,12 @@
 #include "core/settings.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
+#include "stages/backend_facts.h"
+
+#ifdef VCT_HAVE_GL
+#include "gl/gl_device_list.h"
+#define VCT_INFO_GL 1
+#endif
 
 namespace vct::app {
 namespace {
@@ -186,11 +192,43 @@ void print_text(const Scene& s) {
 
 }  // namespace
 
+// `vct info --gl`: the machine's GL devices (gl/gl_device_list.h), as text or JSON.
+int print_gl_devices(bool json) {
+#ifdef VCT_INFO_GL
+  const nlohmann::json list = gl::list_gl_devices();
+  if (json) {
+    std::printf("%s\n", list.dump(2).c_str());
+  } else {
+    for (const auto& d : list["devices"]) {
+      fmt::print("--gl-device {:<12} {:<11} {}\n", d["spec"].get<std::string>(), d["kind"].get<std::string>(),
+                 d["status"].get<std::string>());
+      if (d.contains("egl")) fmt::print("    egl: {} {}\n", d["egl"]["extensions"].get<std::string>(), d["egl"]["render_node"].get<std::string>());
+      if (!d.contains("facts")) continue;
+      const BackendFacts f = d["facts"].get<BackendFacts>();
+      fmt::print("    {} | {} | {}\n", f.vendor, f.renderer, f.version);
+      std::string pos;
+      for (const vec2& p : f.sample_positions) pos += fmt::format(" ({:.4g},{:.4g})", p.x, p.y);
+      fmt::print("    max samples {}, GL_SUBPIXEL_BITS {}, sample positions at {}:{}\n", f.max_samples, f.subpixel_bits,
+                 f.msaa_samples, pos);
+      fmt::print("    conservative raster: {}\n", f.conservative_raster.empty() ? "none" : fmt::format("{}", fmt::join(f.conservative_raster, " ")));
+      for (const std::string& u : f.unreported) fmt::print("    not reported: {}\n", u);
+    }
+    const std::string def = list["default"].get<std::string>();
+    fmt::print("default (no --gl-device): {}\n", def.empty() ? "none: no GL 4.5 context on this machine" : def);
+  }
+  return kExitOk;
+#else
+  (void)json;
+  throw EnvironmentError("GL backend not built");
+#endif
+}
+
 void register_info(CLI::App& app, int& exit_code) {
   struct Args {
     std::string scene;
     bool json = false;
     SceneLoadOptions scene_load;
+    bool gl = false;
   };
   static Args storage;  // lives as long as the process (CLI11 binds by reference); static, not
   auto* args = &storage;  // new, so LeakSanitizer sees no leak
@@ -198,7 +236,12 @@ void register_info(CLI::App& app, int& exit_code) {
   cmd->add_option("scene", args->scene, "glTF 2.0 file (.gltf or .glb)");
   cmd->add_flag("--json", args->json, "Print the summary as JSON");
   add_scene_access_flag(cmd, args->scene_load);
+  cmd->add_flag("--gl", args->gl, "List the GL devices (EGL devices, Mesa surfaceless) and what each offers, not a scene");
   cmd->callback([args, &exit_code]() {
+    if (args->gl) {
+      exit_code = print_gl_devices(args->json);
+      return;
+    }
     const Scene scene = load_scene(args->scene, args->scene_load);
     if (args->json) {
       std::printf("%s\n", summary(scene).dump(2).c_str());

@@ -2,12 +2,15 @@
 // run.json (settings, environment, timings, scene summary, multibounce energy); --dump writes
 // every stage through the shared dump writer; --explain X,Y writes one pixel's cones.
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/memory_budget.h"
 #include "io/atomic_file.h"
@@ -37,11 +40,18 @@ struct VctFlags {
   std::optional<int> bounces, msaa, shadow_map_size, frame, cone_count;
   std::optional<float> restitution, tolerance, quality, offset, aperture, cone_tilt, time;
   std::optional<std::string> light_model, voxelizer, storage, reduction, weighting;
+  GlFlags gl;
+  std::string facts_from;  // ref: mirror the sample positions of this GL stage set / run.json
+  bool stage_set = false;  // also write OUT/stages (a stage set `vct compare` reads)
 };
 
 void add_vct_flags(CLI::App* cmd, VctFlags& f) {
   cmd->add_option("--backend", f.backend, "ref (CPU reference) or gl (OpenGL 4.5)")->check(CLI::IsMember({"ref", "gl"}));
   cmd->add_flag("--dump", f.dump, "Write every stage (images, volumes, mips) into the run directory");
+  cmd->add_flag("--stage-set", f.stage_set, "Also write the frame as a stage set in OUT/stages (for vct compare)");
+  cmd->add_option("--facts-from", f.facts_from,
+                  "ref: emulate the MSAA sample positions a GL run reported (its stage set dir, manifest or run.json)");
+  add_gl_flags(cmd, f.gl);
   cmd->add_option("--explain", f.explain, "X,Y: write that pixel's cones (JSON + picture); row 0 = top");
   cmd->add_flag("--aniso", f.aniso, "Anisotropic voxels (six directional mip volumes)");
   cmd->add_flag("--soft-shadows", f.soft_shadows, "Cone-traced shadows instead of PCF");
@@ -102,6 +112,26 @@ Settings apply_vct_flags(Settings s, const VctFlags& f) {
   return s;
 }
 
+// The facts of a GL run: a stage set directory or manifest ("facts"), or a render run.json
+// ("facts" keyed by backend, the GL one preferred).
+BackendFacts read_facts(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path file = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), "cannot read (--facts-from wants a stage set or a run.json)");
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (!j.is_object() || !j.contains("facts")) throw InputError(file.string(), "has no \"facts\" (--facts-from)");
+    const nlohmann::json& f = j.at("facts");
+    if (f.is_object() && f.contains("gl") && f.at("gl").is_object()) return f.at("gl").get<BackendFacts>();
+    BackendFacts facts = f.get<BackendFacts>();
+    if (facts.sample_positions.empty()) throw InputError(file.string(), "its facts list no sample positions");
+    return facts;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string(), std::string("bad facts: ") + e.what());
+  }
+}
+
 ivec2 parse_pixel(const std::string& text) {
   int x = 0, y = 0;
   char extra = 0;
@@ -111,10 +141,13 @@ ivec2 parse_pixel(const std::string& text) {
   return ivec2(x, y);
 }
 
-FrameResult render_frame(const Scene& scene, const Settings& s, const std::string& backend) {
-  if (backend == "ref") return render_ref_frame(scene, s);
+FrameResult render_frame(const Scene& scene, const Settings& s, const VctFlags& flags) {
+  if (flags.backend == "ref") {
+    const std::vector<vec2> positions = flags.facts_from.empty() ? std::vector<vec2>{} : read_facts(flags.facts_from).sample_positions;
+    return render_ref_frame(scene, s, positions);
+  }
 #ifdef VCT_HAVE_GL
-  return vct::gl::render_gl_frame(scene, s);
+  return vct::gl::render_gl_frame(scene, s, {flags.gl.device, flags.gl.fault});
 #else
   throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");
 #endif
@@ -162,9 +195,10 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     }
   }
   const Scene scene = load_scene(scene_path, common.scene_load);
+  if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
   // Locked before rendering, so a second process writing the same --out is refused at once.
   RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);
-  const FrameResult frame = render_frame(scene, settings, flags.backend);
+  const FrameResult frame = render_frame(scene, settings, flags);
   if (frame.images.final_image.empty()) throw EnvironmentError("backend '" + flags.backend + "' produced no frame");
   run.json()["command"] = "render";
   run.json()["backend"] = frame.backend;
@@ -174,11 +208,16 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   // Keyed by backend, the shape the dump writer uses too.
   run.json()["multibounce_energy"][frame.backend] = frame.multibounce_energy;
   for (const auto& [key, value] : frame.info) run.json()["info"][frame.backend][key] = value;
+  run.json()["facts"][frame.backend] = frame.facts;
   for (const auto& [stage, ms] : frame.timings_ms) run.add_timing(frame.backend, stage, ms);
   run.write_color("final", frame.images.final_image);
   if (flags.dump) {
     write_frame_dumps(run, frame, scene);
     write_ref_extras(run, frame, scene, settings.vct);
+  }
+  if (flags.stage_set) {
+    cmp::StageSet set = cmp::stage_set_from_frame(frame, settings.vct);
+    cmp::write_stage_set(run.file("stages"), set);
   }
   if (explain) {
     if (frame.backend != "ref") throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");

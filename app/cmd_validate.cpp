@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "facts_notes.h"
 #include "compare/bias.h"
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
@@ -36,6 +37,7 @@ struct ValidateOptions {
   bool require_gl = false;
   bool no_report = false;
   std::string flip = "full";
+  GlFlags gl;
 };
 
 Settings resolve(const CommonOptions& o) {
@@ -51,6 +53,7 @@ void record_frame(RunDir& run, const BackendRun& b, const std::string& name) {
   if (!b.ok()) return;
   for (const auto& [stage, ms] : b.frame->timings_ms) run.add_timing(name, stage, ms);
   for (const auto& [k, v] : b.frame->info) run.json()["backends"][name]["info"][k] = v;
+  run.json()["backends"][name]["facts"] = b.frame->facts;
   if (!b.frame->multibounce_energy.empty()) run.json()["multibounce_energy"][name] = b.frame->multibounce_energy;
 }
 
@@ -81,7 +84,7 @@ nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
 
 // One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
 nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
-                         bool gl_available, PhaseProgress& progress) {
+                         bool gl_available, const GlFlags& gl_flags, PhaseProgress& progress) {
   const auto [key, values] = parse_sweep(spec);
   nlohmann::json rows = nlohmann::json::array();
   for (const std::string& value : values) {
@@ -91,8 +94,8 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
     progress.begin("sweep " + key + "=" + value + (gl_available ? ": gl, ref, compare, bias" : ": ref, bias"));
     nlohmann::json row = {{"key", key}, {"value", value}};
     // GL first: the reference then emulates the coverage rule the driver actually ran.
-    const BackendRun gl = gl_available ? run_gl_backend(scene, s) : BackendRun{};
-    const BackendRun ref = run_ref_backend(scene, settings_as_run_by_gl(s, gl));
+    const BackendRun gl = gl_available ? run_gl_backend(scene, s, gl_flags) : BackendRun{};
+    const BackendRun ref = run_ref_backend(scene, settings_as_run_by_gl(s, gl), sample_positions_of(gl));
     row["ref_status"] = ref.status;
     row["ref_ms"] = ref.ms;
     if (ref.ok()) row["ref_timings_ms"] = ref.frame->timings_ms;
@@ -113,6 +116,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
           cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(*ref.frame, s.vct), gl_set);
           // Cone stages on GL's own voxels (compare/isolated_stages.h), as in run().
           cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
+          note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
           row["gl_verdict"] = cmp::to_string(rep.overall());
           row["gl_first_failing"] = rep.first_failing();
         }
@@ -151,11 +155,11 @@ int run(const ValidateOptions& o) {
   // GL first: the reference then emulates the coverage rule the driver actually ran.
   progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
                  std::to_string(s.vct.grid) + ")");
-  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s); }, true);
+  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s, o.gl); }, true);
   progress.end();
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
-              gl.ok() && gl.frame->info.count("GL_RENDERER") ? gl.frame->info.at("GL_RENDERER").c_str() : "");
+              gl.ok() ? gl.frame->facts.renderer.c_str() : "");
   std::fflush(stdout);
   const Settings ref_settings = settings_as_run_by_gl(s, gl);
   if (ref_settings.vct.msaa_samples != s.vct.msaa_samples) {
@@ -164,7 +168,7 @@ int run(const ValidateOptions& o) {
     run.json()["settings_effective"] = ref_settings;
   }
   progress.begin("CPU reference frame");
-  const BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings); }, true);
+  const BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings, sample_positions_of(gl)); }, true);
   progress.end();
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
@@ -196,6 +200,7 @@ int run(const ValidateOptions& o) {
     // tie upstream does not fail a correct marcher downstream.
     phases.time("compare cones on gl's voxels (isolated re-trace)",
                 [&] { cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set); });
+    note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
     run.json()["verdicts"] = cmp::to_json(rep);
     progress.end();
     print_verdicts(rep, "GPU (gl) vs CPU reference");
@@ -223,7 +228,7 @@ int run(const ValidateOptions& o) {
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
     for (const auto& spec : o.sweeps)
-      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), progress)); });
+      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), o.gl, progress)); });
     run.json()["sweeps"] = sweeps;
     run.save();
   }
@@ -260,6 +265,7 @@ void register_validate(CLI::App& app, int& exit_code) {
   add_image_flags(cmd, o->common);
   add_grid_flag(cmd, o->common);
   add_spp_flag(cmd, o->common);
+  add_gl_flags(cmd, o->gl);
   cmd->add_option("--sweep", o->sweeps,
                   "KEY=V1,V2,... re-render per value, bias and time per setting (grid, cones, aperture, quality, "
                   "bounces, light_model or any vct.* key); repeatable");

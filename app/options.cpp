@@ -57,4 +57,12 @@ std::string default_out_dir(const std::string& command, const std::string& scene
   return "runs/" + command + "-" + stem;
 }
 
+void add_gl_flags(CLI::App* cmd, GlFlags& g) {
+  cmd->add_option("--gl-device", g.device,
+                  "GL: EGL device index, a name (substring of its renderer or extensions) or 'surfaceless' "
+                  "(default: first hardware device, else Mesa surfaceless; `vct info --gl` lists them)");
+  cmd->add_option("--gl-fault", g.fault, "GL: compile a deliberate fault in (testing the oracle; docs/gl_backend.md)");
+}
+
+
 }  // namespace vct::app

@@ -32,6 +32,14 @@ void add_grid_flag(CLI::App* cmd, CommonOptions& o);
 /// --spp N.
 void add_spp_flag(CLI::App* cmd, CommonOptions& o);
 
+/// How the GL backend runs, apart from the shared VCT settings (gl/gl_pipeline.h GlOptions).
+struct GlFlags {
+  std::string device;  // --gl-device N|NAME|surfaceless ("" = first hardware device, else surfaceless)
+  std::string fault;   // --gl-fault NAME (gl/gl_faults.h); "" = none
+};
+/// --gl-device, --gl-fault.
+void add_gl_flags(CLI::App* cmd, GlFlags& g);
+
 /// `base` <- --config file <- --set <- flags; validated (InputError on a bad value); threads applied.
 Settings resolve_settings(const CommonOptions& o, const Settings& base = Settings());
 

@@ -35,21 +35,21 @@ Settings validate_defaults() {
   return s;
 }
 
-BackendRun run_ref_backend(const Scene& scene, const Settings& s) {
+BackendRun run_ref_backend(const Scene& scene, const Settings& s, const std::vector<vec2>& sample_positions) {
   BackendRun r;
   Stopwatch sw;
-  r.frame = render_ref_frame(scene, s);
+  r.frame = render_ref_frame(scene, s, sample_positions);
   r.ms = sw.ms();
   r.status = "ok";
   return r;
 }
 
-BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
+BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& flags) {
   BackendRun r;
 #ifdef VCT_HAVE_GL
   try {
     Stopwatch sw;
-    r.frame = gl::render_gl_frame(scene, s);
+    r.frame = gl::render_gl_frame(scene, s, {flags.device, flags.fault});
     r.ms = sw.ms();
     r.status = "ok";
   } catch (const EnvironmentError& e) {
@@ -61,7 +61,7 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
     r.status = std::string("error: ") + e.what();
   }
 #else
-  (void)scene, (void)s;
+  (void)scene, (void)s, (void)flags;
   r.status = "unavailable: built without the GL backend (VCT_BUILD_GL=OFF)";
 #endif
   return r;
@@ -70,9 +70,14 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s) {
 Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
   Settings out = s;
   if (!gl.ok()) return out;
-  const auto it = gl.frame->info.find("msaa_samples");
-  if (it != gl.frame->info.end()) out.vct.msaa_samples = std::stoi(it->second);
+  // Counts the settings cannot name (2, 16, 32 on some drivers) are carried by the positions.
+  const int n = gl.frame->facts.msaa_samples;
+  if (n == 1 || n == 4 || n == 8) out.vct.msaa_samples = n;
   return out;
+}
+
+std::vector<vec2> sample_positions_of(const BackendRun& gl) {
+  return gl.ok() ? gl.frame->facts.sample_positions : std::vector<vec2>{};
 }
 
 PtRun run_pt_backend(const Scene& scene, const Settings& s, bool progress) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/settings.h"
+#include "options.h"
 #include "scene/scene.h"
 #include "stages/stage_types.h"
 
@@ -32,12 +33,17 @@ struct PtRun {
   bool ok() const { return !aovs.empty(); }
 };
 
-BackendRun run_ref_backend(const Scene& scene, const Settings& s);
-BackendRun run_gl_backend(const Scene& scene, const Settings& s);
+/// `sample_positions`: the GPU-rule voxelizer's samples (the driver's, sample_positions_of);
+/// empty = the standard pattern of s.vct.msaa_samples.
+BackendRun run_ref_backend(const Scene& scene, const Settings& s, const std::vector<vec2>& sample_positions = {});
+BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& flags = {});
 /// The settings the GL run actually used: a driver may clamp the MSAA sample count (llvmpipe
 /// allows 4), and the CPU reference must then emulate the same coverage rule, or every voxel
 /// stage differs for a reason that is not a GPU bug. Unchanged when GL did not run.
 Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl);
+/// The MSAA sample positions the GL run's driver reported (BackendFacts), for the reference's
+/// GPU-rule voxelizer; empty when GL did not run.
+std::vector<vec2> sample_positions_of(const BackendRun& gl);
 /// `progress`: draw the path tracer's pass bar on stderr (ref/pt/progress.h; only on a terminal).
 PtRun run_pt_backend(const Scene& scene, const Settings& s, bool progress = false);
 

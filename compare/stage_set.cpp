@@ -34,11 +34,9 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   set.reduction = reduction_name(s.reduction);
   set.settings = s;
   for (const auto& [k, v] : f.info) set.info[k] = v;
-  // A backend may substitute a reduction (GL has no exact float mean: it says so in info).
-  auto red = f.info.find("reduction");
-  if (red != f.info.end())
-    for (const char* r : {"fixed_point", "cas_rgba8", "exact_mean"})
-      if (red->second.rfind(r, 0) == 0) set.reduction = r;
+  set.facts = f.facts;
+  // A backend may substitute a reduction (GL has no exact float mean: its facts say so).
+  if (!f.facts.reduction.empty()) set.reduction = f.facts.reduction;
   for (const StageRow& row : stage_rows())
     for (int i : frame_members(f, row)) {
       if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = *frame_image(f, row, i);
@@ -88,6 +86,7 @@ void write_stage_set(const std::string& dir, StageSet& set) {
   nlohmann::json m = {{"format", "vct-stages"}, {"version", 1},          {"backend", set.backend},
                       {"storage", set.storage}, {"reduction", set.reduction}, {"settings", set.settings},
                       {"info", set.info},       {"stages", stages}};
+  if (!set.facts.empty()) m["facts"] = set.facts;
   write_text_atomically(rd.file("vct-stages.json"), m.dump(2) + "\n");
 }
 
@@ -130,6 +129,7 @@ StageSet read_stage_set_unguarded(const std::string& path) {
   if (!kReductions.count(set.reduction)) throw InputError(manifest.string(), "unknown reduction '" + set.reduction + "'");
   if (m.contains("settings")) set.settings = m["settings"];
   if (m.contains("info")) set.info = m["info"];
+  if (m.contains("facts")) set.facts = m["facts"].get<BackendFacts>();
   for (const auto& [name, entry] : m["stages"].items()) {
     if (!entry.is_object() || !entry.contains("file") || !entry["file"].is_string())
       throw InputError(manifest.string(), "stage '" + name + "' needs a \"file\" string");

@@ -24,7 +24,8 @@ struct StageSet {
   // storage "rgba8" | "rgba16f" | "rgba32f"; reduction "exact_mean" | "fixed_point" | "cas_rgba8".
   std::string storage = "rgba32f", reduction = "exact_mean";
   nlohmann::json settings = nlohmann::json::object();  // free-form, copied from the manifest
-  nlohmann::json info = nlohmann::json::object();      // e.g. GL_RENDERER
+  nlohmann::json info = nlohmann::json::object();      // free-form notes
+  BackendFacts facts;  // typed: what ran, the driver's facts (manifest "facts", backend_facts.h)
   std::string root;  // directory the files live in (empty when built in memory)
   std::map<std::string, std::string> files;  // stage -> file relative to root (PNG preview beside)
 

@@ -76,6 +76,7 @@ void fill_everything(const StageSet& set, FrameResult& f) {
     else f.info[k] = v.is_string() ? v.get<std::string>() : v.dump();
   }
   f.backend = set.backend;
+  f.facts = set.facts;
   f.voxels.n = f.voxels.radiance.nx;
 }
 

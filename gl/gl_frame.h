@@ -15,13 +15,17 @@
 namespace vct::gl {
 
 struct GlFrame {
-  GlFrame(const Scene& sc, const VctSettings& st, FrameResult& r) : scene(sc), s(st), geo(sc), out(r) {}
+  GlFrame(const Scene& sc, const VctSettings& st, FrameResult& r, const std::string& fault_name)
+      : scene(sc), s(st), geo(sc), out(r), fault(fault_name), programs(fault_name) {}
 
   const Scene& scene;
   VctSettings s;
   GlScene geo;
   FrameResult& out;
   GpuTimers timers;
+  std::string fault;        // "" or a kGlFaults name (gl_faults.h)
+  ProgramBuilder programs;  // every program of the frame: carries the fault's #define
+  bool has_fault(const char* name) const { return fault == name; }
   int samples = 1;  // MSAA samples actually used for voxelization
 
   std::vector<mat4> light_view_proj;

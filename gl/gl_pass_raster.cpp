@@ -14,7 +14,7 @@ void shadow_pass(GlFrame& f) {
   f.shadow_maps = make_texture_2d_array(GL_DEPTH_COMPONENT32F, size, size, std::max(lights, 1));
   for (int i = 0; i < lights; ++i) f.light_view_proj.push_back(light_view_proj(f.scene, f.scene.spot_lights[size_t(i)]));
   f.light_view_proj.resize(size_t(kMaxLights), mat4(1.0f));
-  const Program prog = Program::from_files({"scene.vert", "depth_only.frag"});
+  const Program prog = f.programs.build({"scene.vert", "depth_only.frag"});
   ScopedTimer timer(f.timers, "shadow_maps");
   GLuint fbo = 0;
   glCreateFramebuffers(1, &fbo);
@@ -48,8 +48,8 @@ void gbuffer_pass(GlFrame& f) {
   }
   glNamedFramebufferTexture(f.gbuffer_fbo, GL_DEPTH_ATTACHMENT, f.gbuffer_depth, 0);
   const mat4 view_proj = f.scene.camera.projection(float(w) / float(h)) * f.scene.camera.view();
-  const Program depth_prog = Program::from_files({"scene.vert", "depth_only.frag"});
-  const Program gbuf_prog = Program::from_files({"scene.vert", "gbuffer.frag"});
+  const Program depth_prog = f.programs.build({"scene.vert", "depth_only.frag"});
+  const Program gbuf_prog = f.programs.build({"scene.vert", "gbuffer.frag"});
   glBindFramebuffer(GL_FRAMEBUFFER, f.gbuffer_fbo);
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);

@@ -47,7 +47,7 @@ void fullscreen(const GlFrame& f) {
 void direct_pass(GlFrame& f) {
   f.direct = make_texture_2d(GL_RGBA32F, f.s.width, f.s.height);
   f.soft_shadow = make_texture_2d(GL_RGBA32F, f.s.width, f.s.height);
-  const Program prog = Program::from_files({"fullscreen.vert", "direct.frag"});
+  const Program prog = f.programs.build({"fullscreen.vert", "direct.frag"});
   ScopedTimer timer(f.timers, "direct");
   framebuffer({f.direct, f.soft_shadow}, 0);
   prog.use();
@@ -63,7 +63,7 @@ void direct_pass(GlFrame& f) {
 
 void indirect_pass(GlFrame& f) {
   for (GLuint& t : f.shading) t = make_texture_2d(GL_RGBA32F, f.s.width, f.s.height);
-  const Program prog = Program::from_files({"fullscreen.vert", "indirect.frag"});
+  const Program prog = f.programs.build({"fullscreen.vert", "indirect.frag"});
   ScopedTimer timer(f.timers, "indirect_cones");
   framebuffer(std::vector<GLuint>(f.shading.begin(), f.shading.end()), 0);
   prog.use();
@@ -82,7 +82,7 @@ void indirect_pass(GlFrame& f) {
 void particle_pass(GlFrame& f) {
   f.particles = make_texture_2d(GL_RGBA32F, f.s.width, f.s.height);
   if (!f.s.particles || f.scene.emitters.empty()) return;
-  const Program prog = Program::from_files({"particles.vert", "particles.frag"});
+  const Program prog = f.programs.build({"particles.vert", "particles.frag"});
   ScopedTimer timer(f.timers, "particles");
   // Depth-tested against the opaque surfaces, never writing depth, blended additively.
   framebuffer({f.particles, f.shading[4]}, f.gbuffer_depth, false);  // keep the final image: add onto it

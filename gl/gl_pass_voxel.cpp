@@ -52,7 +52,7 @@ void inject_particles(GlFrame& f) {
   for (GLuint& t : f.particle_sums) clear_uint(t);
   if (!f.s.particles || f.scene.emitters.empty()) return;
   ScopedTimer timer(f.timers, "particles_voxels");
-  const Program prog = Program::from_files({"particles_voxel.comp"});
+  const Program prog = f.programs.build({"particles_voxel.comp"});
   prog.use();
   set_volume(f, prog);
   prog.set("u_time", f.s.time);
@@ -94,13 +94,15 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
   if (bounce > 0) bind_voxels(f, prog, prev_radiance, prev_aniso);
   for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_WRITE, GL_R32UI);
   f.geo.draw(prog);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // The resolve reads what the fragment shader's atomics wrote: GL 4.5 §7.12.2 orders the two
+  // only through this barrier (the missing_barrier fault leaves it out).
+  if (!f.has_fault("missing_barrier")) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   check_gl("voxelization");
 }
 
 void resolve(GlFrame& f, GLuint target) {
   ScopedTimer timer(f.timers, "resolve");
-  const Program prog = Program::from_files({"voxel_resolve.comp"});
+  const Program prog = f.programs.build({"voxel_resolve.comp"});
   prog.use();
   prog.set("u_grid", f.s.grid);
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
@@ -115,7 +117,7 @@ void resolve(GlFrame& f, GLuint target) {
 
 void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso) {
   ScopedTimer timer(f.timers, "mips");
-  const Program iso = Program::from_files({"mip_iso.comp"});
+  const Program iso = f.programs.build({"mip_iso.comp"});
   iso.use();
   iso.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
   glBindTextureUnit(0, radiance);
@@ -127,7 +129,7 @@ void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso)
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
   if (f.s.anisotropic) {
-    const Program an = Program::from_files({"mip_aniso.comp"});
+    const Program an = f.programs.build({"mip_aniso.comp"});
     an.use();
     an.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
     for (int d = 0; d < 6; ++d) {
@@ -193,7 +195,7 @@ void voxel_passes(GlFrame& f) {
     if (f.s.anisotropic)
       for (GLuint& t : aniso[size_t(i)]) t = make_texture_3d(f.voxel_format, n / 2, f.levels - 1);
   }
-  const Program prog = Program::from_files({"voxelize.vert", "voxelize.geom", "voxelize.frag"});
+  const Program prog = f.programs.build({"voxelize.vert", "voxelize.geom", "voxelize.frag"});
   inject_particles(f);
   const int frames = std::max(f.s.bounces, 1);
   size_t cur = 0;

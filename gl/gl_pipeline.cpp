@@ -6,6 +6,8 @@
 
 #include "core/error.h"
 #include "gl_context.h"
+#include "gl_facts.h"
+#include "gl_faults.h"
 #include "gl_frame.h"
 #include "gl_program.h"
 #include "stages/shadow_map.h"
@@ -17,27 +19,42 @@ mat4 light_view_proj(const Scene& scene, const SpotLight& light) {
   return spot_light_view_proj(light, scene.bounds);
 }
 
-FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings) {
+namespace {
+
+bool is_cpu_rasterizer(const std::string& renderer) {
+  return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+}
+
+// The facts of this frame: the driver's (gl_facts.h) plus what the GL path substitutes.
+BackendFacts frame_facts(const GlContext& context, const VctSettings& s, const std::string& fault) {
+  BackendFacts facts = read_driver_facts(context, s.msaa_samples);
+  facts.gl_fault = fault;
+  if (s.reduction == Reduction::ExactMean) {
+    facts.reduction = "fixed_point";
+    facts.reduction_note = "GL has no exact mean; the fixed-point sum is its deterministic twin";
+  }
+  return facts;
+}
+
+}  // namespace
+
+FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings, const GlOptions& options) {
   if (scene.spot_lights.size() > size_t(kMaxLights))
     throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " spot lights, the scene has " +
                                        std::to_string(scene.spot_lights.size()));
-  const ScopedShaderFault fault(settings.vct.gl_fault);  // "" = the correct shaders
+  check_gl_fault(options.fault, "--gl-fault");
   FrameResult result;
   result.backend = "gl";
-  if (!settings.vct.gl_fault.empty()) result.info["gl_fault"] = settings.vct.gl_fault;
-  result.info["GL_RENDERER"] = context.renderer();
-  result.info["GL_VERSION"] = context.version();
-  GlFrame f(scene, settings.vct, result);
-  f.samples = std::min(std::max(settings.vct.msaa_samples, 1), context.max_framebuffer_samples());
-  result.info["msaa_samples"] = std::to_string(f.samples);
+  result.facts = frame_facts(context, settings.vct, options.fault);
+  GlFrame f(scene, settings.vct, result, options.fault);
+  f.samples = result.facts.msaa_samples;
+  f.timers.set_finish_each_stage(is_cpu_rasterizer(context.renderer()));
   if (f.samples != settings.vct.msaa_samples)
     result.info["msaa_note"] = "requested " + std::to_string(settings.vct.msaa_samples) +
                                " samples; the driver's GL_MAX_FRAMEBUFFER_SAMPLES is " +
                                std::to_string(context.max_framebuffer_samples());
   if (settings.vct.voxelizer == Voxelizer::Conservative)
     result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; GL has no conservative rasterization on this path)";
-  if (settings.vct.reduction == Reduction::ExactMean)
-    result.info["reduction"] = "fixed_point (GL has no exact mean; the fixed-point sum is its deterministic twin)";
   glCreateVertexArrays(1, &f.empty_vao);
   upload_diffuse_cone_block(f);
   shadow_pass(f);
@@ -55,9 +72,10 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
   return result;
 }
 
-FrameResult render_gl_frame(const Scene& scene, const Settings& settings) {
-  GlContext context;
-  return render_gl_frame(context, scene, settings);
+FrameResult render_gl_frame(const Scene& scene, const Settings& settings, const GlOptions& options) {
+  check_gl_fault(options.fault, "--gl-fault");
+  GlContext context(options.device);
+  return render_gl_frame(context, scene, settings, options);
 }
 
 }  // namespace vct::gl

@@ -1,8 +1,10 @@
 // The GL 4.5 VCT frame: every stage as a GPU pass, every result read back into the reference's
-// stage types (ref/stages/stage_types.h), GPU timer-query times in FrameResult::timings_ms and
-// GL_RENDERER / GL_VERSION in FrameResult::info. Throws vct::EnvironmentError without a context,
-// std::runtime_error on shader or GL errors (naming the shader / the call site).
+// stage types (ref/stages/stage_types.h), GPU timer-query times in FrameResult::timings_ms and the
+// driver's facts in FrameResult::facts (gl_facts.h). Throws vct::EnvironmentError without a
+// context, std::runtime_error on shader or GL errors (naming the shader / the call site).
 #pragma once
+
+#include <string>
 
 #include "core/settings.h"
 #include "scene/scene.h"
@@ -12,10 +14,18 @@ namespace vct::gl {
 
 class GlContext;
 
-/// Creates a context for this frame (and destroys it afterwards).
-FrameResult render_gl_frame(const Scene& scene, const Settings& settings);
+/// How the GL frame runs, apart from the VCT settings both backends share.
+struct GlOptions {
+  std::string device;  // --gl-device (gl_device.h: "" = first hardware device, else surfaceless)
+  std::string fault;   // "" or a deliberate fault of gl_faults.h
+};
 
-/// Same, on a context the caller keeps current (tests and benchmarks render several frames).
-FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings);
+/// Creates a context on options.device for this frame (and destroys it afterwards).
+FrameResult render_gl_frame(const Scene& scene, const Settings& settings, const GlOptions& options = {});
+
+/// Same, on a context the caller keeps current (tests and benchmarks render several frames);
+/// options.device is not used.
+FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings,
+                            const GlOptions& options = {});
 
 }  // namespace vct::gl

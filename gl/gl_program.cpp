@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gl_context.h"
+#include "gl_faults.h"
 
 namespace vct::gl {
 namespace {
@@ -77,26 +78,28 @@ std::string program_log(GLuint program) {
   return log.c_str();
 }
 
-// One GL context per thread renders one frame at a time, so the switch is per thread.
-thread_local std::string g_fault_define;
-
 }  // namespace
 
-void set_shader_fault(const std::string& name) {
-  std::string upper = name;
+ProgramBuilder::ProgramBuilder(const std::string& fault) {
+  check_gl_fault(fault, "GL fault");
+  const GlFault* f = find_gl_fault(fault);
+  if (!f || f->host) return;
+  std::string upper = f->name;
   for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
-  g_fault_define = name.empty() ? "" : "#define VCT_FAULT_" + upper + " 1\n";
+  defines_ = "#define VCT_FAULT_" + upper + " 1\n";
 }
 
-std::string assemble_shader(const std::string& file) {
+std::string assemble_shader(const std::string& file, const std::string& defines) {
   std::vector<std::string> seen{file};
   // "#line 1 1" makes the driver's line numbers count from the top of the shader file itself
   // (source string 1), after the shared header (source string 0).
-  return "#version 450\n#define VCT_GLSL 1\n" + g_fault_define + "#line 1 0\n" + embedded("vct_shared.h") + "\n#line 1 1\n" +
+  return "#version 450\n#define VCT_GLSL 1\n" + defines + "#line 1 0\n" + embedded("vct_shared.h") + "\n#line 1 1\n" +
          expand_includes(file, embedded(file), seen, 0);
 }
 
-ShaderSource shader_file(const std::string& file) { return {stage_of(file), file, assemble_shader(file)}; }
+ShaderSource shader_file(const std::string& file, const std::string& defines) {
+  return {stage_of(file), file, assemble_shader(file, defines)};
+}
 
 Program::Program(const std::vector<ShaderSource>& stages) {
   id_ = glCreateProgram();
@@ -130,9 +133,9 @@ Program::Program(const std::vector<ShaderSource>& stages) {
   check_gl("program build");
 }
 
-Program Program::from_files(const std::vector<std::string>& files) {
+Program Program::from_files(const std::vector<std::string>& files, const std::string& defines) {
   std::vector<ShaderSource> stages;
-  for (const auto& f : files) stages.push_back(shader_file(f));
+  for (const auto& f : files) stages.push_back(shader_file(f, defines));
   return Program(stages);
 }
 

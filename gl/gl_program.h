@@ -22,29 +22,19 @@ struct ShaderSource {
   std::string source;
 };
 
-/// Debug fault switch (VctSettings::gl_fault): while set to a non-empty name, every assembled
-/// shader starts with `#define VCT_FAULT_<NAME> 1` (upper case), which turns on that shader's
-/// deliberate bug. render_gl_frame sets it for the frame (ScopedShaderFault) and clears it after.
-void set_shader_fault(const std::string& name);
-struct ScopedShaderFault {
-  explicit ScopedShaderFault(const std::string& name) { set_shader_fault(name); }
-  ~ScopedShaderFault() { set_shader_fault(""); }
-  ScopedShaderFault(const ScopedShaderFault&) = delete;
-  ScopedShaderFault& operator=(const ScopedShaderFault&) = delete;
-};
-
-/// The complete source of an embedded shader file (prelude + shared header + includes).
-std::string assemble_shader(const std::string& file);
+/// The complete source of an embedded shader file (prelude + `defines` + shared header +
+/// includes). `defines` is whole lines, e.g. "#define VCT_FAULT_WRONG_MIP 1\n".
+std::string assemble_shader(const std::string& file, const std::string& defines = "");
 
 /// Source for `file`, with its stage guessed from the extension (.vert/.geom/.frag/.comp).
-ShaderSource shader_file(const std::string& file);
+ShaderSource shader_file(const std::string& file, const std::string& defines = "");
 
 class Program {
  public:
   Program() = default;
   explicit Program(const std::vector<ShaderSource>& stages);
   /// Convenience: embedded files by name, e.g. {"fullscreen.vert", "direct.frag"}.
-  static Program from_files(const std::vector<std::string>& files);
+  static Program from_files(const std::vector<std::string>& files, const std::string& defines = "");
 
   GLuint id() const { return id_; }
   void use() const;
@@ -62,6 +52,20 @@ class Program {
 
  private:
   GLuint id_ = 0;  // owned by the context (all objects die with it)
+};
+
+/// Builds every program of one frame with the same prelude defines: the frame's deliberate fault
+/// (gl_faults.h) reaches its shaders here, and only here.
+class ProgramBuilder {
+ public:
+  ProgramBuilder() = default;
+  /// `fault`: "" or a name of kGlFaults; a shader fault becomes `#define VCT_FAULT_<NAME> 1`.
+  explicit ProgramBuilder(const std::string& fault);
+  Program build(const std::vector<std::string>& files) const { return Program::from_files(files, defines_); }
+  const std::string& defines() const { return defines_; }
+
+ private:
+  std::string defines_;
 };
 
 }  // namespace vct::gl

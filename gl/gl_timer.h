@@ -12,6 +12,10 @@ namespace vct::gl {
 
 class GpuTimers {
  public:
+  /// `finish_each_stage`: glFinish before each stage's closing timestamp (needed by binning CPU
+  /// rasterizers such as llvmpipe, see gl_timer.cpp; on a GPU it would hide missing barriers).
+  explicit GpuTimers(bool finish_each_stage = true) : finish_(finish_each_stage) {}
+  void set_finish_each_stage(bool finish) { finish_ = finish; }
   void begin(const std::string& stage);
   void end();
   /// Waits for every query; stage name -> milliseconds (repeated stages are summed).
@@ -24,6 +28,7 @@ class GpuTimers {
   };
   std::vector<Query> queries_;
   bool open_ = false;
+  bool finish_ = true;
 };
 
 /// begin() in the constructor, end() in the destructor.

@@ -60,9 +60,10 @@ def summary(p):
     scene = j.get("scene", {})
     env = j.get("environment", {})
     backends = j.get("backends", {})
-    gl_info = backends.get("gl", {}).get("info", {})
+    # The GL side's typed facts (run.json backends.gl.facts, or a stage set's manifest "facts").
+    gl_facts = backends.get("gl", {}).get("facts", {})
     for side, m in p.run.sets.items():
-        gl_info = gl_info or (m.get("info") if side != "ref" else {})
+        gl_facts = gl_facts or (m.get("facts", {}) if side != "ref" else {})
     rows = []
     for name in ("ref", "gl", "pt"):
         b = backends.get(name)
@@ -85,7 +86,10 @@ def summary(p):
     out.append("<tr><th>machine</th><td>%s, %s cores, %s threads; %s; %s</td></tr>" % (
         E(str(env.get("cpu", "?"))), fmt(env.get("cores")), fmt(env.get("threads")), E(str(env.get("os", "?"))),
         E(str(env.get("compiler", "?")))))
-    out.append("<tr><th>GL renderer</th><td>%s</td></tr>" % E(str(gl_info.get("GL_RENDERER", "not available in this run"))))
+    renderer = gl_facts.get("renderer") or "not available in this run"
+    if gl_facts.get("device"):
+        renderer += " (%s)" % gl_facts["device"]
+    out.append("<tr><th>GL renderer</th><td>%s</td></tr>" % E(str(renderer)))
     out.append("</table><table><tr><th>backend</th><th>status</th><th>time</th></tr>%s</table>" % "".join(rows))
     out.append("<details><summary>all settings (run.json)</summary><pre class='settings'>%s</pre></details>" % E(json.dumps(s, indent=1)))
     out.append(verdict_table(p))

@@ -60,7 +60,6 @@ void to_json(nlohmann::json& j, const VctSettings& s) { j = table_to_json(vct_se
 void from_json(const nlohmann::json& j, VctSettings& s) {
   Reader r(j, "vct.");
   r.table(vct_setting_fields(), s);
-  if (!is_known_gl_fault(s.gl_fault)) throw InputError("", "vct.gl_fault: unknown fault \"" + s.gl_fault + "\"");
   r.finish();
 }
 
@@ -103,13 +102,6 @@ Settings load_settings_file(const std::string& path, const Settings& base) {
   }
 }
 
-bool is_known_gl_fault(const std::string& name) {
-  if (name.empty()) return true;
-  for (const char* f : kGlFaults)
-    if (name == f) return true;
-  return false;
-}
-
 namespace {
 void require(bool ok, const std::string& what) {
   if (!ok) throw InputError("", what);
@@ -119,7 +111,6 @@ void require(bool ok, const std::string& what) {
 void validate_settings(const Settings& s) {
   for (const auto& f : vct_setting_fields()) check_setting_range(f, s.vct, "");
   for (const auto& f : pt_setting_fields()) check_setting_range(f, s.pt, "path tracer ");
-  require(is_known_gl_fault(s.vct.gl_fault), "gl_fault: unknown fault \"" + s.vct.gl_fault + "\"");
   require(s.threads >= 0 && s.threads <= 1024, "threads must be in 0..1024");
   check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }

@@ -62,15 +62,9 @@ struct VctSettings {
   // Occlusion culling (GL only; the image must not change).
   bool depth_prepass = true;
 
-  // Debug: a deliberate bug compiled into the GL shaders ("" = none; names in kGlFaults).
-  // Exists so tests can prove `vct compare`/`validate` blame the right stage (docs/compare.md).
-  std::string gl_fault;
+  // (Deliberate GL faults for testing the oracle are not a VCT setting: gl/gl_faults.h,
+  // `--gl-fault NAME`.)
 };
-
-/// The known gl_fault names (each is `#define VCT_FAULT_<UPPER NAME>` in the GL shaders).
-inline constexpr const char* kGlFaults[] = {"half_texel", "wrong_axis", "racy_average", "lost_update",
-                                            "wrong_mip",  "cone_step",  "alpha_unclamped"};
-bool is_known_gl_fault(const std::string& name);  // true for "" and the names above
 
 struct PtSettings {
   int width = 512;

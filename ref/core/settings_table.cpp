@@ -179,7 +179,6 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("frame", &V::frame, any(), "frame index of the random cone rotation hash"),
     field("particles", &V::particles, any(), "render and voxelize the fire particles"),
     field("depth_prepass", &V::depth_prepass, any(), "GL depth pre-pass (occlusion culling; the image must not change)"),
-    field("gl_fault", &V::gl_fault, any(), "a deliberate GL bug for tests (docs/gl_backend.md, fault switch)"),
   };
   // clang-format on
   return fields;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/image.h"
+#include "io/srgb.h"
 
 namespace vct {
 
@@ -21,9 +22,5 @@ void write_png_linear(const std::string& path, const Image& img, float lo, float
 
 /// Reads any image OpenImageIO can read into float channels; throws InputError on failure.
 Image read_image(const std::string& path);
-
-/// sRGB transfer functions (IEC 61966-2-1), shared by textures and previews.
-float srgb_to_linear(float c);
-float linear_to_srgb(float c);
 
 }  // namespace vct

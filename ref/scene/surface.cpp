@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "io/image_io.h"
+#include "io/srgb.h"
 
 namespace vct {
 

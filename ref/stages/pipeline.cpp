@@ -11,6 +11,7 @@
 #include "stages/indirect_pass.h"
 #include "stages/multibounce.h"
 #include "stages/particles.h"
+#include "stages/raster.h"
 #include "stages/shadow_map.h"
 #include "stages/soft_shadow.h"
 #include "stages/voxelize.h"
@@ -25,13 +26,14 @@ void timed(FrameResult& r, const std::string& name, const std::function<void()>&
   r.timings_ms[name] += sw.ms();
 }
 
-Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, FrameResult& r) {
+Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, const std::vector<vec2>& positions,
+                            FrameResult& r) {
   Voxelization conservative;
   timed(r, "voxelize", [&] { conservative = voxelize_conservative(scene, s.grid); });
   r.conservative_occupancy = conservative.occupancy;
   if (s.voxelizer == Voxelizer::Conservative) return conservative;
   Voxelization gpu;
-  timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, s.msaa_samples); });
+  timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, positions); });
   timed(r, "holes", [&] { r.holes = hole_map(conservative, gpu); });
   return gpu;
 }
@@ -51,13 +53,21 @@ void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r)
 }
 
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {
+  return render_ref_frame(scene, settings, {});
+}
+
+FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const std::vector<vec2>& sample_positions) {
   const VctSettings& s = settings.vct;
   FrameResult r;
   r.backend = "ref";
+  // What the GPU-rule emulation sampled at (recorded even when the conservative voxelizer ran).
+  r.facts.msaa_samples = sample_positions.empty() ? s.msaa_samples : int(sample_positions.size());
+  r.facts.msaa_samples_requested = s.msaa_samples;
+  r.facts.sample_positions = sample_positions.empty() ? standard_sample_positions(s.msaa_samples) : sample_positions;
   const Stopwatch total;
   timed(r, "shadow_maps", [&] { r.shadow_maps = render_shadow_maps(scene, s); });
   timed(r, "gbuffer", [&] { r.gbuffer = render_gbuffer(scene, s); });
-  const Voxelization vox = run_voxelizers(scene, s, r);
+  const Voxelization vox = run_voxelizers(scene, s, r.facts.sample_positions, r);
   {
     // Earlier frames are kept for the dumps while they stay under 256 MiB (the memory estimate
     // counts them by the same rule).

@@ -19,4 +19,9 @@ void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r)
 /// byte-identical for any thread count.
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings);
 
+/// Same, with the GPU-rule voxelizer sampling at `sample_positions` (a driver's
+/// GL_SAMPLE_POSITION list, BackendFacts::sample_positions) instead of the standard pattern of
+/// settings.vct.msaa_samples; empty = the standard pattern.
+FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const std::vector<vec2>& sample_positions);
+
 }  // namespace vct

@@ -13,6 +13,7 @@
 #include "core/image.h"
 #include "core/math.h"
 #include "core/volume.h"
+#include "stages/backend_facts.h"
 
 namespace vct {
 
@@ -92,7 +93,8 @@ struct FrameResult {
   // see pipeline.cpp), for the dumps.
   std::vector<Volume> multibounce_frames;
   std::map<std::string, double> timings_ms;  // stage name -> milliseconds
-  std::map<std::string, std::string> info;   // e.g. GL_RENDERER, counts
+  BackendFacts facts;  // what ran and the driver's facts (typed; backend_facts.h)
+  std::map<std::string, std::string> info;   // free-form notes only (counts, ...): nothing parses them
 };
 
 }  // namespace vct

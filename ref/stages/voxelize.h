@@ -45,6 +45,9 @@ Voxelization voxelize_conservative(const Scene& scene, int n);
 /// The GPU rule with 1, 4 or 8 samples; one fragment per covered pixel (any sample), evaluated at
 /// the pixel centre as GL evaluates non-centroid inputs (extrapolated barycentrics allowed).
 Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples);
+/// Same with the sample positions a driver reported (BackendFacts::sample_positions: pixel units,
+/// lower-left origin, y up) instead of the standard pattern: 1 to 32 positions.
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& sample_positions);
 
 /// The voxelizer settings.voxelizer selects, at settings.grid.
 Voxelization voxelize(const Scene& scene, const VctSettings& settings);

@@ -4,6 +4,7 @@
 // the pixel centre) into the voxel along the axis with floor(), clamped to the grid.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/parallel.h"
 #include "scene/surface.h"
@@ -19,7 +20,12 @@ constexpr int kProjV[3] = {2, 2, 1};
 }  // namespace
 
 Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
-  const std::vector<vec2>& samples = standard_sample_positions(msaa_samples);
+  return voxelize_gpu_rule(scene, n, standard_sample_positions(msaa_samples));
+}
+
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& samples) {
+  if (samples.empty() || samples.size() > 32)
+    throw std::invalid_argument("voxelize_gpu_rule: 1 to 32 sample positions (one coverage bit each)");
   std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
   parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
     const uvec3 t = scene.triangles[size_t(ti)];

@@ -38,6 +38,45 @@ TEST(StageSetIo, RoundTripIsExactAndComparesAsPass) {
   fs::remove_all(dir);
 }
 
+// The manifest carries the backend's typed facts ("facts") and a reduction the backend
+// substituted comes from them, not from prose in "info".
+TEST(StageSetIo, FactsRoundTripTypedAndSetTheReduction) {
+  FrameResult f;
+  f.backend = "gl";
+  f.facts.renderer = "llvmpipe";
+  f.facts.msaa_samples = 4;
+  f.facts.sample_positions = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+  f.facts.reduction = "fixed_point";
+  f.facts.unreported = {"texture filtering sub-texel precision: no query"};
+  f.info["note"] = "free-form";
+  f.images.final_image = Image(2, 2, 3);
+  VctSettings vs;
+  vs.reduction = Reduction::ExactMean;
+  StageSet s = stage_set_from_frame(f, vs);
+  EXPECT_EQ(s.reduction, "fixed_point");
+  const std::string dir = (fs::temp_directory_path() / ("vct_stage_set_facts_" + std::to_string(::getpid()))).string();
+  write_stage_set(dir, s);
+  const StageSet r = read_stage_set(dir);
+  EXPECT_EQ(r.facts.renderer, "llvmpipe");
+  EXPECT_EQ(r.facts.sample_positions, f.facts.sample_positions);
+  EXPECT_EQ(r.facts.unreported, f.facts.unreported);
+  EXPECT_EQ(r.reduction, "fixed_point");
+  EXPECT_EQ(r.info["note"], "free-form");
+  // A facts object of the wrong shape is bad input naming the manifest.
+  nlohmann::json m;
+  {
+    std::ifstream in(dir + "/vct-stages.json");
+    m = nlohmann::json::parse(in);
+  }
+  m["facts"]["sample_positions"] = "everywhere";
+  {
+    std::ofstream out(dir + "/vct-stages.json");
+    out << m.dump();
+  }
+  EXPECT_THROW(read_stage_set(dir), InputError);
+  fs::remove_all(dir);
+}
+
 TEST(StageSetIo, BadManifestsAreInputErrors) {
   const fs::path dir = fs::temp_directory_path() / ("vct_bad_manifest_" + std::to_string(::getpid()));
   fs::create_directories(dir);

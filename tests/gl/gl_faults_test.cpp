@@ -1,5 +1,5 @@
-// Real faults in the GL build (VctSettings::gl_fault compiles a deliberate bug into the shaders,
-// docs/compare.md "Faults"): for each, the stage comparison against the CPU reference must fail
+// Real faults in the GL build (gl/gl_faults.h: GlOptions::fault compiles a deliberate bug into the
+// shaders through the program builder, or leaves out a barrier; docs/compare.md "Faults"): for each, the stage comparison against the CPU reference must fail
 // the stage where the bug lives first, as `vct validate` judges it (cone stages judged on the GL
 // frame's own inputs). A correct run must fail no stage. Cornell box, 32^3, 64^2, 4x MSAA.
 #include <cstdio>
@@ -8,18 +8,26 @@
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
+#include "core/error.h"
+#include "gl/gl_faults.h"
+#include "gl/gl_program.h"
 #include "gl_test_util.h"
 #include "stages/pipeline.h"
 
 namespace vct::gl::test {
 namespace {
 
-Settings fault_settings(const std::string& fault, Reduction reduction, bool anisotropic) {
+// One faulty GL frame: the shared settings and the fault (GL-only, not a VCT setting).
+struct FaultRun {
+  Settings s;
+  std::string fault;
+};
+
+FaultRun fault_settings(const std::string& fault, Reduction reduction, bool anisotropic) {
   Settings s = small_settings();
   s.vct.reduction = reduction;
   s.vct.anisotropic = anisotropic;
-  s.vct.gl_fault = fault;
-  return s;
+  return {s, fault};
 }
 
 // The CPU reference for one settings combination (it ignores gl_fault), cached: several faults
@@ -40,13 +48,14 @@ std::string failing_stages(const cmp::Report& rep) {
 }
 
 // The report `vct validate` would print for the GL frame with the fault switched on.
-cmp::Report judge(GlContext& ctx, const Settings& s) {
-  const FrameResult gl = render_gl_frame(ctx, cornell_box(), s);
+cmp::Report judge(GlContext& ctx, const FaultRun& run) {
+  const Settings& s = run.s;
+  const FrameResult gl = render_gl_frame(ctx, cornell_box(), s, {"", run.fault});
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(reference(s), s.vct), gl_set);
   const FrameResult ref_on_gl = cmp::reference_on_test_inputs(cornell_box(), gl, s.vct);
   cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set));
-  std::printf("  gl_fault '%s' (%s%s): failing stages: %s\n", s.vct.gl_fault.c_str(), to_string(s.vct.reduction).c_str(),
+  std::printf("  gl_fault '%s' (%s%s): failing stages: %s\n", run.fault.c_str(), to_string(s.vct.reduction).c_str(),
               s.vct.anisotropic ? ", anisotropic" : "", failing_stages(rep).c_str());
   return rep;
 }
@@ -80,9 +89,9 @@ TEST(GlFaults, RacyAverageFailsRadianceWhereFragmentsRace) {
   VCT_REQUIRE_GL();
   int observed = 0;
   for (Reduction r : {Reduction::FixedPoint, Reduction::CasRgba8}) {
-    const Settings s = fault_settings("racy_average", r, false);
-    const FrameResult racy = render_gl_frame(*ctx, cornell_box(), s);
-    const FrameResult atomic = render_gl_frame(*ctx, cornell_box(), fault_settings("", r, false));
+    const FaultRun s = fault_settings("racy_average", r, false);
+    const FrameResult racy = render_gl_frame(*ctx, cornell_box(), s.s, {"", s.fault});
+    const FrameResult atomic = render_gl_frame(*ctx, cornell_box(), s.s);
     if (max_abs_diff(racy.voxels.radiance, atomic.voxels.radiance) == 0.0f) continue;  // no race ran
     ++observed;
     EXPECT_FIRST_FAILING(judge(*ctx, s), "voxel.radiance") << to_string(r);
@@ -100,6 +109,39 @@ TEST(GlFaults, LostUpdateFailsRadiance) {
     const cmp::Report rep = judge(*ctx, fault_settings("lost_update", r, false));
     EXPECT_FIRST_FAILING(rep, "voxel.radiance") << to_string(r);
   }
+}
+
+// Without the barrier between the voxelization draw and the resolve dispatch (GL 4.5 §7.12.2) a
+// GPU may resolve before the atomics land. llvmpipe finishes each pass before the next, so there
+// the frame is the correct one (the test says so and skips); on a GPU it asserts the stage.
+TEST(GlFaults, MissingBarrierFailsRadianceWhereThePassesOverlap) {
+  VCT_REQUIRE_GL();
+  const FaultRun run = fault_settings("missing_barrier", Reduction::FixedPoint, false);
+  const FrameResult faulty = render_gl_frame(*ctx, cornell_box(), run.s, {"", run.fault});
+  const FrameResult correct = render_gl_frame(*ctx, cornell_box(), run.s);
+  if (max_abs_diff(faulty.voxels.radiance, correct.voxels.radiance) == 0.0f)
+    GTEST_SKIP() << "missing_barrier is not observable on " << ctx->renderer()
+                 << ": the resolve saw every atomic (the driver serializes the passes)";
+  EXPECT_FIRST_FAILING(judge(*ctx, run), "voxel.radiance");
+}
+
+TEST(GlFaults, UnknownFaultIsBadInput) {
+  VCT_REQUIRE_GL();
+  EXPECT_THROW(render_gl_frame(*ctx, cornell_box(), small_settings(), {"", "wrong_mips"}), InputError);
+  EXPECT_EQ(find_gl_fault("wrong_mips"), nullptr);
+  ASSERT_NE(find_gl_fault("missing_barrier"), nullptr);
+  EXPECT_TRUE(find_gl_fault("missing_barrier")->host);
+  EXPECT_FALSE(find_gl_fault("wrong_mip")->host);
+}
+
+// The fault reaches the shaders only through the frame's program builder.
+TEST(GlFaults, ProgramBuilderCarriesTheShaderFault) {
+  EXPECT_EQ(ProgramBuilder("wrong_mip").defines(), "#define VCT_FAULT_WRONG_MIP 1\n");
+  EXPECT_EQ(ProgramBuilder("missing_barrier").defines(), "");  // a host fault: no #define
+  EXPECT_EQ(ProgramBuilder("").defines(), "");
+  EXPECT_NE(assemble_shader("mip_iso.comp", ProgramBuilder("wrong_mip").defines()).find("VCT_FAULT_WRONG_MIP"),
+            std::string::npos);
+  EXPECT_EQ(assemble_shader("mip_iso.comp").find("#define VCT_FAULT_"), std::string::npos);
 }
 
 TEST(GlFaults, WrongMipFailsAMipStage) {

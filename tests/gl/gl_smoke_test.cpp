@@ -8,8 +8,12 @@ TEST(GlFrame, RendersEveryStage) {
   VCT_REQUIRE_GL();
   const FrameResult r = render_gl_frame(*ctx, cornell_box(), small_settings());
   EXPECT_EQ(r.backend, "gl");
-  EXPECT_FALSE(r.info.at("GL_RENDERER").empty());
-  EXPECT_FALSE(r.info.at("GL_VERSION").empty());
+  EXPECT_EQ(r.facts.renderer, ctx->renderer());
+  EXPECT_FALSE(r.facts.version.empty());
+  EXPECT_FALSE(r.facts.device.empty());
+  EXPECT_EQ(r.facts.msaa_samples, 4);  // small_settings asks 4; every GL 4.5 driver offers 4
+  EXPECT_EQ(r.facts.sample_positions.size(), 4u);
+  EXPECT_EQ(r.facts.reduction, "");  // fixed point ran as asked
   for (const char* stage : {"shadow_maps", "depth_prepass", "gbuffer", "voxelize", "resolve", "mips", "direct",
                             "indirect_cones", "total"}) {
     ASSERT_TRUE(r.timings_ms.count(stage)) << stage;

@@ -8,6 +8,7 @@
 
 #include "scene/gltf_loader.h"
 #include "stage_test_scene.h"
+#include "stages/raster.h"
 #include "stages/voxelize.h"
 
 namespace vct {
@@ -116,6 +117,20 @@ TEST(Voxelize, MsaaFragmentUsesTheExtrapolatedPixelCentreDepth) {
   EXPECT_NEAR(g.fragments[0].position.x, 1.5f, 1e-5f);  // evaluated at the centre, outside the triangle
   EXPECT_NEAR(g.fragments[0].position.z, 3.05f, 1e-5f);
   EXPECT_EQ(voxels(voxelize_conservative(s, 8)), (VoxelSet{{1, 1, 2}, {1, 1, 3}}));
+}
+
+// A driver's GL_SAMPLE_POSITION list (BackendFacts) replaces the assumed pattern. The triangle of
+// the test above covers, in pixel (1,1), only points with x + y <= 2.625.
+TEST(Voxelize, DriverSamplePositionsReplaceTheStandardPattern) {
+  Scene s = unit_grid_scene(8);
+  test::add_triangle(s, {1.0f, 1.0f, 2.9f}, {1.625f, 1.0f, 3.0875f}, {1.0f, 1.625f, 2.9f}, 0);
+  EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, standard_sample_positions(4))), voxels(voxelize_gpu_rule(s, 8, 4)));
+  // One sample at (0.375, 0.125): 1.375 + 1.125 = 2.5 <= 2.625, covered.
+  EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, std::vector<vec2>{{0.375f, 0.125f}})), (VoxelSet{{1, 1, 3}}));
+  // One sample at (0.625, 0.875): 3.5 > 2.625, not covered; the pixel centre pattern neither.
+  EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, std::vector<vec2>{{0.625f, 0.875f}})), VoxelSet{});
+  EXPECT_EQ(voxels(voxelize_gpu_rule(s, 8, std::vector<vec2>{{0.5f, 0.5f}})), voxels(voxelize_gpu_rule(s, 8, 1)));
+  EXPECT_THROW(voxelize_gpu_rule(s, 8, std::vector<vec2>{}), std::invalid_argument);
 }
 
 TEST(Voxelize, DominantAxisTieBreakingFollowsTheSeed) {

@@ -1,0 +1,47 @@
+// The GL build's deliberate faults, one table: each breaks the GL pipeline in one known way so the
+// tests (tests/gl/gl_faults_test.cpp) and scripts/gpu_check.sh can prove that the comparison blames
+// the stage the fault lives in (docs/compare.md, "Fault switch"). A shader fault reaches the GLSL as
+// `#define VCT_FAULT_<NAME> 1`, prepended by the program builder (gl_program.h, ProgramBuilder);
+// a host fault changes what the C++ passes do. The CPU reference knows nothing of them.
+#pragma once
+
+#include <string>
+
+namespace vct::gl {
+
+struct GlFault {
+  const char* name;    // the CLI / settings spelling
+  const char* where;   // what it breaks, and in which file
+  const char* blamed;  // the first stage a correct comparison fails
+  bool host;           // a C++ fault (no #define)
+  // False where a CPU rasterizer (llvmpipe) cannot show it: it serializes the fragments of one
+  // voxel and finishes each pass before the next (docs/compare.md), so only a GPU can.
+  bool visible_on_cpu_rasterizer = true;
+};
+
+inline constexpr GlFault kGlFaults[] = {
+    {"half_texel", "voxel depth coordinate + 0.5 voxel (voxelize.frag)", "voxel.occupancy", false},
+    {"wrong_axis", "dominant-axis x/y test swapped (voxelize.geom)", "voxel.occupancy", false},
+    {"racy_average", "non-atomic load/add/store or load/average/store (voxelize.frag); invisible on llvmpipe",
+     "voxel.radiance", false, false},
+    {"lost_update", "last writer wins instead of the reduction (voxelize.frag)", "voxel.radiance", false},
+    {"wrong_mip", "iso mip l built from level l-2 (mip_iso.comp)", "mip.iso.2", false},
+    {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",
+     false},
+    {"cone_step", "the cone march starts one step late (cone.glsl)", "image.indirect_diffuse", false},
+    {"missing_barrier",
+     "no glMemoryBarrier between the voxelization draw and the resolve dispatch (gl_pass_voxel.cpp); "
+     "invisible on llvmpipe, which finishes each pass before the next",
+     "voxel.radiance", true, false},
+};
+
+/// The table row of `name`, or nullptr ("" and unknown names).
+const GlFault* find_gl_fault(const std::string& name);
+
+/// Comma-separated names, for messages and --help.
+std::string gl_fault_names();
+
+/// Throws InputError(where, ...) unless `name` is "" or a row of kGlFaults.
+void check_gl_fault(const std::string& name, const std::string& where);
+
+}  // namespace vct::gl
