@@ -57,9 +57,9 @@ int finish(const cmp::Report& rep, const CompareArgs& a, const std::string& titl
   return rep.overall() == cmp::Verdict::Fail ? kExitFailed : kExitOk;
 }
 
-bool has_cone_stage(const cmp::Report& rep) {
+bool has_cone_stage(const cmp::Report& rep, bool soft_shadows) {
   for (const cmp::StageVerdict& v : rep.stages)
-    if (cmp::is_cone_traced(v.stage)) return true;
+    if (cmp::is_cone_traced(v.stage, soft_shadows)) return true;
   return false;
 }
 
@@ -72,7 +72,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
     cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
     note_driver_facts(rep, test.facts, ref.facts);
     const int code = finish(rep, a, title, {{"cone_stages", "end_to_end"}});
-    if (has_cone_stage(rep))
+    if (has_cone_stage(rep, cmp::soft_shadows_of(ref) || cmp::soft_shadows_of(test)))
       std::printf("cone stages were judged end to end (an upstream voxel tie changes every cone through it); "
                   "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
     return code;

@@ -20,9 +20,9 @@ const StageVerdict* find_stage(const Report& r, const std::string& stage) {
 }
 }  // namespace
 
-void apply_isolated_verdicts(Report& end_to_end, const Report& isolated) {
+void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool soft_shadows) {
   for (StageVerdict& v : end_to_end.stages) {
-    if (!is_cone_traced(v.stage)) continue;
+    if (!is_cone_traced(v.stage, soft_shadows)) continue;
     const StageVerdict* iso = find_stage(isolated, v.stage);
     if (!iso || iso->verdict == Verdict::Missing) continue;
     nlohmann::json e2e = {{"verdict", to_string(v.verdict)}, {"note", v.note}, {"rms", v.rms}, {"max_abs", v.max_abs}};
@@ -40,7 +40,8 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated) {
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt) {
   const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s);
-  apply_isolated_verdicts(end_to_end, compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt));
+  apply_isolated_verdicts(end_to_end, compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt),
+                          s.soft_shadows);
 }
 
 }  // namespace vct::cmp

@@ -25,7 +25,8 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
 /// For every cone-traced stage, replaces the end-to-end verdict by the isolated one (stage judged
 /// on the test's own inputs) and keeps the end-to-end verdict in the note and in
 /// extra["end_to_end"], so a cone stage fails only when the test's marcher is wrong.
-void apply_isolated_verdicts(Report& end_to_end, const Report& isolated);
+/// `soft_shadows`: direct light was cone-traced, so it is replaced too.
+void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool soft_shadows);
 
 /// The whole isolated judgement, as `vct validate` and `vct compare --scene` run it: the reference
 /// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "compare/image_edges.h"
 #include "compare/tolerance.h"
@@ -80,6 +81,14 @@ float alpha_of(const Volume& v, size_t i) {
   return v.channels >= 4 ? v.data[i * size_t(v.channels) + 3] : v.data[i * size_t(v.channels)];
 }
 
+// Any of the RGB channels non-zero (a voxel with light, whatever its opacity).
+bool carries_light(const Volume& v, size_t i) {
+  if (v.channels < 4) return false;
+  for (int c = 0; c < 3; ++c)
+    if (v.data[i * size_t(v.channels) + size_t(c)] != 0.0f) return true;
+  return false;
+}
+
 // Occupancy = alpha > 0 (or the single channel > 0).
 std::vector<uint8_t> occupancy(const Volume& v) {
   std::vector<uint8_t> occ(v.voxel_count());
@@ -93,10 +102,40 @@ void xyz_of(const Volume& v, size_t i, int& x, int& y, int& z) {
   z = int(i / (size_t(v.nx) * size_t(v.ny)));
 }
 
+// Every channel of the test pixel within [min, max] of the reference's 3x3 neighbourhood,
+// widened by the pixel's bound.
+template <typename Bound>
+bool admissible_tie(const Image& ref, const Image& test, int x, int y, int channels, Bound bound) {
+  for (int c = 0; c < channels; ++c) {
+    double lo = 1e300, hi = -1e300;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int u = x + dx, w = y + dy;
+        if (u < 0 || w < 0 || u >= ref.width || w >= ref.height) continue;
+        lo = std::min(lo, double(ref.at(u, w, c)));
+        hi = std::max(hi, double(ref.at(u, w, c)));
+      }
+    const double t = test.at(x, y, c), b = bound(c);
+    if (!(t >= lo - b && t <= hi + b)) return false;
+  }
+  return true;
+}
+
+// Every channel of the test pixel within [0, the reference's unshadowed value] +- bound: what some
+// outcome of the pixel's shadow tests gives (PCF visibility is anywhere in [0, 1] when taps tie).
+template <typename Bound>
+bool within_shadow_ties(const Image& test, int x, int y, int channels, const Image& unshadowed, Bound bound) {
+  for (int c = 0; c < channels; ++c) {
+    const double t = test.at(x, y, c), b = bound(c);
+    if (!(t >= -b && t <= double(unshadowed.at(x, y, c)) + b)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
-                                 const CompareOptions& opt, const Image* texture_slack) {
+                                 const CompareOptions& opt, const Image* texture_slack, const ImageTies& ties) {
   StageVerdict v;
   v.stage = stage;
   if (ref.width != test.width || ref.height != test.height) {
@@ -112,6 +151,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
   if (use_slack) v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift)";
   const int ch = std::min(ref.channels, test.channels);
+  const bool use_ties = ties.unshadowed && ties.unshadowed->width == ref.width &&
+                        ties.unshadowed->height == ref.height && ties.unshadowed->channels >= ch;
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -121,7 +162,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
   std::vector<Offender> offenders;
   double se = 0;
-  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0;
+  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0;
+  auto pixel_bound = [&](int x, int y, int c) {
+    double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs;
+    if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
+    if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
+    return bound;
+  };
   for (int y = 0; y < ref.height; ++y)
     for (int x = 0; x < ref.width; ++x) {
       const size_t i = size_t(y) * size_t(ref.width) + size_t(x);
@@ -130,9 +177,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       float worst_err = 0, worst_bound = 0;
       for (int c = 0; c < ch; ++c) {
         const double r = ref.at(x, y, c), t = test.at(x, y, c), d = std::abs(t - r);
-        double bound = m.abs + m.rel * std::abs(r) + m.abs_of_mean * mean_abs;
-        if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
-        if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
+        const double bound = pixel_bound(x, y, c);
         se += d * d;
         v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
         const double ratio = std::isfinite(d) ? d / std::max(bound, 1e-30) : 1e30;
@@ -141,27 +186,42 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       ++v.checked;
       if (worst_ratio <= 1.0) continue;
       ++v.out_of_bound;
-      if (edge[i]) ++edge_bad, state[i] = 1;
-      else ++interior_bad, state[i] = 2;
+      // A tie is a value the reference could have produced here: within its 3x3 neighbourhood's
+      // range plus this pixel's bound (dEQP's verifiers accept any admissible neighbour), never
+      // anything (docs/compare.md, "Ties are admissible values").
+      const auto bound_of = [&](int c) { return pixel_bound(x, y, c); };
+      if (!admissible_tie(ref, test, x, y, ch, bound_of) &&
+          !(use_ties && within_shadow_ties(test, x, y, ch, *ties.unshadowed, bound_of))) {
+        ++inadmissible, state[i] = 2;
+      } else if (edge[i]) {
+        ++edge_bad, state[i] = 1;
+      } else {
+        ++interior_bad, state[i] = 2;
+      }
       offenders.push_back(pixel_offender(ref, test, x, y, worst_err, worst_bound));
     }
-  v.allowed = edge_bad;
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const double n = double(std::max<size_t>(1, v.checked));
-  const double fi = double(interior_bad) / n;
   // Edge ties are counted against the pixels the edge map flags, not against all pixels: their
   // number grows with the length of the edges (~W) while the pixel count grows as W^2, so a share
   // of all pixels meant a different share of the edges at every size (3.2% of the built-in scene's
   // position edge pixels at 32^2, 41% at 512^2; docs/compare.md, "Edges").
   double allow_i = m.interior_fraction, allowed_edge_pixels = m.edge_tie_fraction * double(edge_pixels);
-  if (is_cone_traced(stage) && opt.upstream_tie_fraction > 0) {
+  if (is_cone_traced(stage, opt.soft_shadows) && opt.upstream_tie_fraction > 0) {
     // Voxels that legitimately differ (ties) are seen by many cones anywhere in the image, not at
-    // edges: allow a proportional share of all pixels.
+    // edges: allow a proportional share of all pixels, at any value (a tied voxel moves a cone's
+    // result by the voxel's difference, which no neighbourhood of the reference bounds). The
+    // isolated judgement on the test's own voxels (compare/isolated_stages.h) has no such ties.
     const double widened = std::min(0.05, 4.0 * opt.upstream_tie_fraction);
     allow_i = std::max(allow_i, widened);
     allowed_edge_pixels = std::max(allowed_edge_pixels, widened * n);
+    interior_bad += inadmissible;
+    inadmissible = 0;
   }
-  if (fi > allow_i || double(edge_bad) > allowed_edge_pixels) v.verdict = Verdict::Fail;
+  v.allowed = edge_bad + interior_bad;
+  const double fi = double(interior_bad) / n;
+  if (inadmissible > 0 || fi > allow_i || double(edge_bad) > allowed_edge_pixels)
+    v.verdict = Verdict::Fail;
   else if (v.out_of_bound > 0) v.verdict = Verdict::Warn;
   else v.verdict = Verdict::Pass;
   const double fe = edge_pixels ? double(edge_bad) / double(edge_pixels) : 0.0;
@@ -169,9 +229,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%zu of %zu edge pixels = %.2f%%, %.3f%% interior)",
                 v.out_of_bound, v.checked, edge_bad, edge_pixels, 100 * fe, 100 * fi);
   v.note = buf;
+  if (inadmissible)
+    v.note += "; " + std::to_string(inadmissible) +
+              " outside the reference's 3x3 range plus the bound (not a value a tie can give)";
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},
+             {"inadmissible", inadmissible},
              {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", edge_pixels ? allowed_edge_pixels / double(edge_pixels) : 0.0},
              {"allowed_interior_fraction", allow_i}};
@@ -399,7 +463,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
   const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
   if (tfrags && (!frags || !same_size(*tfrags, ref))) tfrags = nullptr;
-  size_t count_ties = 0, shading_ties = 0;
+  size_t count_ties = 0, shading_ties = 0, transparent_lit = 0;
   const auto ro = occupancy(ref), to = occupancy(test);
   taint.assign(ro.size(), 0);
   Volume mask(ref.nx, ref.ny, ref.nz, 1);
@@ -407,7 +471,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const int ch = std::min(ref.channels, test.channels);
   double se = 0;
   for (size_t i = 0; i < ro.size(); ++i) {
-    if (!ro[i] || !to[i]) continue;  // occupancy is judged in its own stage
+    if (ro[i] != to[i]) continue;  // occupied on one side only: the occupancy stage judges it
+    // Transparent voxels holding light (the particles' additive light has opacity 0) are judged
+    // like occupied ones: a backend that loses that light must fail here, not one stage later.
+    if (!ro[i] && !carries_light(ref, i) && !carries_light(test, i)) continue;
+    if (!ro[i]) ++transparent_lit;
     const double n = frags ? std::max(1.0, double(frags->data[i * size_t(frags->channels)])) : 8.0;
     double worst_ratio = 0;
     float we = 0, wb = 0;
@@ -451,7 +519,10 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const bool too_many = double(count_ties) > 2.0 * kTieFraction * double(std::max<size_t>(v.checked, 1));
   v.verdict = v.out_of_bound > v.allowed || too_many ? Verdict::Fail : v.allowed ? Verdict::Warn : Verdict::Pass;
-  v.note += std::to_string(v.out_of_bound) + " of " + std::to_string(v.checked) + " voxels (occupied in both) beyond the bound";
+  v.note += std::to_string(v.out_of_bound) + " of " + std::to_string(v.checked) + " voxels beyond the bound (" +
+            std::to_string(v.checked - transparent_lit) + " occupied in both, " + std::to_string(transparent_lit) +
+            " transparent with light)";
+  v.extra["transparent_lit"] = transparent_lit;
   if (tfrags) v.note += "; " + std::to_string(count_ties) + " with a different fragment count (coverage ties" +
                         std::string(too_many ? ": more than 2%, not ties)" : ", tolerated)");
   v.extra["fragment_count_ties"] = count_ties;
@@ -462,6 +533,32 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_volume_mask(opt, v, mask);
+  return v;
+}
+
+// A stage the reference has and the test lacks is "missing" (an engine dumps what it can), except
+// within a family the test does have: a mip chain that stops short, or one light's shadow map of
+// several, is a bug of the test (the settings fix the levels and the scene the lights).
+bool chain_broken(const StageSet& ts, const std::optional<StageRef>& ref) {
+  if (!ref || ref->row->index == StageIndex::None) return false;
+  auto same_family = [&](const std::string& name) {
+    const auto other = find_stage(name);
+    return other && other->row == ref->row;
+  };
+  for (const auto& kv : ts.images)
+    if (same_family(kv.first)) return true;
+  for (const auto& kv : ts.volumes)
+    if (same_family(kv.first)) return true;
+  return false;
+}
+
+StageVerdict broken_chain(const std::string& stage, const StageSet& ts, const std::optional<StageRef>& ref) {
+  StageVerdict v;
+  v.stage = stage;
+  v.verdict = Verdict::Fail;
+  v.model = "required-stage";
+  v.bound = "every member of a family the test produces (mip levels down to 1^3, one shadow map per light)";
+  v.note = ts.backend + " has other " + std::string(ref->row->name) + " members but not this one (a chain that stops short)";
   return v;
 }
 
@@ -521,6 +618,7 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
 Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareOptions& opt_in) {
   Report rep;
   CompareOptions opt = opt_in;
+  opt.soft_shadows = soft_shadows_of(rs) || soft_shadows_of(ts);
   Taint taint, radiance_taint;
   const Image* depth_hint = rs.images.count(st::kGbufferDepth) ? &rs.images.at(st::kGbufferDepth) : nullptr;
   const Image* slack = rs.images.count(st::kGbufferTextureSlack) ? &rs.images.at(st::kGbufferTextureSlack) : nullptr;
@@ -551,14 +649,20 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       continue;
     }
     if (!r_has || !t_has) {
-      rep.stages.push_back(missing(stage, std::string("not produced by ") + (r_has ? ts.backend : rs.backend)));
+      rep.stages.push_back(r_has && chain_broken(ts, ref) ? broken_chain(stage, ts, ref)
+                                                          : missing(stage, std::string("not produced by ") +
+                                                                               (r_has ? ts.backend : rs.backend)));
       continue;
     }
     if (rs.images.count(stage)) {
       // A shadow map is its own depth: the camera's depth says nothing about its edges.
       const bool light_space = ref && ref->row->index == StageIndex::Light;
+      // Direct light: any outcome of the shadow tests is an admissible tie value too.
+      ImageTies ties;
+      if (stage == st::kImageDirect && rs.images.count(st::kImageDirectUnshadowed))
+        ties.unshadowed = &rs.images.at(st::kImageDirectUnshadowed);
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               light_space ? nullptr : depth_hint, opt, slack));
+                                               light_space ? nullptr : depth_hint, opt, slack, ties));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {

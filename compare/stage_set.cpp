@@ -164,6 +164,12 @@ StageSet read_stage_set(const std::string& path) {
   }
 }
 
+bool soft_shadows_of(const StageSet& set) {
+  if (!set.settings.is_object()) return false;
+  const auto it = set.settings.find("soft_shadows");
+  return it != set.settings.end() && it->is_boolean() && it->get<bool>();
+}
+
 std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {
   std::set<std::string> names;
   for (const StageSet* s : {&a, &b}) {
@@ -175,14 +181,21 @@ std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {
   if (names.count(st::kVoxelRadiance)) names.insert(st::kVoxelOccupancy);
   if (names.count(st::kVoxelConservative)) names.insert(st::kVoxelHoles);
   // Registry order; family members by number; then names the registry does not know, sorted.
-  std::vector<std::pair<std::pair<size_t, int>, std::string>> ranked;
+  // With soft shadows, direct light is traced through the mips: it is judged after them (just
+  // before the first cone stage), so a voxel or mip bug is blamed where it is, not on direct.
+  const bool soft = soft_shadows_of(a) || soft_shadows_of(b);
   const auto& rows = stage_rows();
+  size_t first_cone_row = rows.size();
+  for (size_t i = 0; i < rows.size() && first_cone_row == rows.size(); ++i)
+    if (rows[i].own_inputs) first_cone_row = i;
+  std::vector<std::pair<std::pair<size_t, int>, std::string>> ranked;
   for (const std::string& n : names) {
     const auto ref = find_stage(n);
     if (ref && ref->row->role == StageRole::Auxiliary) continue;  // judged inside other stages
-    ranked.push_back({ref ? std::pair<size_t, int>{size_t(ref->row - rows.data()), ref->index}
-                          : std::pair<size_t, int>{rows.size(), 0},
-                      n});
+    // Rank 2i + 1 for row i; a moved row takes 2i just before row i; unknown names come last.
+    size_t rank = ref ? 2 * size_t(ref->row - rows.data()) + 1 : 2 * rows.size() + 2;
+    if (ref && !ref->row->own_inputs && judged_on_own_inputs(*ref->row, soft)) rank = 2 * first_cone_row;
+    ranked.push_back({{rank, ref ? ref->index : 0}, n});
   }
   std::sort(ranked.begin(), ranked.end());
   std::vector<std::string> out;

@@ -42,6 +42,10 @@ void write_stage_set(const std::string& dir, StageSet& set);
 /// naming the file and the problem.
 StageSet read_stage_set(const std::string& path);
 
+/// Whether the set's settings say soft shadows were on (free-form settings: anything but a
+/// JSON true is off).
+bool soft_shadows_of(const StageSet& set);
+
 /// Canonical pipeline order of stage names present in either set (first failing stage = first
 /// in this order).
 std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b);

@@ -12,9 +12,9 @@ double half_ulp(double v) {
   return std::ldexp(1.0, int(std::floor(std::log2(v))) - 10);
 }
 
-bool is_cone_traced(const std::string& stage) {
+bool is_cone_traced(const std::string& stage, bool soft_shadows) {
   const auto ref = find_stage(stage);
-  return ref && ref->row->own_inputs;
+  return ref && judged_on_own_inputs(*ref->row, soft_shadows);
 }
 
 namespace {

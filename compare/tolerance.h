@@ -32,8 +32,9 @@ struct ImageModel {
 /// The bound an image model states, written from its numbers (for run.json and the report).
 std::string bound_text(const ImageModel& m);
 
-/// Cone-traced stages (they sample the voxels, so voxel ties upstream move them).
-bool is_cone_traced(const std::string& stage);
+/// Cone-traced stages (they sample the voxels, so voxel ties upstream move them): the registry's
+/// own-inputs stages, and image.direct when soft shadows trace it (judged_on_own_inputs).
+bool is_cone_traced(const std::string& stage, bool soft_shadows);
 
 /// The model of a tolerance id, and of a stage by its registry row (names the registry does not
 /// know are judged as filtered radiance).

@@ -29,6 +29,7 @@ inline constexpr char kGbufferSpecularColor[] = "gbuffer.specular_color";
 inline constexpr char kGbufferEmission[] = "gbuffer.emission";
 inline constexpr char kGbufferTextureSlack[] = "gbuffer.texture_slack";
 inline constexpr char kImageDirect[] = "image.direct";
+inline constexpr char kImageDirectUnshadowed[] = "image.direct_unshadowed";
 inline constexpr char kVoxelOccupancy[] = "voxel.occupancy";
 inline constexpr char kVoxelRadiance[] = "voxel.radiance";
 inline constexpr char kVoxelFragments[] = "voxel.fragments";
@@ -163,6 +164,10 @@ const StageRow& mip_row(int direction);
 /// The anisotropic direction a "mip.<dir>" row stands for (-1 for the isotropic chain and
 /// every other row).
 int aniso_direction(const StageRow& row);
+
+/// Whether the judge re-traces this stage on the test's own inputs: the cone stages always, and
+/// direct light when soft shadows trace it through the mips (then it is ordered after them too).
+bool judged_on_own_inputs(const StageRow& row, bool soft_shadows);
 
 /// A frame's stage slot for reading: nullptr if the frame has no such member or it is empty.
 const Image* frame_image(const FrameResult& f, const StageRow& row, int index = 0);

@@ -42,7 +42,7 @@ TEST(IsolatedStages, UpstreamTiesWarnButAWrongMarcherStillFails) {
   Report iso;
   iso.stages = {verdict("image.indirect_diffuse", Verdict::Pass), verdict("image.indirect_specular", Verdict::Fail),
                 verdict("image.direct", Verdict::Pass)};
-  apply_isolated_verdicts(e2e, iso);
+  apply_isolated_verdicts(e2e, iso, false);
   EXPECT_EQ(e2e.stages[1].verdict, Verdict::Warn);  // ties upstream, marcher right
   EXPECT_EQ(e2e.stages[1].extra["end_to_end"]["verdict"], "fail");
   EXPECT_EQ(e2e.stages[2].verdict, Verdict::Fail);  // marcher wrong on its own inputs

@@ -54,7 +54,8 @@ cmp::Report judge(GlContext& ctx, const FaultRun& run) {
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(reference(s), s.vct), gl_set);
   const FrameResult ref_on_gl = cmp::reference_on_test_inputs(cornell_box(), gl, s.vct);
-  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set));
+  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
+                               s.vct.soft_shadows);
   std::printf("  gl_fault '%s' (%s%s): failing stages: %s\n", run.fault.c_str(), to_string(s.vct.reduction).c_str(),
               s.vct.anisotropic ? ", anisotropic" : "", failing_stages(rep).c_str());
   return rep;
