@@ -5,6 +5,7 @@
 #include "gl_context.h"
 #include "gl_frame.h"
 #include "gl_resources.h"
+#include "gl_setting_uniforms.h"
 
 namespace vct::gl {
 namespace {
@@ -55,7 +56,7 @@ void direct_pass(GlFrame& f) {
   glBindTextureUnit(4, f.shadow_maps);
   bind_voxels(f, prog, f.radiance, f.aniso);
   bind_gbuffer(f, prog);
-  prog.set("u_soft_shadows", f.s.soft_shadows ? 1 : 0);
+  set_setting_uniforms(prog, f.s);
   prog.set("u_shadow_aperture", f.s.soft_shadow_aperture_deg * (kPi / 180.0f));
   fullscreen(f);
   check_gl("direct pass");
@@ -70,11 +71,8 @@ void indirect_pass(GlFrame& f) {
   bind_voxels(f, prog, f.radiance, f.aniso);
   bind_gbuffer(f, prog);
   glBindTextureUnit(18, f.direct);
-  prog.set("u_diffuse_cones", f.s.diffuse_cones ? 1 : 0);
-  prog.set("u_specular_cones", f.s.specular_cones ? 1 : 0);
-  prog.set("u_random_rotation", f.s.random_rotation ? 1 : 0);
-  prog.set("u_frame", unsigned(f.s.frame));
-  prog.set("u_image_height", f.s.height);
+  set_setting_uniforms(prog, f.s);
+  prog.set("u_frame", unsigned(f.s.frame));  // unsigned in GLSL: the hash's input
   fullscreen(f);
   check_gl("indirect pass");
 }
@@ -98,7 +96,7 @@ void particle_pass(GlFrame& f) {
   const mat4 view = f.scene.camera.view();
   prog.set("u_view_proj", f.scene.camera.projection(float(f.s.width) / float(f.s.height)) * view);
   prog.set("u_camera_position", f.scene.camera.position);
-  prog.set("u_time", f.s.time);
+  set_setting_uniforms(prog, f.s);
   glBindVertexArray(f.empty_vao);
   for (size_t e = 0; e < f.scene.emitters.size(); ++e) {
     const ParticleEmitter& em = f.scene.emitters[e];

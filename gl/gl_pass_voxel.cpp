@@ -8,6 +8,7 @@
 #include "gl_context.h"
 #include "gl_frame.h"
 #include "gl_resources.h"
+#include "gl_setting_uniforms.h"
 #include "stages/cone_sets.h"
 #include "stages/multibounce.h"
 
@@ -28,7 +29,7 @@ void clear_uint(GLuint tex) {
 void set_volume(const GlFrame& f, const Program& p) {
   p.set("u_volume_origin", f.scene.volume.origin);
   p.set("u_volume_size", f.scene.volume.size);
-  p.set("u_grid", f.s.grid);
+  set_setting_uniforms(p, f.s);
 }
 
 // std140 image of sh::ParticleEmitterBlock (seven vec4s).
@@ -55,7 +56,6 @@ void inject_particles(GlFrame& f) {
   const Program prog = f.programs.build({"particles_voxel.comp"});
   prog.use();
   set_volume(f, prog);
-  prog.set("u_time", f.s.time);
   for (GLuint c = 0; c < 3; ++c) bind_image(4 + c, f.particle_sums[c], 0, GL_READ_WRITE, GL_R32UI);
   for (size_t e = 0; e < f.scene.emitters.size(); ++e) {
     const EmitterStd140 block = emitter_block(f.scene.emitters[e]);
@@ -89,7 +89,6 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
   f.geo.set_lights(prog, f.s, f.light_view_proj);
   glBindTextureUnit(4, f.shadow_maps);
   prog.set("u_bounce", bounce);
-  prog.set("u_restitution", f.s.restitution);
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
   if (bounce > 0) bind_voxels(f, prog, prev_radiance, prev_aniso);
   for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_WRITE, GL_R32UI);
@@ -104,7 +103,7 @@ void resolve(GlFrame& f, GLuint target) {
   ScopedTimer timer(f.timers, "resolve");
   const Program prog = f.programs.build({"voxel_resolve.comp"});
   prog.use();
-  prog.set("u_grid", f.s.grid);
+  set_setting_uniforms(prog, f.s);
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
   prog.set("u_storage_format", f.voxel_format == GL_RGBA8 ? 1 : 0);
   for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_ONLY, GL_R32UI);
@@ -162,11 +161,9 @@ double total_radiance(const GlFrame& f, GLuint radiance, int n) {
 void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std::array<GLuint, 6>& aniso) {
   glBindTextureUnit(5, radiance);
   for (GLuint d = 0; d < 6; ++d) glBindTextureUnit(6 + d, f.s.anisotropic ? aniso[d] : radiance);
-  p.set("u_anisotropic", f.s.anisotropic ? 1 : 0);
-  p.set("u_grid", f.s.grid);
+  set_setting_uniforms(p, f.s);
+  // Derived from settings: texture units and radians.
   p.set("u_cone_start", f.s.cone_offset_voxels / float(f.s.grid));
-  p.set("u_cone_max_distance", f.s.max_distance);
-  p.set("u_cone_quality", f.s.cone_quality);
   p.set("u_diffuse_aperture", f.s.diffuse_aperture_deg * (kPi / 180.0f));
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, f.diffuse_cone_ubo);
 }

@@ -1,12 +1,13 @@
 #include "gl_scene.h"
 
 #include <algorithm>
-#include <cstddef>
-#include <string>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
+#include <string>
 
 #include "gl_context.h"
+#include "gl_setting_uniforms.h"
 
 namespace vct::gl {
 namespace {
@@ -156,9 +157,7 @@ void GlScene::set_lights(const Program& p, const VctSettings& s, const std::vect
   const int count = std::min<int>(int(scene_.spot_lights.size()), kMaxLights);
   p.set("u_light_count", count);
   p.set("u_light_model", s.light_model == LightModel::Seed ? 1 : 0);
-  p.set("u_shadow_size", s.shadow_map_size);
-  p.set("u_pcf_kernel", s.pcf_kernel);
-  p.set("u_shadow_bias", s.shadow_bias);
+  set_setting_uniforms(p, s);
   for (int i = 0; i < count; ++i) {
     const SpotLight& l = scene_.spot_lights[size_t(i)];
     const std::string idx = "[" + std::to_string(i) + "]";

@@ -93,6 +93,7 @@ void bind_stage_set(nb::module_& m) {
       .def_rw("storage", &cmp::StageSet::storage)
       .def_rw("reduction", &cmp::StageSet::reduction)
       .def_prop_ro("info_json", [](const cmp::StageSet& s) { return s.info.dump(); })
+      .def_prop_ro("facts_json", [](const cmp::StageSet& s) { return nlohmann::json(s.facts).dump(); })
       .def_prop_ro("image_names", [](const cmp::StageSet& s) {
         std::vector<std::string> n;
         for (const auto& kv : s.images) n.push_back(kv.first);
@@ -205,14 +206,11 @@ void bind_functions(nb::module_& m) {
   });
   m.def("_settings_as_run_by_gl", [](const std::string& t, const cmp::StageSet& gl) {
     Settings s = settings_from_text(t);
-    // app::settings_as_run_by_gl's rule, read from the set's info (the frame is gone by now).
-    // Ours store info as strings; an external manifest may hold a number.
-    if (gl.info.contains("msaa_samples")) {
-      const nlohmann::json& m = gl.info["msaa_samples"];
-      if (m.is_number_integer()) s.vct.msaa_samples = m.get<int>();
-      else if (m.is_string()) s.vct.msaa_samples = std::atoi(m.get<std::string>().c_str());
-      validate_settings(s);
-    }
+    // app::settings_as_run_by_gl's rule, read from the set's typed facts (the frame is gone by
+    // now): counts the settings cannot name are carried by the sample positions instead.
+    const int n = gl.facts.msaa_samples;
+    if (n == 1 || n == 4 || n == 8) s.vct.msaa_samples = n;
+    validate_settings(s);
     return settings_text(s);
   });
 }

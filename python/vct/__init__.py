@@ -22,7 +22,7 @@ from ._vct import (EnvironmentUnavailable, InputError, PathTraceResult, Scene, S
 
 __all__ = ["load_scene", "default_settings", "validate_defaults", "check_settings", "sweep_settings",
            "render_ref", "render_gl", "path_trace", "settings_as_run_by_gl", "compare", "bias",
-           "read_stage_set", "write_stage_set", "read_path_trace", "read_image", "read_volume", "info", "copy_settings", "Scene", "StageSet",
+           "read_stage_set", "write_stage_set", "read_path_trace", "read_image", "read_volume", "info", "facts", "copy_settings", "Scene", "StageSet",
            "PathTraceResult", "InputError", "EnvironmentUnavailable"]
 
 
@@ -92,6 +92,12 @@ def bias(vct_set, pt, k=3.0):
 def info(stage_set):
     """A stage set's free-form info (GL_RENDERER, counts, ...) as a dict."""
     return _json.loads(stage_set.info_json)
+
+
+def facts(stage_set):
+    """What the backend reported about itself (typed BackendFacts: renderer, msaa_samples, sample
+    positions, ...) as a dict."""
+    return _json.loads(stage_set.facts_json)
 
 
 def copy_settings(settings):

@@ -160,7 +160,7 @@ def test_gl_matches_the_reference(scene):
         gl = vct.render_gl(scene, s)
     except vct.EnvironmentUnavailable as e:
         pytest.skip(str(e))
-    assert vct.info(gl).get("GL_RENDERER")
+    assert vct.facts(gl).get("renderer")
     ref = vct.render_ref(scene, vct.settings_as_run_by_gl(s, gl))
     report = vct.compare(ref, gl)
     assert report["overall"] in ("pass", "warn"), report["first_failing"]
