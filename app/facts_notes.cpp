@@ -2,19 +2,32 @@
 
 #include <string>
 
+#include "stages/stage_registry.h"
+
 namespace vct::app {
 namespace {
 
-bool starts(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+ToleranceModel model_of(const std::string& stage) {
+  const auto ref = find_stage(stage);
+  return ref ? ref->row->model : ToleranceModel::None;
+}
 
 // Stages decided by the voxelization raster (sample positions, sub-pixel snapping).
-bool voxel_raster_stage(const std::string& stage) { return starts(stage, "voxel."); }
-// Stages decided by the camera raster (sub-pixel snapping of edges).
-bool camera_raster_stage(const std::string& stage) { return starts(stage, "gbuffer.") || starts(stage, "shadow_map."); }
+bool voxel_raster_stage(const std::string& stage) {
+  const ToleranceModel m = model_of(stage);
+  return m == ToleranceModel::VoxelOccupancy || m == ToleranceModel::VoxelRadiance || m == ToleranceModel::VoxelHoles;
+}
+// Stages decided by the camera or light raster (sub-pixel snapping of edges): the G-buffer and
+// shadow maps, i.e. every stage judged by a raster model.
+bool camera_raster_stage(const std::string& stage) {
+  const ToleranceModel m = model_of(stage);
+  return m == ToleranceModel::Depth || m == ToleranceModel::Coverage || m == ToleranceModel::Position ||
+         m == ToleranceModel::NormalMap || m == ToleranceModel::Texture;
+}
 // Stages whose bounds assume the texture filter's sub-texel precision.
 bool texture_stage(const std::string& stage) {
-  return stage == "gbuffer.albedo" || stage == "gbuffer.normal" || stage == "gbuffer.material" ||
-         stage == "gbuffer.emission" || stage == "gbuffer.specular_color";
+  const ToleranceModel m = model_of(stage);
+  return m == ToleranceModel::Texture || m == ToleranceModel::NormalMap;
 }
 
 void append(cmp::StageVerdict& v, const std::string& sentence) {

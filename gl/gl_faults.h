@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "stages/stage_registry.h"
+
 namespace vct::gl {
 
 struct GlFault {
@@ -20,19 +22,20 @@ struct GlFault {
 };
 
 inline constexpr GlFault kGlFaults[] = {
-    {"half_texel", "voxel depth coordinate + 0.5 voxel (voxelize.frag)", "voxel.occupancy", false},
-    {"wrong_axis", "dominant-axis x/y test swapped (voxelize.geom)", "voxel.occupancy", false},
+    {"half_texel", "voxel depth coordinate + 0.5 voxel (voxelize.frag)", stage_names::kVoxelOccupancy, false},
+    {"wrong_axis", "dominant-axis x/y test swapped (voxelize.geom)", stage_names::kVoxelOccupancy, false},
     {"racy_average", "non-atomic load/add/store or load/average/store (voxelize.frag); invisible on llvmpipe",
-     "voxel.radiance", false, false},
-    {"lost_update", "last writer wins instead of the reduction (voxelize.frag)", "voxel.radiance", false},
+     stage_names::kVoxelRadiance, false, false},
+    {"lost_update", "last writer wins instead of the reduction (voxelize.frag)", stage_names::kVoxelRadiance, false},
+    // Family members by their canonical names (stages/stage_registry.h: stage_name(row, level)).
     {"wrong_mip", "iso mip l built from level l-2 (mip_iso.comp)", "mip.iso.2", false},
     {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",
      false},
-    {"cone_step", "the cone march starts one step late (cone.glsl)", "image.indirect_diffuse", false},
+    {"cone_step", "the cone march starts one step late (cone.glsl)", stage_names::kImageIndirectDiffuse, false},
     {"missing_barrier",
      "no glMemoryBarrier between the voxelization draw and the resolve dispatch (gl_pass_voxel.cpp); "
      "invisible on llvmpipe, which finishes each pass before the next",
-     "voxel.radiance", true, false},
+     stage_names::kVoxelRadiance, true, false},
 };
 
 /// The table row of `name`, or nullptr ("" and unknown names).

@@ -33,8 +33,8 @@ Volume occupancy_of(const Volume& fragments) {
 
 const Volume* dumped_volume(const FrameResult& f, const StageRow& row, int index, Volume& scratch) {
   const std::string name = row.name;
-  if (name == "voxel.radiance") return base_level(f);
-  if (name == "voxel.occupancy") {
+  if (name == stage_names::kVoxelRadiance) return base_level(f);
+  if (name == stage_names::kVoxelOccupancy) {
     if (f.voxels.fragments.data.empty()) return nullptr;
     scratch = occupancy_of(f.voxels.fragments);
     return &scratch;
