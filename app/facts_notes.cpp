@@ -7,6 +7,8 @@
 namespace vct::app {
 namespace {
 
+bool starts(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
 ToleranceModel model_of(const std::string& stage) {
   const auto ref = find_stage(stage);
   return ref ? ref->row->model : ToleranceModel::None;
