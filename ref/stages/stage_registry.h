@@ -1,7 +1,7 @@
 // The stage registry: one row per stage a VCT frame produces. Every module that names stages
 // reads it: the dump writer (`vct render --dump`), stage sets in both directions (compare/
-// stage_set*.cpp), the comparison's order and tolerance models, explain and the report (through
-// `vct stages --json`). Adding a stage is one row here plus its computation (docs/CONVENTIONS.md).
+// stage_set*.cpp), the comparison's order and tolerance models, and the report (validate writes
+// the table into run.json; `vct stages --json` prints it). Adding a stage is one row here plus its computation (docs/CONVENTIONS.md).
 //
 // Families are numbered: "shadow_map.<light>", "mip.iso.<level>", "mip.<dir>.<level>" (level >= 1).
 // Row order is the pipeline order: the first failing stage in this order is the one to blame.
