@@ -24,17 +24,14 @@ Report compare_stage_sets(const StageSet& reference, const StageSet& test, const
 
 /// One image stage (also used for two bare images): `stage` selects the model.
 /// Beyond-bound pixels are ties only when admissible: inside the reference's 3x3 range plus the
-/// bound, or inside `ties`; any other value fails (docs/compare.md, "Ties are admissible values").
+/// bound; any other value fails (docs/compare.md, "Ties are admissible values"). Shading stages
+/// (image.direct, image.emission) keep the counted allowance until their inputs' freedom is in
+/// their bound.
 /// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
 /// bound of the textured G-buffer stages; nullptr = none (bare images, external references).
-/// What else a tie may give: for image.direct, any value between fully shadowed (0) and the
-/// reference's unshadowed direct light (image.direct_unshadowed).
-struct ImageTies {
-  const Image* unshadowed = nullptr;
-};
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
                                  const Image* edge_hint, const CompareOptions& opt,
-                                 const Image* texture_slack = nullptr, const ImageTies& ties = {});
+                                 const Image* texture_slack = nullptr);
 
 /// Two bare volumes, element-wise with abs/rel bound (vct compare A.nrrd B.nrrd).
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs,

@@ -85,10 +85,6 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const
   FrameImages& im = r.images;
   if (!s.soft_shadows)
     timed(r, "direct", [&] { im.direct = shade_direct(scene, r.gbuffer, r.shadow_maps, s); });
-  // The most light a shadow-test tie can give a pixel (no shadow maps: every test lit); the
-  // comparison admits direct values up to it (docs/compare.md, "Ties are admissible values").
-  if (!s.soft_shadows)
-    timed(r, "direct_unshadowed", [&] { im.direct_unshadowed = shade_direct(scene, r.gbuffer, {}, s); });
   timed(r, "particles", [&] { im.particles = render_particles(scene, r.gbuffer, s); });
   trace_cone_stages(scene, s, r);
   r.timings_ms["total"] = total.ms();

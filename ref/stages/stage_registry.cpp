@@ -81,8 +81,6 @@ const std::vector<StageRow> kRows = {
    "how far each textured G-buffer value moves under a 2^-8 px sample shift (reference only)", "G-buffer and direct light", "ref/stages/texture_slack.cpp", "-", "gbuffer"},
   {st::kImageDirect,           "direct",                        K::Image,  X::None,     R::Judged,    P::Color,    T::Shading,        false, C::UnlessSoftShadows, 3, "pt_direct",            frame_image_slot<&FrameImages::direct>,            nullptr,
    "Cook-Torrance direct light with shadow-map (or cone) visibility", "G-buffer and direct light", "ref/stages/direct.cpp", "gl/gl_pass_shading.cpp (direct_pass), gl/shaders/direct.frag", "direct"},
-  {st::kImageDirectUnshadowed, "",                              K::Image,  X::None,     R::Auxiliary, P::Color,    T::None,           false, C::No,                0, "",                     frame_image_slot<&FrameImages::direct_unshadowed>, nullptr,
-   "direct light with every shadow test lit: the most a shadow-test tie can give (reference only)", "G-buffer and direct light", "ref/stages/direct.cpp", "-", ""},
   {st::kVoxelOccupancy,        "voxels_occupancy",              K::Volume, X::None,     R::Derived,   P::Volume,   T::VoxelOccupancy, false, C::No,                0, "",                     nullptr,                                           nullptr,
    "which voxels the voxelizer's coverage rule fills", "Voxelizers", "ref/stages/voxelize_gpu.cpp", "gl/gl_pass_voxel.cpp (voxelize), gl/shaders/voxelize.geom", ""},
   {st::kVoxelRadiance,         "voxels_radiance_L0",            K::Volume, X::None,     R::Judged,    P::Volume,   T::VoxelRadiance,  false, C::Always,            4, "",                     nullptr,                                           voxels<&VoxelGrid::radiance>,

@@ -29,7 +29,6 @@ inline constexpr char kGbufferSpecularColor[] = "gbuffer.specular_color";
 inline constexpr char kGbufferEmission[] = "gbuffer.emission";
 inline constexpr char kGbufferTextureSlack[] = "gbuffer.texture_slack";
 inline constexpr char kImageDirect[] = "image.direct";
-inline constexpr char kImageDirectUnshadowed[] = "image.direct_unshadowed";
 inline constexpr char kVoxelOccupancy[] = "voxel.occupancy";
 inline constexpr char kVoxelRadiance[] = "voxel.radiance";
 inline constexpr char kVoxelFragments[] = "voxel.fragments";

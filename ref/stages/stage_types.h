@@ -74,9 +74,6 @@ struct FrameImages {
   Image emission;
   Image particles;         // additive particle layer
   Image soft_shadow;       // 1: cone-traced visibility (if enabled)
-  // Reference only: direct light with every shadow test lit (the most a shadow-test tie can give;
-  // the comparison's admissible values for image.direct, docs/compare.md).
-  Image direct_unshadowed;
   Image final_image;
   std::vector<Image> diffuse_cones;  // ref only: each diffuse cone's (rgb, opacity), cone order of vct_shared.h
 };

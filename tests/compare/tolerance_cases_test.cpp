@@ -26,22 +26,28 @@ Image highlight_scene() {
   return img;
 }
 
-TEST(ToleranceCases, AHighlightTooBrightIsNoTie) {
+TEST(ToleranceCases, AValueBrighterThanAnyNeighbourIsNoTie) {
+  // A textured G-buffer value 19 % too bright where the reference has a one-texel peak: no
+  // neighbour of the reference has it, so no coverage or filtering tie can give it.
   const Image ref = highlight_scene();
   Image test = ref;
-  test.set_rgb(20, 20, vec3(7.58f));  // Schlick with (1 - h.v)^4: 19 % too bright
-  const ImageTies ties{&ref};         // unshadowed: the pixel is lit, nothing could be brighter
-  const StageVerdict v = compare_image_stage("image.direct", ref, test, nullptr, CompareOptions{}, nullptr, ties);
+  test.set_rgb(20, 20, vec3(7.58f));
+  const StageVerdict v = compare_image_stage("gbuffer.emission", ref, test, nullptr, CompareOptions{});
   EXPECT_EQ(v.verdict, Verdict::Fail) << v.note;
   EXPECT_EQ(v.extra.at("inadmissible").get<size_t>(), 1u);
+  // A value of one of its neighbours is a tie (warn).
+  test.set_rgb(20, 20, vec3(0.5f));
+  EXPECT_EQ(compare_image_stage("gbuffer.emission", ref, test, nullptr, CompareOptions{}).verdict, Verdict::Warn);
 }
 
-TEST(ToleranceCases, AShadowTestTieMayDarkenToAnyVisibility) {
+TEST(ToleranceCases, ShadingStagesKeepTheCountedAllowanceForNow) {
+  // image.direct's bound does not yet carry its G-buffer inputs' texture freedom (demo_room at
+  // 128^2 shows a lit, normal-mapped edge pixel 2.5 % above the 2^-6 bound), so its ties are
+  // still counted, not judged by value: the same 19 % highlight only warns (issue 13 case 2).
   const Image ref = highlight_scene();
   Image test = ref;
-  test.set_rgb(20, 20, vec3(2.0f));  // some PCF taps flipped: between shadowed (0) and lit
-  const StageVerdict v =
-      compare_image_stage("image.direct", ref, test, nullptr, CompareOptions{}, nullptr, ImageTies{&ref});
+  test.set_rgb(20, 20, vec3(7.58f));
+  const StageVerdict v = compare_image_stage("image.direct", ref, test, nullptr, CompareOptions{});
   EXPECT_EQ(v.verdict, Verdict::Warn) << v.note;
 }
 
