@@ -94,6 +94,18 @@ class RunLock {
   int fd_ = -1;
 };
 
+namespace {
+// Temporaries of write_atomically (".tmp-<pid>-<name>") that a killed writer left behind. Only
+// called while holding the run directory's lock, so no live writer owns any of them.
+void remove_stale_temporaries(const std::string& dir) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && it->path().filename().string().rfind(".tmp-", 0) == 0) stale.push_back(it->path());
+  for (const fs::path& p : stale) fs::remove(p, ec);
+}
+}  // namespace
+
 RunDir::RunDir(std::string path, RunRole role) : path_(std::move(path)), role_(role) {
   std::error_code ec;
   if (fs::exists(path_, ec) && !fs::is_directory(path_, ec))
@@ -103,6 +115,7 @@ RunDir::RunDir(std::string path, RunRole role) : path_(std::move(path)), role_(r
   json_["format"] = "vct-run/1";
   if (role_ != RunRole::Run) return;
   lock_ = RunLock::acquire(path_);
+  remove_stale_temporaries(path_);
   const std::time_t now = std::time(nullptr);
   char when[64] = {};
   std::strftime(when, sizeof when, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
