@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "compare/stage_compare.h"
+#include "find_verdict.h"
 
 namespace vct::cmp {
 namespace {
@@ -18,11 +19,7 @@ StageSet voxel_set(const std::string& reduction) {
   return s;
 }
 
-const StageVerdict& find(const Report& r, const std::string& stage) {
-  for (const auto& s : r.stages)
-    if (s.stage == stage) return s;
-  throw std::runtime_error("no stage " + stage);
-}
+using test::find;
 
 TEST(StageCompare, IdenticalPasses) {
   const StageSet a = voxel_set("fixed_point");

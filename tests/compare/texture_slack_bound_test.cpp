@@ -3,15 +3,12 @@
 
 #include "compare/stage_compare.h"
 #include "compare/tolerance.h"
+#include "find_verdict.h"
 
 namespace vct::cmp {
 namespace {
 
-const StageVerdict& find(const Report& r, const std::string& stage) {
-  for (const auto& s : r.stages)
-    if (s.stage == stage) return s;
-  throw std::runtime_error("no stage " + stage);
-}
+using test::find;
 
 // 8x8 flat G-buffer; the test's normal and albedo differ by 0.05 on pixel (3, 4), which is beyond
 // the 8-bit-weight bounds (normal: 2^-6 + 2^-7 * 0.6 = 0.0203; albedo: 2^-7 + 2^-7 * 0.5 = 0.0117).

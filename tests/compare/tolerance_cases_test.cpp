@@ -5,15 +5,12 @@
 
 #include "compare/stage_compare.h"
 #include "compare/tolerance.h"
+#include "find_verdict.h"
 
 namespace vct::cmp {
 namespace {
 
-const StageVerdict& find(const Report& r, const std::string& stage) {
-  for (const auto& s : r.stages)
-    if (s.stage == stage) return s;
-  throw std::runtime_error("no stage " + stage);
-}
+using test::find;
 
 // A lit floor (0.5) with a one-pixel specular highlight (6.35) at (20, 20): its neighbours are
 // 12x darker, so the edge map flags it and the old rule counted any value there as a tie.
