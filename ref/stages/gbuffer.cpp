@@ -35,7 +35,8 @@ GBuffer make_gbuffer(int w, int h) {
 GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
   const int w = settings.width, h = settings.height;
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
-  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  // Alpha-masked fragments are discarded (gbuffer.frag does the same): what lies behind shows.
+  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h, &scene);
   GBuffer g = make_gbuffer(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
   parallel_rows(h, [&](int row) {
