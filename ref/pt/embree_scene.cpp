@@ -29,13 +29,15 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
 }
 
 // One triangle geometry over `triangles` (scene triangle indices; all of them when empty).
-RTCGeometry triangle_geometry(RTCDevice device, const Scene& scene, const std::vector<uint32_t>& triangles) {
+RTCGeometry triangle_geometry(RTCDevice device, const Scene& scene,
+                              const std::vector<uint32_t>& triangles) {
   const size_t count = triangles.empty() ? scene.triangles.size() : triangles.size();
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                        3 * sizeof(float), scene.positions.size()));
-  auto* idx = static_cast<uvec3*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                          3 * sizeof(uint32_t), count));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                        scene.positions.size()));
+  auto* idx = static_cast<uvec3*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
   check(device, "buffer allocation");
   std::memcpy(v, scene.positions.data(), scene.positions.size() * sizeof(vec3));
   if (triangles.empty()) {

@@ -51,7 +51,8 @@ class EmbreeScene {
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
-  std::vector<uint32_t> opaque_triangles_;  // geometry 0's primitive -> scene triangle; empty: identity
+  std::vector<uint32_t>
+      opaque_triangles_;  // geometry 0's primitive -> scene triangle; empty: identity
   std::unique_ptr<AlphaFilterData> masked_;  // geometry 1, or null when no triangle is alpha tested
 };
 

@@ -6,7 +6,8 @@
 namespace vct {
 
 // GL passes AlphaMode to alpha_mask.glsl as its integer value.
-static_assert(int(AlphaMode::Opaque) == sh::ALPHA_MODE_OPAQUE && int(AlphaMode::Mask) == sh::ALPHA_MODE_MASK &&
+static_assert(int(AlphaMode::Opaque) == sh::ALPHA_MODE_OPAQUE &&
+                  int(AlphaMode::Mask) == sh::ALPHA_MODE_MASK &&
                   int(AlphaMode::Blend) == sh::ALPHA_MODE_BLEND,
               "AlphaMode must match vct_shared.h");
 
@@ -32,7 +33,8 @@ float base_color_alpha(const Scene& scene, uint32_t triangle, float b1, float b2
 bool surface_masked(const Scene& scene, uint32_t triangle, float b1, float b2) {
   const Material& m = scene.materials[scene.triangle_material[triangle]];
   if (!m.alpha_tested()) return false;
-  return sh::alpha_discards(int(m.alpha_mode), base_color_alpha(scene, triangle, b1, b2), m.alpha_cutoff);
+  return sh::alpha_discards(int(m.alpha_mode), base_color_alpha(scene, triangle, b1, b2),
+                            m.alpha_cutoff);
 }
 
 bool scene_has_alpha_test(const Scene& scene) {

@@ -84,15 +84,16 @@ std::vector<uint8_t> to_rgba8(const tinygltf::Image& img) {
 
 // glTF 2.0 §3.9.4 / material.schema.json: alphaMode is OPAQUE (default), MASK or BLEND;
 // alphaCutoff (default 0.5) is >= 0. BLEND is rendered as MASK at 0.5 (docs/scenes.md).
-void read_alpha_mode(const Context& ctx, const tinygltf::Material& g, const std::string& owner, Material& mat,
-                     std::vector<std::string>& warnings) {
+void read_alpha_mode(const Context& ctx, const tinygltf::Material& g, const std::string& owner,
+                     Material& mat, std::vector<std::string>& warnings) {
   if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) {
     mat.alpha_mode = AlphaMode::Opaque;
   } else if (g.alphaMode == "MASK") {
     mat.alpha_mode = AlphaMode::Mask;
   } else if (g.alphaMode == "BLEND") {
     mat.alpha_mode = AlphaMode::Blend;
-    warnings.push_back(owner + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 in every engine");
+    warnings.push_back(
+        owner + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 in every engine");
   } else {
     fail(ctx, owner + ": alphaMode \"" + g.alphaMode + "\" is not OPAQUE, MASK or BLEND");
   }

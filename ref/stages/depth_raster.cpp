@@ -38,12 +38,12 @@ void depth_test_span(const RasterTriangle& t, const EdgeSetup& e, int y, int x0,
 // The span of an alpha-tested triangle, pixel by pixel: interpolate_at_centre gives the same depth
 // bits as depth_test_span (the same exact edge values over the same area, then
 // interpolate_window_depth) and the perspective-correct barycentrics the alpha test needs.
-void masked_depth_span(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, float* row,
-                       const Scene& scene) {
+void masked_depth_span(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1,
+                       float* row, const Scene& scene) {
   RasterFragment f;
   for (int x = x0; x <= x1; ++x) {
     interpolate_at_centre(t, e, x, y, f);
-    if (!(f.depth < row[x])) continue;  // GL_LESS
+    if (!(f.depth < row[x])) continue;                                  // GL_LESS
     if (surface_masked(scene, t.source, f.bary.y, f.bary.z)) continue;  // discarded
     row[x] = f.depth;
   }
@@ -67,8 +67,8 @@ void depth_triangle(const RasterTriangle& t, int y0, int y1, int height, float* 
 }  // namespace
 
 std::vector<float> render_depth(const std::vector<vec3>& positions,
-                                const std::vector<uvec3>& triangles, const mat4& view_proj, int width,
-                                int height, const Scene* alpha_scene) {
+                                const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                int width, int height, const Scene* alpha_scene) {
   const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
   std::vector<float> depth(size_t(width) * size_t(height), 1.0f);
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {

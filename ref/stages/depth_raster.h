@@ -16,7 +16,7 @@ namespace vct {
 /// With `alpha_scene` (whose triangles these are), fragments of alpha-tested triangles that
 /// surface_masked() cuts away write nothing (scene/alpha_mask.h), as a discard in GL's depth pass.
 std::vector<float> render_depth(const std::vector<vec3>& positions,
-                                const std::vector<uvec3>& triangles, const mat4& view_proj, int width,
-                                int height, const Scene* alpha_scene = nullptr);
+                                const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                int width, int height, const Scene* alpha_scene = nullptr);
 
 }  // namespace vct

@@ -210,8 +210,9 @@ BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vec
   return b;
 }
 
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
-                                   const mat4& view_proj, int width, int height, const Scene* alpha_scene) {
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
+                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                   int width, int height, const Scene* alpha_scene) {
   const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
   VisibilityBuffer vb;
   vb.width = width;

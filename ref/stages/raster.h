@@ -150,8 +150,8 @@ struct VisibilityBuffer {
 /// Parallel over bands of rows; each band walks the triangles in index order, so the result does
 /// not depend on the thread count. With `alpha_scene` (whose triangles these are), a fragment that
 /// scene/alpha_mask.h's surface_masked() cuts away is discarded before the depth test writes.
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
-                                   const mat4& view_proj, int width, int height,
-                                   const Scene* alpha_scene = nullptr);
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
+                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                   int width, int height, const Scene* alpha_scene = nullptr);
 
 }  // namespace vct

@@ -33,7 +33,8 @@ Voxelization voxelize_conservative(const Scene& scene, int n) {
           // Alpha masks are tested at the fragment's one evaluation point, as the GPU rule tests
           // its pixel centre: a voxel whose closest point is cut away holds none of this triangle
           // (docs/pipeline.md, "Voxelization").
-          if (alpha_tested && surface_masked(scene, uint32_t(ti), float(bc.x), float(bc.y))) continue;
+          if (alpha_tested && surface_masked(scene, uint32_t(ti), float(bc.x), float(bc.y)))
+            continue;
           const SurfacePoint sp = interpolate_surface(scene, uint32_t(ti), float(bc.x), float(bc.y));
           out.push_back({ivec3(x, y, z), sp.position, sp.normal, uint32_t(ti), float(bc.x), float(bc.y)});
         }

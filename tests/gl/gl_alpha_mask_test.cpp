@@ -37,9 +37,11 @@ cmp::Report judge(GlContext& ctx, const Scene& scene, const Settings& s, const F
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), gl_set);
   const FrameResult ref_on_gl = cmp::reference_on_test_inputs(scene, gl, s.vct);
-  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-                               s.vct.soft_shadows);
-  std::printf("  foliage, gl_fault '%s': failing stages: %s\n", fault.c_str(), failing_stages(rep).c_str());
+  cmp::apply_isolated_verdicts(
+      rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
+      s.vct.soft_shadows);
+  std::printf("  foliage, gl_fault '%s': failing stages: %s\n", fault.c_str(),
+              failing_stages(rep).c_str());
   return rep;
 }
 
@@ -70,13 +72,15 @@ TEST(GlAlphaMask, HalfMaskedCardShowsOnlyItsRightHalf) {
   int kept = 0, cut = 0;
   for (int row = 0; row < 48; ++row)
     for (int x = 0; x < 48; ++x) {
-      const float nx = (float(x) + 0.5f) / 24.0f - 1.0f, ny = (float(47 - row) + 0.5f) / 24.0f - 1.0f;
+      const float nx = (float(x) + 0.5f) / 24.0f - 1.0f,
+                  ny = (float(47 - row) + 0.5f) / 24.0f - 1.0f;
       const vec4 a = inv * vec4(nx, ny, -1.0f, 1.0f), b = inv * vec4(nx, ny, 1.0f, 1.0f);
       const vec3 pa = vec3(a) / a.w, pb = vec3(b) / b.w;
       const vec3 q = pa + (pb - pa) * (pa.z / (pa.z - pb.z));
       const CardSide side = card_side(q.x, q.y, 0.02f);
       if (side == CardSide::Undecided) continue;
-      EXPECT_NEAR(gl.gbuffer.position.at(x, row, 2), side == CardSide::Kept ? 0.0f : -1.0f, 1e-4f) << x << "," << row;
+      EXPECT_NEAR(gl.gbuffer.position.at(x, row, 2), side == CardSide::Kept ? 0.0f : -1.0f, 1e-4f)
+          << x << "," << row;
       (side == CardSide::Kept ? kept : cut) += 1;
     }
   EXPECT_GT(kept, 150);
@@ -84,7 +88,8 @@ TEST(GlAlphaMask, HalfMaskedCardShowsOnlyItsRightHalf) {
   // Shadow map and voxels: the same as the reference's (which tests/ref/alpha_mask_test.cpp checks
   // against the hand-computed halves), stage by stage.
   const FrameResult ref = render_ref_frame(scene, s);
-  const cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), cmp::stage_set_from_frame(gl, s.vct));
+  const cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct),
+                                                  cmp::stage_set_from_frame(gl, s.vct));
   EXPECT_EQ(rep.first_failing(), "") << failing_stages(rep);
 }
 
@@ -96,13 +101,15 @@ TEST(GlAlphaMask, FoliageAgreesWithTheReferenceStageByStage) {
 
 TEST(GlAlphaMask, IgnoringTheMaskInTheShadowPassFailsTheShadowMap) {
   VCT_REQUIRE_GL();
-  const cmp::Report rep = judge(*ctx, foliage(), foliage_settings(), foliage_reference(), "alpha_shadow");
+  const cmp::Report rep =
+      judge(*ctx, foliage(), foliage_settings(), foliage_reference(), "alpha_shadow");
   EXPECT_EQ(rep.first_failing(), "shadow_map.0") << failing_stages(rep);
 }
 
 TEST(GlAlphaMask, IgnoringTheMaskInTheVoxelizationFailsOccupancy) {
   VCT_REQUIRE_GL();
-  const cmp::Report rep = judge(*ctx, foliage(), foliage_settings(), foliage_reference(), "alpha_voxel");
+  const cmp::Report rep =
+      judge(*ctx, foliage(), foliage_settings(), foliage_reference(), "alpha_voxel");
   EXPECT_EQ(rep.first_failing(), "voxel.occupancy") << failing_stages(rep);
 }
 

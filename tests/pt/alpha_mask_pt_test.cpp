@@ -28,7 +28,8 @@ TEST(PtAlphaMask, RaysPassOnlyThroughTheCutAwayHalf) {
   int kept = 0, cut = 0;
   for (int j = 0; j < 21; ++j)
     for (int i = 0; i < 21; ++i) {
-      const float x = -1.25f + 2.5f * float(i) / 20.0f + 0.013f, y = -1.25f + 2.5f * float(j) / 20.0f + 0.007f;
+      const float x = -1.25f + 2.5f * float(i) / 20.0f + 0.013f,
+                  y = -1.25f + 2.5f * float(j) / 20.0f + 0.007f;
       const CardSide side = card_side(x, y, 1e-3f);
       if (side == CardSide::Undecided) continue;
       for (float from : {2.0f, -0.5f}) {  // in front of the card, and between it and the backdrop
@@ -51,7 +52,8 @@ TEST(PtAlphaMask, RaysPassOnlyThroughTheCutAwayHalf) {
         }
         // Occlusion of the segment up to just before the backdrop: the card alone decides.
         const float to_card = std::abs(from);
-        EXPECT_EQ(rt.occluded(org, dir, 0.0f, to_card + 0.5f), side == CardSide::Kept) << x << "," << y;
+        EXPECT_EQ(rt.occluded(org, dir, 0.0f, to_card + 0.5f), side == CardSide::Kept)
+            << x << "," << y;
       }
       (side == CardSide::Kept ? kept : cut) += 1;
     }
@@ -85,14 +87,16 @@ TEST(PtAlphaMask, StripedCardTransmitsItsShareOfAnEmittersLight) {
   const size_t first_card_vertex = s.positions.size();
   test::add_quad(s, vec3(-10, -10, 0), vec3(20, 0, 0), vec3(0, 20, 0), card_mat);
   constexpr float kPeriod = 0.04f;
-  for (size_t v = first_card_vertex; v < s.positions.size(); ++v) s.uv0[v] = vec2(s.positions[v].x / kPeriod, 0.5f);
+  for (size_t v = first_card_vertex; v < s.positions.size(); ++v)
+    s.uv0[v] = vec2(s.positions[v].x / kPeriod, 0.5f);
   Texture stripes;
   stripes.width = 4;
   stripes.height = 1;
   stripes.rgba8 = {0, 0, 0, 0, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0, 255};
   s.textures.push_back(stripes);
   const uint32_t receiver = test::add_material(s, test::lambertian(vec3(0.5f), vec3(0.0f), false));
-  test::add_quad(s, vec3(-0.2f, -0.2f, 0.5f), vec3(0, 0.4f, 0), vec3(0.4f, 0, 0), receiver);  // front -z
+  test::add_quad(s, vec3(-0.2f, -0.2f, 0.5f), vec3(0, 0.4f, 0), vec3(0.4f, 0, 0),
+                 receiver);  // front -z
   s.camera = test::look_at(vec3(0.0f, 0.0f, 0.3f), vec3(0.0f, 0.0f, 1.0f), vec3(0, 1, 0), 0.5f);
   test::finish(s);
 
@@ -115,8 +119,9 @@ TEST(PtAlphaMask, StripedCardTransmitsItsShareOfAnEmittersLight) {
   const double got = sum / n, sigma = std::sqrt(variance) / n;
   const double view_factor = 4.0 * corner_view_factor(20.0, 20.0, 1.5);
   const double expected = 0.5 * 1.0 * view_factor * 0.25;
-  std::printf("[striped mask] receiver radiance %.5f, expected %.5f (F = %.5f), %.2f sigma, sigma %.5f\n", got,
-              expected, view_factor, (got - expected) / sigma, sigma);
+  std::printf(
+      "[striped mask] receiver radiance %.5f, expected %.5f (F = %.5f), %.2f sigma, sigma %.5f\n",
+      got, expected, view_factor, (got - expected) / sigma, sigma);
   EXPECT_LT(sigma, 0.02 * expected);  // power: an unmasked (4x) or a half-open card (2x) fails
   EXPECT_NEAR(got, expected, 4.0 * sigma);
 }

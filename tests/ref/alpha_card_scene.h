@@ -30,7 +30,8 @@ inline void add_card_quad(Scene& s, float z, float half, uint32_t material) {
 }
 
 /// Material 0: the card (albedo 0.5, alpha_mode, cutoff); material 1: the backdrop (albedo 0.8).
-inline Scene half_masked_card(bool backdrop, AlphaMode mode = AlphaMode::Mask, float cutoff = 0.5f) {
+inline Scene half_masked_card(bool backdrop, AlphaMode mode = AlphaMode::Mask,
+                              float cutoff = 0.5f) {
   Scene s;
   s.source = "test:half_masked_card";
   Texture t;
@@ -75,7 +76,8 @@ inline Scene half_masked_card(bool backdrop, AlphaMode mode = AlphaMode::Mask, f
 /// the alpha edge x = 0 or the card's border, where a sample position's rounding decides.
 enum class CardSide { Kept, CutAway, Undecided };
 inline CardSide card_side(float x, float y, float margin) {
-  if (std::abs(x) < margin || std::abs(std::abs(x) - 1.0f) < margin || std::abs(std::abs(y) - 1.0f) < margin)
+  if (std::abs(x) < margin || std::abs(std::abs(x) - 1.0f) < margin ||
+      std::abs(std::abs(y) - 1.0f) < margin)
     return CardSide::Undecided;
   if (std::abs(x) > 1.0f || std::abs(y) > 1.0f) return CardSide::CutAway;  // off the card
   return x > 0.0f ? CardSide::Kept : CardSide::CutAway;

@@ -37,8 +37,10 @@ TEST(AlphaMask, AlphaIsTheBilinearRampOfTheTwoTexels) {
     const vec2 b = first_triangle_bary(xs[i], -0.95f);
     EXPECT_NEAR(base_color_alpha(s, 0, b.x, b.y), expected[i], 1e-6f) << "x = " << xs[i];
   }
-  EXPECT_TRUE(surface_masked(s, 0, first_triangle_bary(-0.01f, -0.95f).x, first_triangle_bary(-0.01f, -0.95f).y));
-  EXPECT_FALSE(surface_masked(s, 0, first_triangle_bary(0.01f, -0.95f).x, first_triangle_bary(0.01f, -0.95f).y));
+  EXPECT_TRUE(surface_masked(s, 0, first_triangle_bary(-0.01f, -0.95f).x,
+                             first_triangle_bary(-0.01f, -0.95f).y));
+  EXPECT_FALSE(surface_masked(s, 0, first_triangle_bary(0.01f, -0.95f).x,
+                              first_triangle_bary(0.01f, -0.95f).y));
 }
 
 TEST(AlphaMask, OneSharedTestBlendIsMaskAtOneHalfOpaqueNeverDiscards) {
@@ -69,8 +71,10 @@ vec3 ray_on_plane(const mat4& view_proj, int width, int height, float wx, float 
 }
 
 // The world z of the surface a depth texel holds (window depth unprojected).
-float depth_to_world_z(const mat4& view_proj, int width, int height, float wx, float wy, float depth) {
-  const vec4 ndc(wx / float(width) * 2.0f - 1.0f, wy / float(height) * 2.0f - 1.0f, depth * 2.0f - 1.0f, 1.0f);
+float depth_to_world_z(const mat4& view_proj, int width, int height, float wx, float wy,
+                       float depth) {
+  const vec4 ndc(wx / float(width) * 2.0f - 1.0f, wy / float(height) * 2.0f - 1.0f,
+                 depth * 2.0f - 1.0f, 1.0f);
   const vec4 w = glm::inverse(view_proj) * ndc;
   return w.z / w.w;
 }
@@ -152,7 +156,8 @@ TEST(AlphaMask, GpuRuleVoxelsHoldOnlyTheRightHalf) {
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       // One sample at the pixel centre, i.e. the column's centre; tested there.
-      const float cx = s.volume.origin.x + (float(x) + 0.5f) * step, cy = s.volume.origin.y + (float(y) + 0.5f) * step;
+      const float cx = s.volume.origin.x + (float(x) + 0.5f) * step,
+                  cy = s.volume.origin.y + (float(y) + 0.5f) * step;
       const CardSide side = card_side(cx, cy, 1e-3f);
       if (side == CardSide::Undecided) continue;
       EXPECT_EQ(column_occupied(v, x, y), side == CardSide::Kept) << "column " << x << "," << y;
@@ -172,7 +177,8 @@ TEST(AlphaMask, ConservativeVoxelsHoldOnlyTheRightHalf) {
     for (int x = 0; x < n; ++x) {
       const float x0 = s.volume.origin.x + float(x) * step, x1 = x0 + step;
       const float y0 = s.volume.origin.y + float(y) * step, y1 = y0 + step;
-      if (x0 < 0.0f && x1 > 0.0f) continue;  // straddles the alpha edge: tested at the closest point
+      if (x0 < 0.0f && x1 > 0.0f)
+        continue;  // straddles the alpha edge: tested at the closest point
       const bool on_card = x0 < 1.0f && x1 > -1.0f && y0 < 1.0f && y1 > -1.0f;
       const bool expected = on_card && x0 >= 0.0f;
       EXPECT_EQ(column_occupied(v, x, y), expected) << "column " << x << "," << y;
@@ -189,8 +195,10 @@ TEST(AlphaMask, OpaqueCardKeepsBothHalves) {
   const float step = s.volume.size / 16.0f;
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
-      const float cx = s.volume.origin.x + (float(x) + 0.5f) * step, cy = s.volume.origin.y + (float(y) + 0.5f) * step;
-      if (std::abs(cx) < 0.999f && std::abs(cy) < 0.999f) EXPECT_TRUE(column_occupied(v, x, y)) << x << "," << y;
+      const float cx = s.volume.origin.x + (float(x) + 0.5f) * step,
+                  cy = s.volume.origin.y + (float(y) + 0.5f) * step;
+      if (std::abs(cx) < 0.999f && std::abs(cy) < 0.999f)
+        EXPECT_TRUE(column_occupied(v, x, y)) << x << "," << y;
     }
 }
 
