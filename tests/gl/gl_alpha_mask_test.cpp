@@ -45,9 +45,16 @@ cmp::Report judge(GlContext& ctx, const Scene& scene, const Settings& s, const F
   return rep;
 }
 
+// The size `vct validate` is asked to pass at (issue 13): 128^2, grid 64, the default 1024^2
+// shadow map. Two known gaps at other sizes (docs/compare.md, "Alpha-mask ties"): at grid 32 a
+// correct GL fails voxel.radiance on 8 of 1227 voxels (0.65 % against the 0.5 % shading-tie
+// share: 3 whole PCF-tap differences under the leaves' shadows, 5 textured leaf voxels one
+// fixed-point quantum past 2^-7 |r|, issue 13 case 1's voxel minification); with a 512^2 shadow
+// map it fails shadow_map.0 on one alpha-tie texel that no depth edge flags and whose flipped
+// value (the front card's depth) its 3x3 neighbourhood does not hold.
 Settings foliage_settings() {
-  Settings s = small_settings(32, 64);
-  s.vct.shadow_map_size = 256;
+  Settings s = small_settings(64, 128);
+  s.vct.shadow_map_size = 1024;
   return s;
 }
 
