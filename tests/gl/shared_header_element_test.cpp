@@ -793,7 +793,8 @@ ElementCase alpha_case() {
   c.glsl =
       "int m = int(uin(0u).x); vec4 f = fin(1u);\n"
       "putu(0u, uvec4(alpha_discards(m, f.x, f.y) ? 1u : 0u,\n"
-      "               floatBitsToUint(effective_alpha_cutoff(m, f.y)), floatBitsToUint(BLEND_ALPHA_CUTOFF),\n"
+      "               floatBitsToUint(effective_alpha_cutoff(m, f.y)), "
+      "floatBitsToUint(BLEND_ALPHA_CUTOFF),\n"
       "               uint(ALPHA_MODE_OPAQUE + 2 * ALPHA_MODE_MASK + 4 * ALPHA_MODE_BLEND)));";
   c.cpu = [](const uvec4* in) {
     const int m = int(in[0].x);
