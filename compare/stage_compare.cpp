@@ -144,9 +144,19 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
+  // Alpha-mask ties (docs/compare.md, "Alpha-mask ties") are edges inside a triangle that the
+  // depth may not show: the reference marks them, camera-space stages (those with a depth hint)
+  // add them to the edge map, where a flipped pixel must still be an admissible neighbour value.
+  const int alpha_ch = texture_slack && edge_hint ? alpha_tie_channel(*texture_slack) : -1;
+  const bool alpha_ties =
+      alpha_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
   // Depth images are their own discontinuity hint.
   if (!edge_hint && m.id == ToleranceModel::Depth) edge_hint = &ref;
-  const std::vector<uint8_t> edge = edge_map(ref, edge_hint);
+  std::vector<uint8_t> edge = edge_map(ref, edge_hint);
+  if (alpha_ties)
+    for (int y = 0; y < ref.height; ++y)
+      for (int x = 0; x < ref.width; ++x)
+        if (texture_slack->at(x, y, alpha_ch) > 0.0f) edge[size_t(y) * size_t(ref.width) + size_t(x)] = 1;
   std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
   std::vector<Offender> offenders;
   double se = 0;

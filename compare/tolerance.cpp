@@ -130,6 +130,12 @@ int texture_slack_channel(const std::string& stage, const Image& slack) {
   return -1;
 }
 
+int alpha_tie_channel(const Image& slack) {
+  for (int c = 0; c < slack.channels && size_t(c) < slack.channel_names.size(); ++c)
+    if (slack.channel_names[size_t(c)] == "alpha_tie") return c;
+  return -1;
+}
+
 double VoxelModel::bound(double ref, double fragments) const {
   const double r = std::abs(ref);
   return abs + rel * r + fragments * per_fragment_rel * r + half_ulps * half_ulp(ref);

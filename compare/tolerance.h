@@ -47,6 +47,10 @@ ImageModel image_model(const std::string& stage);
 /// that are not textured or a slack image without that channel.
 int texture_slack_channel(const std::string& stage, const Image& slack);
 
+/// Channel "alpha_tie" of the reference's texture slack image (1 where the alpha test may go
+/// either way, stages/alpha_ties.h), or -1 when the image has none.
+int alpha_tie_channel(const Image& slack);
+
 /// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.
 enum class VoxelModelId { FixedPointVsExact, FixedPointExactShading, CasInterval, Rgba8Quantised, Rgba16fUlp, Rgba32fSum };
 

@@ -32,6 +32,11 @@ inline constexpr GlFault kGlFaults[] = {
     {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",
      false},
     {"cone_step", "the cone march starts one step late (cone.glsl)", stage_names::kImageIndirectDiffuse, false},
+    // Alpha-mask faults show only on scenes with alpha masks (scenes/foliage.gltf).
+    {"alpha_shadow", "the depth pass ignores alphaMode MASK (depth_only.frag)", "shadow_map.0",
+     false},
+    {"alpha_voxel", "voxelization ignores alphaMode MASK (voxelize.frag)",
+     stage_names::kVoxelOccupancy, false},
     {"missing_barrier",
      "no glMemoryBarrier between the voxelization draw and the resolve dispatch (gl_pass_voxel.cpp); "
      "invisible on llvmpipe, which finishes each pass before the next",

@@ -31,7 +31,7 @@ void shadow_pass(GlFrame& f) {
     const float one = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
     prog.set("u_view_proj", f.light_view_proj[size_t(i)]);
-    f.geo.draw_depth_only();
+    f.geo.draw_depth_only(prog);
   }
   check_gl("shadow pass");
 }
@@ -67,7 +67,7 @@ void gbuffer_pass(GlFrame& f) {
     glDepthFunc(GL_LESS);
     depth_prog.use();
     depth_prog.set("u_view_proj", view_proj);
-    f.geo.draw_depth_only();
+    f.geo.draw_depth_only(depth_prog);
   }
   {
     ScopedTimer timer(f.timers, "gbuffer");

@@ -8,6 +8,7 @@
 
 #include "gl_context.h"
 #include "gl_setting_uniforms.h"
+#include "shared/vct_shared.h"
 
 namespace vct::gl {
 namespace {
@@ -88,6 +89,7 @@ GlScene::GlScene(const Scene& scene) : scene_(scene) {
     glVertexArrayAttribFormat(vao_, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
     glVertexArrayAttribBinding(vao_, a, 0);
   }
+  for (const Material& m : scene.materials) alpha_tested_ = alpha_tested_ || m.alpha_tested();
   const uint8_t white[4] = {255, 255, 255, 255};
   glCreateTextures(GL_TEXTURE_2D, 1, &white_);
   glTextureStorage2D(white_, 1, GL_RGBA8, 1, 1);
@@ -124,6 +126,8 @@ void GlScene::bind_material(const Program& p, const Material& m) {
   p.set("u_emission", m.emission());
   p.set("u_specular_factor", m.specular_factor);
   p.set("u_specular_color", m.specular_color_factor);
+  p.set("u_alpha_mode", int(m.alpha_mode));  // AlphaMode's values are vct_shared.h's ALPHA_MODE_*
+  p.set("u_alpha_cutoff", m.alpha_cutoff);
   const TextureRef* refs[4] = {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
                                &m.emissive_texture};
   const bool srgb[4] = {true, false, false, true};
@@ -147,7 +151,12 @@ void GlScene::draw(const Program& p) {
   check_gl("scene draw");
 }
 
-void GlScene::draw_depth_only() const {
+void GlScene::draw_depth_only(const Program& p) {
+  if (alpha_tested_) {
+    draw(p);  // per material: the alpha test needs its uniforms and texture
+    return;
+  }
+  p.set("u_alpha_mode", sh::ALPHA_MODE_OPAQUE);
   glBindVertexArray(vao_);
   glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
   check_gl("depth draw");

@@ -24,8 +24,10 @@ class GlScene {
   explicit GlScene(const Scene& scene);
   /// Draws every triangle (one call per material), setting material uniforms on `p` first.
   void draw(const Program& p);
-  /// Draws positions only (depth passes), one call for everything.
-  void draw_depth_only() const;
+  /// Draws for the depth passes (depth_only.frag): one call for everything when no material is
+  /// alpha tested; otherwise one call per material with its alpha-test uniforms and base colour
+  /// texture bound on `p`.
+  void draw_depth_only(const Program& p);
   /// Spot-light uniforms (lights.glsl) for `p`; `view_proj` one per light.
   void set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& view_proj) const;
   const Scene& scene() const { return scene_; }
@@ -40,6 +42,7 @@ class GlScene {
   std::vector<DrawRange> ranges_;
   std::map<std::pair<int, bool>, GLuint> textures_;
   GLuint white_ = 0;
+  bool alpha_tested_ = false;  // some material has alphaMode MASK or BLEND
 };
 
 /// Maximum spot lights the shaders take (lights.glsl's MAX_LIGHTS).

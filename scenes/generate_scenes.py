@@ -261,6 +261,43 @@ def tile_normal_two_channel(size=64):
     return png_bytes(size, size, rows)
 
 
+def leaf_card_texture(size=64):
+    """RGBA leaves on a stem for alpha-masked foliage cards: alpha 255 on the plant, 0 elsewhere
+    (hard edges, so the alpha test's edge is where bilinear alpha crosses the cutoff, half a texel
+    from the plant's outline), and a transparent border of 2 texels so REPEAT never wraps the
+    plant onto the opposite edge. Row 0 is the top of the image (the card's top)."""
+    leaves = []  # centre x, centre y (texels), half-length, half-width, angle (radians)
+    for k in range(6):
+        side = 1 if k % 2 == 0 else -1
+        y = 14 + 8 * k
+        leaves.append((size / 2 + side * 10, y, 10.5, 4.0, side * math.radians(35)))
+    leaves.append((size / 2, 9, 4.0, 7.0, 0.0))  # the top leaf, upright
+    rows = []
+    for y in range(size):
+        r = bytearray()
+        for x in range(size):
+            px, py = x + 0.5, y + 0.5
+            inside, vein = False, False
+            if abs(px - size / 2) <= 1.0 and 6 <= py <= size - 2:
+                inside, vein = True, True  # the stem
+            for cx, cy, a, b, ang in leaves:
+                # Leaf frame: u along the leaf (tilted up by ang), v across it.
+                dx, dy = px - cx, -(py - cy)
+                u = dx * math.cos(ang) + dy * math.sin(ang)
+                v = -dx * math.sin(ang) + dy * math.cos(ang)
+                if (u / a) ** 2 + (v / b) ** 2 <= 1.0:
+                    inside = True
+                    vein = vein or abs(v) < 0.6
+            if not inside:
+                r += bytes((40, 90, 30, 0))
+                continue
+            shade = 0.8 + 0.2 * hash01(x // 3, y // 3, 11)
+            base = (55, 120, 40) if vein else (70, 160, 50)
+            r += bytes(tuple(min(255, int(shade * c)) for c in base) + (255,))
+        rows.append(bytes(r))
+    return png_bytes(size, size, rows, channels=4)
+
+
 # ----------------------------------------------------------------------------- glTF writer
 class Gltf:
     def __init__(self, generator_note):
@@ -308,9 +345,15 @@ class Gltf:
         return len(self.doc["meshes"]) - 1
 
     def material(self, name, color, metallic=0.0, roughness=1.0, lambert=False, emissive=None, strength=None,
-                 extras=None, **textures):
+                 extras=None, alpha_mode=None, alpha_cutoff=None, double_sided=False, **textures):
         mat = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(color) + [1.0],
                                                       "metallicFactor": metallic, "roughnessFactor": roughness}}
+        if alpha_mode:
+            mat["alphaMode"] = alpha_mode
+        if alpha_cutoff is not None:
+            mat["alphaCutoff"] = alpha_cutoff
+        if double_sided:
+            mat["doubleSided"] = True
         ext = {}
         if lambert:
             ext.update(LAMBERT)
@@ -579,9 +622,40 @@ def thin_wall():
     return g.write("thin_wall.gltf")
 
 
+def foliage():
+    """Alpha-masked foliage: three plants of two crossed, double-sided 1 m x 1.4 m cards each, an
+    RGBA leaf texture (alphaMode MASK, alphaCutoff 0.5), on a 3 m floor under a spot light from the
+    front right that throws the leaves' shadows onto the floor behind them, with an emissive panel behind the plants seen
+    through the gaps between the leaves (docs/scenes.md, "Alpha modes")."""
+    g = Gltf("foliage cards with alpha masks")
+    t_leaf = g.texture(leaf_card_texture(), "leaf_card")
+    leaf = g.material("leaf_card", (1.0, 1.0, 1.0), roughness=0.7, alpha_mode="MASK", alpha_cutoff=0.5,
+                      double_sided=True, base_color=g.texture_info(t_leaf))
+    floor_mat = g.material("floor", (0.7, 0.68, 0.62), lambert=True)
+    panel = g.material("emissive_panel", (0.8, 0.8, 0.8), lambert=True, emissive=(1.0, 0.9, 0.7), strength=3.0)
+    floor = MeshData()
+    floor.quad([-1.5, 0, 1.5], [3, 0, 0], [0, 0, -3], nu=4, nv=4)
+    g.node("floor", mesh=g.mesh("floor", floor, floor_mat))
+    back = MeshData()
+    back.quad([-0.9, 0.2, -1.4], [1.8, 0, 0], [0, 0.9, 0])
+    g.node("emissive_panel", mesh=g.mesh("emissive_panel", back, panel))
+    W, H = 1.0, 1.4
+    for i, (x, z, turn) in enumerate([(-0.75, -0.35, 25), (0.1, 0.25, 60), (0.8, -0.55, 80)]):
+        card = MeshData()
+        for a in (turn, turn + 90):
+            d = [math.cos(math.radians(a)) * W, 0.0, -math.sin(math.radians(a)) * W]
+            # uv in [0, 1]^2 over the card: the texture's top row at the card's top.
+            card.quad(mul(d, -0.5), d, [0, H, 0], uv_scale=(1.0 / W, 1.0 / H))
+        g.node("plant_%d" % i, mesh=g.mesh("plant_%d" % i, card, leaf), translation=[x, 0.0, z])
+    g.spot("sun_spot", [1.4, 3.0, 1.6], look_rotation([1.4, 3.0, 1.6], [-0.2, 0.0, -0.6]), intensity=30.0,
+           inner=0.45, outer=0.7, color=(1.0, 0.97, 0.9))
+    g.camera([0.0, 1.4, 3.2], [0.0, 0.6, -0.2], yfov=0.85)
+    return g.write("foliage.gltf")
+
+
 def main():
     outputs = []
-    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall):
+    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage):
         result = make()
         outputs += result if isinstance(result, list) else [result]
     check = "--check" in sys.argv

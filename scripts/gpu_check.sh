@@ -77,11 +77,15 @@ render() {
   local fault
   for fault in $("$runner" --list-faults); do  # the table of gl/gl_faults.h
     if [ "$fault" = alpha_unclamped ]; then continue; fi  # needs aniso mips: below
+    case "$fault" in alpha_shadow|alpha_voxel) continue ;; esac  # need alpha masks: below
     one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa --gl-fault "$fault"
   done
   one "fault.racy_average.cas" "$box" --reduction cas --max-msaa --gl-fault racy_average
   one "fault.lost_update.cas" "$box" --reduction cas --max-msaa --gl-fault lost_update
   one "fault.alpha_unclamped.fixed" "$box" --reduction fixed --aniso --max-msaa --gl-fault alpha_unclamped
+  for fault in alpha_shadow alpha_voxel; do
+    one "fault.$fault.fixed" "$here/scenes/foliage.gltf" --reduction fixed --max-msaa --gl-fault "$fault"
+  done
   echo "  faults: $((SECONDS - t0)) s"
   mkdir -p "$out/timings"
   if [ "$timings" = 0 ]; then

@@ -1,6 +1,7 @@
 // Camera pass: the G-buffer (layout of vct::GBuffer). Normals face the camera: back faces flip the
-// interpolated normal before normal mapping.
+// interpolated normal before normal mapping. Alpha-masked fragments are discarded (alpha_mask.glsl).
 #include "surface.glsl"
+#include "alpha_mask.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;
@@ -15,6 +16,7 @@ layout(location = 4) out vec4 o_specular_color;
 layout(location = 5) out vec4 o_emission;
 
 void main() {
+  if (alpha_masked(v_uv0, v_uv1)) discard;
   float len = length(v_normal);
   vec3 n = len > 0.0f ? v_normal / len : vec3(0.0f, 0.0f, 1.0f);
   if (!gl_FrontFacing) n = -n;

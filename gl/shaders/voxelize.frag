@@ -2,9 +2,11 @@
 // depth index is floor of the interpolated voxel-space coordinate along the projection axis
 // (clamped to the grid).
 // Writes: fragment count (imageAtomicAdd), then either fixed-point sums (deterministic) or the
-// OpenGL Insights ch. 22 compare-and-swap running average on packed RGBA8.
+// OpenGL Insights ch. 22 compare-and-swap running average on packed RGBA8. Alpha-masked
+// fragments are discarded first (alpha_mask.glsl).
 #include "voxel_value.glsl"
 #include "voxel_fixed.glsl"
+#include "alpha_mask.glsl"
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;
@@ -79,6 +81,11 @@ void cas_average(ivec3 c, vec3 value) {
 }
 
 void main() {
+#ifndef VCT_FAULT_ALPHA_VOXEL
+  // A masked fragment adds neither opacity (count) nor light, tested at the pixel centre as the
+  // CPU's GPU-rule voxelizer tests it (ref/stages/voxelize_gpu.cpp).
+  if (alpha_masked(v_uv0, v_uv1)) discard;
+#endif
   ivec3 c = voxel_coords();
   vec3 value = voxel_radiance(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_tex);
   imageAtomicAdd(u_count, c, 1u);

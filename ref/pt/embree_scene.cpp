@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "scene/alpha_mask.h"
 
 namespace vct::pt {
 
@@ -13,6 +14,38 @@ void check(RTCDevice device, const char* what) {
   const RTCError err = rtcGetDeviceError(device);
   if (err != RTC_ERROR_NONE)
     throw EnvironmentError(std::string("Embree: ") + what + " failed (error " + std::to_string(int(err)) + ")");
+}
+
+// Embree 3 filter function (intersection and occlusion alike): a hit on a cut-away point of an
+// alpha-tested triangle is invalidated, so the ray continues to whatever lies behind it.
+void alpha_filter(const RTCFilterFunctionNArguments* args) {
+  const auto* data = static_cast<const EmbreeScene::AlphaFilterData*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+    const float b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i);
+    if (surface_masked(*data->scene, data->triangle[prim], b1, b2)) args->valid[i] = 0;
+  }
+}
+
+// One triangle geometry over `triangles` (scene triangle indices; all of them when empty).
+RTCGeometry triangle_geometry(RTCDevice device, const Scene& scene,
+                              const std::vector<uint32_t>& triangles) {
+  const size_t count = triangles.empty() ? scene.triangles.size() : triangles.size();
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                        scene.positions.size()));
+  auto* idx = static_cast<uvec3*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), count));
+  check(device, "buffer allocation");
+  std::memcpy(v, scene.positions.data(), scene.positions.size() * sizeof(vec3));
+  if (triangles.empty()) {
+    std::memcpy(idx, scene.triangles.data(), scene.triangles.size() * sizeof(uvec3));
+  } else {
+    for (size_t i = 0; i < count; ++i) idx[i] = scene.triangles[triangles[i]];
+  }
+  return geom;
 }
 
 }  // namespace
@@ -25,17 +58,25 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
     check(device_, "rtcNewScene");
     rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    if (!scene.triangles.empty()) {
-      RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                            3 * sizeof(float), scene.positions.size()));
-      auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(uint32_t), scene.triangles.size()));
-      check(device_, "buffer allocation");
-      std::memcpy(v, scene.positions.data(), scene.positions.size() * sizeof(vec3));
-      std::memcpy(idx, scene.triangles.data(), scene.triangles.size() * sizeof(uvec3));
+    if (scene_has_alpha_test(scene)) {
+      masked_ = std::make_unique<AlphaFilterData>();
+      masked_->scene = &scene;
+      for (uint32_t t = 0; t < uint32_t(scene.triangles.size()); ++t)
+        (triangle_alpha_tested(scene, t) ? masked_->triangle : opaque_triangles_).push_back(t);
+    }
+    if (!scene.triangles.empty() && (!masked_ || !opaque_triangles_.empty())) {
+      RTCGeometry geom = triangle_geometry(device_, scene, opaque_triangles_);
       rtcCommitGeometry(geom);
       rtcAttachGeometryByID(scene_, geom, 0);
+      rtcReleaseGeometry(geom);
+    }
+    if (masked_) {
+      RTCGeometry geom = triangle_geometry(device_, scene, masked_->triangle);
+      rtcSetGeometryUserData(geom, masked_.get());
+      rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+      rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+      rtcCommitGeometry(geom);
+      rtcAttachGeometryByID(scene_, geom, 1);
       rtcReleaseGeometry(geom);
     }
     rtcCommitScene(scene_);
@@ -45,6 +86,11 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
     rtcReleaseDevice(device_);
     throw;
   }
+}
+
+uint32_t EmbreeScene::scene_triangle(uint32_t geom_id, uint32_t prim_id) const {
+  if (geom_id == 1) return masked_->triangle[prim_id];
+  return opaque_triangles_.empty() ? prim_id : opaque_triangles_[prim_id];
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -72,7 +118,7 @@ Hit EmbreeScene::intersect(const vec3& org, const vec3& dir, float tnear, float 
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
   h.hit = true;
   h.t = rh.ray.tfar;
-  h.triangle = rh.hit.primID;
+  h.triangle = scene_triangle(rh.hit.geomID, rh.hit.primID);
   h.b1 = rh.hit.u;
   h.b2 = rh.hit.v;
   return h;

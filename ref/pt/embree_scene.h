@@ -1,10 +1,14 @@
-// The Scene's triangles as one Embree 3 triangle geometry (already flattened to world space by the
+// The Scene's triangles as Embree 3 triangle geometry (already flattened to world space by the
 // loader), owned RAII-style. Queries are thread-safe: rtcIntersect1/rtcOccluded1 run on the
-// calling thread.
+// calling thread. Triangles of alpha-tested materials (glTF alphaMode MASK / BLEND) form a second
+// geometry whose intersection and occlusion filter functions reject hits that
+// scene/alpha_mask.h's surface_masked() cuts away; the opaque geometry has no filter, and a scene
+// without alpha tests builds exactly the one geometry it always did.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <embree3/rtcore.h>
 
@@ -36,9 +40,20 @@ class EmbreeScene {
 
   RTCScene handle() const { return scene_; }
 
+  /// What the masked geometry's filter functions read (geometry user data).
+  struct AlphaFilterData {
+    const Scene* scene = nullptr;
+    std::vector<uint32_t> triangle;  // primitive id -> scene triangle
+  };
+
  private:
+  uint32_t scene_triangle(uint32_t geom_id, uint32_t prim_id) const;
+
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
+  std::vector<uint32_t>
+      opaque_triangles_;  // geometry 0's primitive -> scene triangle; empty: identity
+  std::unique_ptr<AlphaFilterData> masked_;  // geometry 1, or null when no triangle is alpha tested
 };
 
 }  // namespace vct::pt

@@ -6,6 +6,7 @@
 
 #include "pt/bsdf_sampling.h"
 #include "pt/camera_ray.h"
+#include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "shared/vct_shared.h"
 
@@ -126,6 +127,8 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng,
                               RayCounts& counts) const {
   const float u_sel = rng.next_float();
   const EmissiveTriangles::Sample ls = lights_.sample(u_sel, rng.next_2d());
+  // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
+  if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return;
   const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
   const vec3 to_light = lp.position - v.pos;
   const float dist2 = glm::dot(to_light, to_light);

@@ -1,6 +1,7 @@
 // glTF materials and textures into the Scene model: metallic-roughness, normal map (+ our
 // two-channel flag), emission (+ KHR_materials_emissive_strength), KHR_materials_specular and
-// KHR_texture_transform on every texture slot. Conventions: docs/scenes.md.
+// KHR_texture_transform on every texture slot, alphaMode and alphaCutoff. Conventions:
+// docs/scenes.md.
 #include <cmath>
 
 #include "scene/gltf_internal.h"
@@ -81,6 +82,26 @@ std::vector<uint8_t> to_rgba8(const tinygltf::Image& img) {
   return out;
 }
 
+// glTF 2.0 §3.9.4 / material.schema.json: alphaMode is OPAQUE (default), MASK or BLEND;
+// alphaCutoff (default 0.5) is >= 0. BLEND is rendered as MASK at 0.5 (docs/scenes.md).
+void read_alpha_mode(const Context& ctx, const tinygltf::Material& g, const std::string& owner,
+                     Material& mat, std::vector<std::string>& warnings) {
+  if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) {
+    mat.alpha_mode = AlphaMode::Opaque;
+  } else if (g.alphaMode == "MASK") {
+    mat.alpha_mode = AlphaMode::Mask;
+  } else if (g.alphaMode == "BLEND") {
+    mat.alpha_mode = AlphaMode::Blend;
+    warnings.push_back(
+        owner + ": alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 in every engine");
+  } else {
+    fail(ctx, owner + ": alphaMode \"" + g.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+  }
+  mat.alpha_cutoff = float(g.alphaCutoff);
+  if (!std::isfinite(mat.alpha_cutoff) || mat.alpha_cutoff < 0.0f)
+    fail(ctx, owner + ": alphaCutoff must be a finite number >= 0");
+}
+
 }  // namespace
 
 void convert_textures(const Context& ctx, Scene& scene) {
@@ -155,7 +176,7 @@ void convert_materials(const Context& ctx, Scene& scene) {
       }
     }
     if (g.occlusionTexture.index >= 0) scene.stats.warnings.push_back(owner + ": occlusionTexture is ignored");
-    if (g.alphaMode != "OPAQUE") scene.stats.warnings.push_back(owner + ": alphaMode " + g.alphaMode + " is rendered opaque");
+    read_alpha_mode(ctx, g, owner, mat, scene.stats.warnings);
     mat.double_sided = g.doubleSided;
     const vec4 b = mat.base_color_factor;
     const vec3 e = mat.emissive_factor, sc = mat.specular_color_factor;

@@ -39,6 +39,9 @@ struct TextureRef {
   bool present() const { return texture >= 0; }
 };
 
+/// glTF alphaMode; the values are vct_shared.h's ALPHA_MODE_* (one test for every engine).
+enum class AlphaMode { Opaque = 0, Mask = 1, Blend = 2 };
+
 /// glTF metallic-roughness material with the extensions we support.
 struct Material {
   std::string name;
@@ -56,6 +59,10 @@ struct Material {
   float specular_factor = 1.0f;       // KHR_materials_specular (0 = pure Lambertian)
   vec3 specular_color_factor{1.0f};
   bool double_sided = false;
+  AlphaMode alpha_mode = AlphaMode::Opaque;  // Blend: rendered as Mask at 0.5 (docs/scenes.md)
+  float alpha_cutoff = 0.5f;                 // glTF alphaCutoff, used by Mask
+  /// Whether a surface point of this material can be discarded by the alpha test.
+  bool alpha_tested() const { return alpha_mode != AlphaMode::Opaque; }
   vec3 emission() const { return emissive_factor * emissive_strength; }
   bool is_emissive() const { return emission() != vec3(0.0f); }
 };

@@ -288,6 +288,26 @@ VCT_FN vec3 particle_voxel_radiance(ParticleState p, float voxel_size) {
   return vec3(p.color_age) * (0.5f * SH_PI * r * r / (voxel_size * voxel_size));
 }
 
+// ---------------------------------------------------------------------------------------------
+// glTF 2.0 alphaMode (§3.9.4 "Alpha Coverage"): the one test every pass that rasterizes or traces
+// applies to the base-colour alpha (base_color_factor.a x texture alpha). MASK discards a surface
+// point whose alpha is below alphaCutoff; BLEND is treated as MASK at a fixed cutoff of 1/2, the
+// only reading whose meaning is the same in the G-buffer, the shadow maps, the voxels and the path
+// tracer (docs/scenes.md, "Alpha modes"). The alpha fetch itself is each engine's own.
+VCT_CONST int ALPHA_MODE_OPAQUE = 0;
+VCT_CONST int ALPHA_MODE_MASK = 1;
+VCT_CONST int ALPHA_MODE_BLEND = 2;
+VCT_CONST float BLEND_ALPHA_CUTOFF = 0.5f;
+
+VCT_FN float effective_alpha_cutoff(int mode, float cutoff) {
+  return mode == ALPHA_MODE_BLEND ? BLEND_ALPHA_CUTOFF : cutoff;
+}
+
+// True when the surface point is not there (discard the fragment, ignore the ray hit).
+VCT_FN bool alpha_discards(int mode, float alpha, float cutoff) {
+  return mode != ALPHA_MODE_OPAQUE && alpha < effective_alpha_cutoff(mode, cutoff);
+}
+
 #ifndef VCT_GLSL
 }  // namespace sh
 }  // namespace vct

@@ -1,7 +1,9 @@
 #include "stages/gbuffer.h"
 
 #include "core/parallel.h"
+#include "scene/alpha_mask.h"
 #include "scene/surface.h"
+#include "stages/alpha_ties.h"
 #include "stages/raster.h"
 #include "stages/texture_slack.h"
 
@@ -27,15 +29,33 @@ GBuffer make_gbuffer(int w, int h) {
   g.coverage = Image(w, h, 1);
   g.coverage.channel_names = {"Y"};
   g.texture_slack = Image(w, h, kSlackChannels);
-  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission"};
+  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission", "alpha_tie"};
   return g;
 }
+// kSlackAlphaTie: pixels whose front-most surface, masks ignored, is alpha tested with an alpha
+// within its freedom of the cutoff: a correct GL may show that surface or what lies behind it.
+void mark_alpha_ties(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
+                     GBuffer& g) {
+  const int w = g.depth.width, h = g.depth.height;
+  const VisibilityBuffer front = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = front.index(x, row);
+      if (front.triangle[i] < 0) continue;
+      const bool tie = alpha_test_may_flip(scene, wb, x, row, uint32_t(front.triangle[i]), front.bary[i]);
+      g.texture_slack.at(x, row, kSlackAlphaTie) = tie ? 1.0f : 0.0f;
+    }
+  });
+}
+
 }  // namespace
 
 GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
   const int w = settings.width, h = settings.height;
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
-  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  // Alpha-masked fragments are discarded (gbuffer.frag does the same): what lies behind shows.
+  const VisibilityBuffer vb =
+      render_visibility(scene.positions, scene.triangles, view_proj, w, h, &scene);
   GBuffer g = make_gbuffer(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
   parallel_rows(h, [&](int row) {
@@ -57,9 +77,10 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       g.depth.at(x, row, 0) = vb.depth[i];
       g.coverage.at(x, row, 0) = 1.0f;
       const vec4 slack = texture_slack(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], m);
-      for (int c = 0; c < kSlackChannels; ++c) g.texture_slack.at(x, row, c) = slack[c];
+      for (int c = 0; c < kSlackAlphaTie; ++c) g.texture_slack.at(x, row, c) = slack[c];
     }
   });
+  if (scene_has_alpha_test(scene)) mark_alpha_ties(scene, view_proj, wb, g);
   return g;
 }
 

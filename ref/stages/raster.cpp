@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/parallel.h"
+#include "scene/alpha_mask.h"
 
 namespace vct {
 
@@ -209,8 +210,9 @@ BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vec
   return b;
 }
 
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
-                                   const mat4& view_proj, int width, int height) {
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
+                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                   int width, int height, const Scene* alpha_scene) {
   const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
   VisibilityBuffer vb;
   vb.width = width;
@@ -225,9 +227,11 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(height, y0 + kRasterBandRows) - 1;
     for (uint32_t ti : binned.bands[size_t(band)]) {
       const RasterTriangle& t = binned.triangles[ti];
+      const bool alpha_tested = alpha_scene && triangle_alpha_tested(*alpha_scene, t.source);
       rasterize(t, centre, 0, width - 1, y0, y1, [&](const RasterFragment& f) {
         const size_t idx = vb.index(f.x, height - 1 - f.y);
         if (!(f.depth < vb.depth[idx])) return;  // GL_LESS
+        if (alpha_tested && surface_masked(*alpha_scene, t.source, f.bary.y, f.bary.z)) return;
         vb.depth[idx] = f.depth;
         vb.triangle[idx] = int32_t(t.source);
         vb.bary[idx] = f.bary;

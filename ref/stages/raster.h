@@ -22,6 +22,8 @@
 
 namespace vct {
 
+struct Scene;  // scene/scene.h: only the alpha test reads it
+
 constexpr int kSubpixelBits = 8;
 constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
 
@@ -146,8 +148,10 @@ struct VisibilityBuffer {
 
 /// Rasterizes every triangle of `positions`/`triangles` (world space) through `view_proj`.
 /// Parallel over bands of rows; each band walks the triangles in index order, so the result does
-/// not depend on the thread count.
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
-                                   const mat4& view_proj, int width, int height);
+/// not depend on the thread count. With `alpha_scene` (whose triangles these are), a fragment that
+/// scene/alpha_mask.h's surface_masked() cuts away is discarded before the depth test writes.
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
+                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                   int width, int height, const Scene* alpha_scene = nullptr);
 
 }  // namespace vct

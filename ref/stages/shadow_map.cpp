@@ -37,7 +37,8 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
     m.depth.width = m.depth.height = size;
     m.depth.channels = 1;
     m.depth.channel_names = {"Z"};
-    m.depth.data = render_depth(scene.positions, scene.triangles, m.view_proj, size, size);
+    // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
+    m.depth.data = render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene);
     maps.push_back(std::move(m));
   }
   return maps;

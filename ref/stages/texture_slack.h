@@ -17,8 +17,17 @@ namespace vct {
 constexpr double kTextureSlackShift = 1.0 / 256.0;
 
 /// Channels of GBuffer::texture_slack, one per textured attribute: the largest |change| over the
-/// attribute's channels.
-enum TextureSlackChannel : int { kSlackNormal = 0, kSlackAlbedo, kSlackMaterial, kSlackEmission, kSlackChannels };
+/// attribute's channels; then kSlackAlphaTie, 1 where the alpha test may go either way
+/// (stages/alpha_ties.h), which the comparison adds to its edge map (docs/compare.md,
+/// "Alpha-mask ties").
+enum TextureSlackChannel : int {
+  kSlackNormal = 0,
+  kSlackAlbedo,
+  kSlackMaterial,
+  kSlackEmission,
+  kSlackAlphaTie,
+  kSlackChannels
+};
 
 /// Window-space ray caster for one view: perspective-correct barycentrics of a triangle's plane
 /// at any window point (extrapolated beyond the triangle's edges, as GL interpolates).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/parallel.h"
+#include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/voxelize.h"
 
@@ -22,12 +23,18 @@ Voxelization voxelize_conservative(const Scene& scene, int n) {
       b[c] = int(std::clamp(std::floor(hi[c]), 0.0, double(n - 1)));
     }
     auto& out = per_tri[size_t(ti)];
+    const bool alpha_tested = triangle_alpha_tested(scene, uint32_t(ti));
     for (int z = a.z; z <= b.z; ++z)
       for (int y = a.y; y <= b.y; ++y)
         for (int x = a.x; x <= b.x; ++x) {
           const glm::dvec3 corner(x, y, z);
           if (!triangle_overlaps_voxel(v, corner)) continue;
           const glm::dvec2 bc = closest_point_barycentrics(v, corner + glm::dvec3(0.5));
+          // Alpha masks are tested at the fragment's one evaluation point, as the GPU rule tests
+          // its pixel centre: a voxel whose closest point is cut away holds none of this triangle
+          // (docs/pipeline.md, "Voxelization").
+          if (alpha_tested && surface_masked(scene, uint32_t(ti), float(bc.x), float(bc.y)))
+            continue;
           const SurfacePoint sp = interpolate_surface(scene, uint32_t(ti), float(bc.x), float(bc.y));
           out.push_back({ivec3(x, y, z), sp.position, sp.normal, uint32_t(ti), float(bc.x), float(bc.y)});
         }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/parallel.h"
+#include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/raster.h"
 #include "stages/voxelize.h"
@@ -42,8 +43,12 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
     std::vector<RasterTriangle> rt;
     setup_triangle(clip, n, n, uint32_t(ti), rt);
     auto& out = per_tri[size_t(ti)];
+    const bool alpha_tested = triangle_alpha_tested(scene, uint32_t(ti));
     for (const RasterTriangle& r : rt) {
       rasterize(r, samples, 0, n - 1, 0, n - 1, [&](const RasterFragment& f) {
+        // A masked fragment adds neither opacity nor light (voxelize.frag discards it); tested at
+        // the pixel centre where the fragment's attributes are evaluated.
+        if (alpha_tested && surface_masked(scene, uint32_t(ti), f.bary.y, f.bary.z)) return;
         // Relative to vertex 0, as GL interpolates: a triangle lying in one plane of constant
         // depth gets exactly that depth (the absolute b0*d0+b1*d1+b2*d2 form rounds across it).
         const double depth = v[0][axis] + double(f.bary.y) * (v[1][axis] - v[0][axis]) +

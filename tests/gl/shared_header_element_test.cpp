@@ -781,6 +781,35 @@ std::vector<ElementCase> hash_users() {
   return {hash_case(), cone_block_case(), fixed_point_case()};
 }
 
+// glTF alphaMode: the one alpha test every pass applies (exact: comparisons and a select).
+ElementCase alpha_case() {
+  ElementCase c{"effective_alpha_cutoff, alpha_discards", "uf", 1, "", nullptr, {}};
+  const float alphas[] = {0.0f, 0.25f, 0.49999997f, 0.5f, 0.50000006f, 0.7f, 1.0f};
+  const float cutoffs[] = {0.0f, 0.5f, 0.6f, 1.0f};
+  for (uint32_t mode = 0; mode < 3; ++mode)
+    for (float a : alphas)
+      for (float cut : cutoffs)
+        c.inputs.insert(c.inputs.end(), {uvec4(mode, 0u, 0u, 0u), words(vec4(a, cut, 0, 0))});
+  c.glsl =
+      "int m = int(uin(0u).x); vec4 f = fin(1u);\n"
+      "putu(0u, uvec4(alpha_discards(m, f.x, f.y) ? 1u : 0u,\n"
+      "               floatBitsToUint(effective_alpha_cutoff(m, f.y)), "
+      "floatBitsToUint(BLEND_ALPHA_CUTOFF),\n"
+      "               uint(ALPHA_MODE_OPAQUE + 2 * ALPHA_MODE_MASK + 4 * ALPHA_MODE_BLEND)));";
+  c.cpu = [](const uvec4* in) {
+    const int m = int(in[0].x);
+    const vec4 f = floats(in[1]);
+    const float cut = sh::effective_alpha_cutoff(m, f.y), blend = sh::BLEND_ALPHA_CUTOFF;
+    uint32_t cut_bits = 0, blend_bits = 0;
+    std::memcpy(&cut_bits, &cut, 4);
+    std::memcpy(&blend_bits, &blend, 4);
+    return std::vector<ExpectedSlot>{exact_u(uvec4(
+        sh::alpha_discards(m, f.x, f.y) ? 1u : 0u, cut_bits, blend_bits,
+        uint32_t(sh::ALPHA_MODE_OPAQUE + 2 * sh::ALPHA_MODE_MASK + 4 * sh::ALPHA_MODE_BLEND)))};
+  };
+  return c;
+}
+
 std::vector<ElementCase> all_cases() {
   return {constants_case(),
           hash_case(),
@@ -801,7 +830,8 @@ std::vector<ElementCase> all_cases() {
           frame_case(),
           frame_to_world_case(),
           particle_state_case(),
-          particle_splat_case()};
+          particle_splat_case(),
+          alpha_case()};
 }
 
 }  // namespace
@@ -821,7 +851,7 @@ TEST(SharedHeaderElement, EverySharedFunctionHasACase) {
     EXPECT_TRUE(std::regex_search(called, std::regex("\\b" + name + "\\s*\\(")))
         << name << " (ref/shared/) has no element case";
   }
-  EXPECT_GE(functions, 26u);  // the regex still finds the declarations (26 today)
+  EXPECT_GE(functions, 28u);  // the regex still finds the declarations (28 today)
 }
 
 TEST(SharedHeaderElement, EveryFunctionMatchesTheCppBuildWithinItsGlslBound) {

@@ -121,6 +121,15 @@ const std::vector<BadCase>& bad_cases() {
        [] { return doc_file("dangling_mesh", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = 5; }); }},
       {"dangling_material", "refers to material 3",
        [] { return doc_file("dangling_material", [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["material"] = 3; }); }},
+      {"unknown_alpha_mode", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND",
+       [] { return doc_file("unknown_alpha_mode", [](GltfDoc& d) { d.j["materials"][0]["alphaMode"] = "CUTOUT"; }); }},
+      {"negative_alpha_cutoff", "alphaCutoff must be a finite number >= 0",
+       [] {
+         return doc_file("negative_alpha_cutoff", [](GltfDoc& d) {
+           d.j["materials"][0]["alphaMode"] = "MASK";
+           d.j["materials"][0]["alphaCutoff"] = -0.25;
+         });
+       }},
       {"dangling_texture", "refers to texture 2",
        [] {
          return doc_file("dangling_texture", [](GltfDoc& d) {

@@ -1,0 +1,31 @@
+// Where the alpha test (glTF alphaMode MASK, scene/alpha_mask.h) may go either way between two
+// correct rasterizers: the test is a step of the interpolated alpha, and GL leaves the sample's
+// alpha free by the bilinear weights' precision and the sample position's snapping
+// (docs/compare.md, "Alpha-mask ties"). A flipped sample shows the surface or what lies behind
+// it: a geometric-edge tie, admitted by the edge rule only where the edge map flags it.
+#pragma once
+
+#include <cstdint>
+
+#include "core/math.h"
+#include "scene/scene.h"
+#include "stages/texture_slack.h"
+
+namespace vct {
+
+/// Bilinear weights with 8 sub-texel bits: each of the two weights off by at most 2^-9, so the
+/// filtered alpha moves by at most (2 + 1) * 2^-9 of the four texels' alpha range (<= 1).
+constexpr float kAlphaWeightSlack = 3.0f / 512.0f;
+
+/// The alpha's freedom at image pixel (x, row) (row 0 = top) of `triangle` at barycentrics `bary`
+/// (b0, b1, b2): kAlphaWeightSlack plus the largest change of the reference's own alpha when the
+/// sample moves by (+-2^-8, +-2^-8) pixels (kTextureSlackShift, vertex snapping).
+float alpha_freedom(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                    uint32_t triangle, const vec3& bary);
+
+/// True when the triangle is alpha tested and |alpha - cutoff| <= alpha_freedom(): a correct
+/// implementation may keep or discard this sample.
+bool alpha_test_may_flip(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                         uint32_t triangle, const vec3& bary);
+
+}  // namespace vct
