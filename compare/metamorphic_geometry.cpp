@@ -1,0 +1,75 @@
+// The geometric relations (docs/metamorphic.md): moving the scene with its volume, shifting it by
+// whole voxels inside a fixed volume, turning it by 90 degrees. Each renders one transformed
+// frame, maps it back (metamorphic_map.h) and judges it against the base frame with the stage
+// comparison's own tolerance models (docs/compare.md): the two frames differ only by the rounding
+// of positions, which is inside every freedom those models allow.
+#include <cstdio>
+
+#include "compare/metamorphic.h"
+#include "compare/metamorphic_map.h"
+#include "compare/stage_compare.h"
+#include "scene/scene_transform.h"
+
+namespace vct::cmp {
+
+namespace {
+
+float voxel_size(const MetamorphicContext& c) { return c.scene.volume.size / float(c.settings.vct.grid); }
+
+StageSet render_set(const MetamorphicContext& c, const Scene& scene) {
+  return stage_set_from_frame(c.render(scene, c.settings), c.settings.vct);
+}
+
+// The base frame as the reference, the mapped-back frame as the test, on the stages both hold.
+RelationResult judge_against_base(const std::string& name, const MetamorphicContext& c, const StageSet& mapped) {
+  RelationResult r;
+  r.name = name;
+  const StageSet base = common_stages(c.base, mapped);
+  const StageSet test = common_stages(mapped, c.base);
+  const Report rep = compare_stage_sets(base, test);
+  for (const StageVerdict& v : rep.stages)
+    if (v.verdict != Verdict::Missing) r.stages.push_back(v);
+  r.verdict = overall_of(r.stages);
+  size_t failing = 0, warning = 0;
+  for (const StageVerdict& v : r.stages) failing += v.verdict == Verdict::Fail, warning += v.verdict == Verdict::Warn;
+  char b[256];
+  std::snprintf(b, sizeof b, "%zu stages compared: %zu fail, %zu warn%s%s", r.stages.size(), failing, warning,
+                rep.first_failing().empty() ? "" : "; first failing: ", rep.first_failing().c_str());
+  r.note = b;
+  r.sets["base"] = base;
+  r.sets["mapped"] = test;
+  return r;
+}
+
+RelationResult check_turn(const MetamorphicContext& c, int axis, const char* name) {
+  const StageSet turned = render_set(c, turned90(c.scene, axis));
+  RelationResult r = judge_against_base(name, c, unturned(turned, axis));
+  r.extra["axis"] = std::string(1, "xyz"[axis]);
+  return r;
+}
+
+}  // namespace
+
+RelationResult check_translate(const MetamorphicContext& c) {
+  // Odd, mixed-sign whole voxels: every voxel keeps its index since the volume moves too.
+  const ivec3 k(3, -2, 5);
+  const vec3 t = vec3(k) * voxel_size(c);
+  RelationResult r = judge_against_base("translate", c, untranslated(render_set(c, translated(c.scene, t, true)), t));
+  r.extra["voxels"] = {k.x, k.y, k.z};
+  return r;
+}
+
+RelationResult check_shift_in_volume(const MetamorphicContext& c) {
+  const ivec3 k(c.shift_voxels);
+  const vec3 t = vec3(k) * voxel_size(c);
+  const StageSet shifted = render_set(c, translated(c.scene, t, false));
+  RelationResult r = judge_against_base("shift_in_volume", c, unshifted(shifted, k, t, c.settings.vct.soft_shadows));
+  r.extra["voxels"] = {k.x, k.y, k.z};
+  return r;
+}
+
+RelationResult check_turn_x(const MetamorphicContext& c) { return check_turn(c, 0, "turn_x"); }
+RelationResult check_turn_y(const MetamorphicContext& c) { return check_turn(c, 1, "turn_y"); }
+RelationResult check_turn_z(const MetamorphicContext& c) { return check_turn(c, 2, "turn_z"); }
+
+}  // namespace vct::cmp
