@@ -42,9 +42,18 @@ RelationResult judge_against_base(const std::string& name, const MetamorphicCont
 }
 
 RelationResult check_turn(const MetamorphicContext& c, int axis, const char* name) {
-  const StageSet turned = render_set(c, turned90(c.scene, axis));
-  RelationResult r = judge_against_base(name, c, unturned(turned, axis));
+  StageSet mapped = unturned(render_set(c, turned90(c.scene, axis)), axis);
+  const size_t left_out =
+      c.settings.vct.diffuse_cones ? keep_turn_invariant_cones(mapped, c.base, c.settings.vct.diffuse_cone_count) : 0;
+  RelationResult r = judge_against_base(name, c, mapped);
   r.extra["axis"] = std::string(1, "xyz"[axis]);
+  r.extra["diffuse_cone_pixels_not_judged"] = left_out;
+  if (left_out) {
+    char b[160];
+    std::snprintf(b, sizeof b, "; diffuse cone stages not judged at %zu pixels (normal off the axes: cone frame)",
+                  left_out);
+    r.note += b;
+  }
   return r;
 }
 

@@ -119,6 +119,27 @@ StageSet unturned(const StageSet& test, int axis) {
   return out;
 }
 
+size_t keep_turn_invariant_cones(StageSet& mapped, const StageSet& base, int diffuse_cone_count) {
+  auto normal = base.images.find(st::kGbufferNormal);
+  if (normal == base.images.end()) return 0;
+  const Image& n = normal->second;
+  const bool quarter_steps = (diffuse_cone_count - 1) % 4 == 0;
+  auto axis_aligned = [](const vec3& v) { return int(v.x == 0.0f) + int(v.y == 0.0f) + int(v.z == 0.0f) == 2; };
+  size_t left_out = 0;
+  for (int y = 0; y < n.height; ++y)
+    for (int x = 0; x < n.width; ++x) {
+      if (quarter_steps && axis_aligned(n.rgb(x, y))) continue;
+      ++left_out;
+      for (const char* stage : {st::kImageIndirectDiffuse, st::kImageDiffuseTerm, st::kImageFinal}) {
+        auto m = mapped.images.find(stage);
+        auto b = base.images.find(stage);
+        if (m == mapped.images.end() || b == base.images.end() || b->second.width != n.width) continue;
+        std::copy(b->second.pixel(x, y), b->second.pixel(x, y) + b->second.channels, m->second.pixel(x, y));
+      }
+    }
+  return left_out;
+}
+
 StageSet common_stages(const StageSet& a, const StageSet& with) {
   StageSet out = a;
   for (auto it = out.images.begin(); it != out.images.end();)

@@ -25,6 +25,14 @@ StageSet unshifted(const StageSet& test, const ivec3& k, const vec3& t, bool sof
 /// stages/shadow_map.cpp), so a turned light's map is turned in its own plane.
 StageSet unturned(const StageSet& test, int axis);
 
+/// The diffuse cone set is laid out in a tangent frame built from the normal by a fixed formula
+/// (vct_shared.h frame_from_normal), which a turn does not commute with: only where the normal
+/// is a coordinate axis and the tilted cones are a multiple of 4 (90-degree steps) is the turned
+/// set the set of the turned normal. Elsewhere the stages that hold the diffuse cones
+/// (image.indirect_diffuse, image.diffuse_term, image.final) are taken from `base`: not judged.
+/// Returns how many pixels were left out.
+size_t keep_turn_invariant_cones(StageSet& mapped, const StageSet& base, int diffuse_cone_count);
+
 /// The turned-scene voxel that holds base voxel `i` of an n^3 grid.
 ivec3 turned_voxel(const ivec3& i, int n, int axis);
 

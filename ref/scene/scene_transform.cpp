@@ -58,7 +58,12 @@ Scene on_voxel_lattice(const Scene& scene, int grid, int room_voxels) {
   const float voxel = size / float(grid);
   Scene s = mapped(scene, [&](const vec3& p) { return snap(p, voxel / kLatticeStepsPerVoxel); }, identity);
   s.volume.size = size;
-  s.volume.origin = glm::floor((lo - vec3(voxel)) / voxel) * voxel;
+  // Half a lattice step off the voxel lattice: no lattice position (an axis-aligned wall, a
+  // vertex) lies on a voxel face, where which of the two voxels holds it is a rounding tie that
+  // a mirror (a turn) resolves the other way. Still exact: positions minus origin are odd
+  // multiples of half a step.
+  const float half_step = 0.5f * voxel / kLatticeStepsPerVoxel;
+  s.volume.origin = glm::floor((lo - vec3(voxel)) / voxel) * voxel - vec3(half_step);
   s.volume.overridden = true;
   return s;
 }
