@@ -20,14 +20,17 @@ const std::vector<MetamorphicRow>& metamorphic_rows() {
        "the stage models of docs/compare.md; voxel stages exact where the voxelizer is translation-"
        "invariant on the grid (docs/metamorphic.md, Shift inside the volume)",
        true, check_shift_in_volume},
-      {"turn_x", "scene, camera, lights, emitters and volume turned +90 degrees about x (y -> z)",
-       "volumes permuted index by index, mip.<d> from mip.<turn(d)>; images unchanged; shadow maps "
-       "not compared (their up vector is world +z)",
+      {"turn_x", "scene, camera, emitters and volume turned +90 degrees about x (y -> z); spot lights and "
+       "particles off in both frames",
+       "volumes permuted index by index, mip.<d> from mip.<turn(d)>; images unchanged (diffuse cone "
+       "stages only where the normal is an axis)",
        "the stage models of docs/compare.md; a sample-rule voxelizer sees the MSAA pattern mirrored "
        "(docs/metamorphic.md, Turns)",
        true, check_turn_x},
-      {"turn_y", "turned +90 degrees about y (z -> x)", "as turn_x", "as turn_x", true, check_turn_y},
-      {"turn_z", "turned +90 degrees about z (x -> y)", "as turn_x", "as turn_x", true, check_turn_z},
+      {"turn_y", "turned +90 degrees about y (z -> x); spot lights and particles off", "as turn_x", "as turn_x", true,
+       check_turn_y},
+      {"turn_z", "turned +90 degrees about z (x -> y), spot lights on (the shadow maps' up, +z, is kept)",
+       "as turn_x; shadow maps not compared (turned in their plane)", "as turn_x", true, check_turn_z},
       {"linearity", "every emission, spot intensity and particle colour doubled",
        "radiance stages (voxel RGB, mips RGB, direct, indirect, terms, emission, particles, final) doubled; "
        "opacity, depth, G-buffer (but emission) unchanged",
@@ -85,7 +88,8 @@ MetamorphicRun run_metamorphic(const Scene& scene, const Settings& s, const Fram
   const auto& rows = metamorphic_rows();
   if (std::any_of(rows.begin(), rows.end(), [&](const MetamorphicRow& r) { return wanted(r) && r.needs_base; }))
     run.base = stage_set_from_frame(render(run.scene, s), s.vct);
-  const MetamorphicContext ctx{run.scene, s, render, run.base, shift};
+  std::map<std::string, StageSet> variant_bases;
+  const MetamorphicContext ctx{run.scene, s, render, run.base, shift, variant_bases};
   for (const MetamorphicRow& r : rows)
     if (wanted(r)) run.relations.push_back(r.run(ctx));
   return run;

@@ -41,6 +41,8 @@ struct MetamorphicContext {
   const FrameRenderer& render;
   const StageSet& base;
   int shift_voxels = 8;  // the whole-voxel shift inside the volume, per axis
+  // Base frames of scene variants (the turns' unlit or particle-free scene), rendered once.
+  std::map<std::string, StageSet>& variant_bases;
 };
 
 struct MetamorphicRow {

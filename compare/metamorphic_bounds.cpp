@@ -1,28 +1,41 @@
 #include "compare/metamorphic_bounds.h"
 
-#include <cmath>
-
 #include "compare/tolerance.h"
 #include "shared/voxel_fixed_point.h"
 
 namespace vct::cmp {
 
+namespace {
+const double kHalfRel = std::ldexp(1.0, -10);        // one binary16 ulp relative to a normal value
+const double kHalfSubnormal = std::ldexp(1.0, -24);  // binary16 spacing below 2^-14
+}  // namespace
+
 double storage_rounding(const VctSettings& s, double v) {
   return s.storage == VoxelStorage::Rgba8 ? 1.0 / 255.0 : half_ulp(v);
 }
 
-double doubled_voxel_bound(const VctSettings& s, double v, double n) {
-  double reduction = 0.0;
-  if (s.reduction == Reduction::FixedPoint) reduction = 2.0 * double(sh::FIXED_POINT_INV_SCALE);
-  if (s.reduction == Reduction::CasRgba8) reduction = n / 255.0;
-  if (s.storage == VoxelStorage::Rgba8) return reduction + 1.0 / 255.0;
-  return reduction > 0.0 ? reduction + half_ulp(v) : 0.0;
+LinearBound doubled_voxel_bound(const VctSettings& s, double n) {
+  LinearBound b;
+  if (s.reduction == Reduction::FixedPoint) b.abs = 2.0 * double(sh::FIXED_POINT_INV_SCALE);
+  if (s.reduction == Reduction::CasRgba8) b.abs = n / 255.0;
+  if (s.storage == VoxelStorage::Rgba8) {
+    b.abs += 1.0 / 255.0;
+    return b;
+  }
+  if (b.abs > 0.0) b.rel = kHalfRel;
+  b.abs += kHalfSubnormal;
+  return b;
 }
 
-double next_level_bound(const VctSettings& s, double below, double vmax) {
-  const double b = below * (s.anisotropic ? 2.0 : 1.0);
-  if (s.storage == VoxelStorage::Rgba8) return b + 1.0 / 255.0;
-  return b > 0.0 ? b + half_ulp(vmax) : b;
+LinearBound next_level_bound(const VctSettings& s, const LinearBound& below) {
+  LinearBound b{below.abs * (s.anisotropic ? 2.0 : 1.0), below.rel};
+  if (s.storage == VoxelStorage::Rgba8) {
+    b.abs += 1.0 / 255.0;
+    return b;
+  }
+  if (!below.zero()) b.rel += kHalfRel;
+  b.abs += kHalfSubnormal;
+  return b;
 }
 
 double max_cone_steps(const VctSettings& s) {

@@ -21,11 +21,11 @@ StageSet render_set(const MetamorphicContext& c, const Scene& scene) {
 }
 
 // The base frame as the reference, the mapped-back frame as the test, on the stages both hold.
-RelationResult judge_against_base(const std::string& name, const MetamorphicContext& c, const StageSet& mapped) {
+RelationResult judge_against_base(const std::string& name, const StageSet& base_set, const StageSet& mapped) {
   RelationResult r;
   r.name = name;
-  const StageSet base = common_stages(c.base, mapped);
-  const StageSet test = common_stages(mapped, c.base);
+  const StageSet base = common_stages(base_set, mapped);
+  const StageSet test = common_stages(mapped, base_set);
   const Report rep = compare_stage_sets(base, test);
   for (const StageVerdict& v : rep.stages)
     if (v.verdict != Verdict::Missing) r.stages.push_back(v);
@@ -41,19 +41,59 @@ RelationResult judge_against_base(const std::string& name, const MetamorphicCont
   return r;
 }
 
+// What a turn cannot keep, left out of both frames: particles (each axis of a particle draws its
+// own random number, vct_shared.h particle_state: a turn hands them to other axes) and, for turns
+// about x and y, the spot lights (a shadow map's up vector is world +z, stages/shadow_map.cpp:
+// turned about x or y, a light's map turns in its own plane and PCF samples another texel grid).
+struct TurnScene {
+  Scene scene;
+  Settings settings;
+  std::string key;   // "" = the base scene itself
+  std::string what;  // what both frames leave out, for the note
+};
+
+TurnScene turn_scene(const MetamorphicContext& c, int axis) {
+  TurnScene t{c.scene, c.settings, "", ""};
+  if (!c.scene.emitters.empty() && c.settings.vct.particles) {
+    t.settings.vct.particles = false;
+    t.key += "no_particles";
+    t.what = "particles";
+  }
+  if (axis != 2 && !c.scene.spot_lights.empty()) {
+    t.scene.spot_lights.clear();
+    t.key += "unlit";
+    t.what = t.what.empty() ? "spot lights" : "spot lights and particles";
+  }
+  return t;
+}
+
+const StageSet& turn_base(const MetamorphicContext& c, const TurnScene& t) {
+  if (t.key.empty()) return c.base;
+  auto it = c.variant_bases.find(t.key);
+  if (it == c.variant_bases.end())
+    it = c.variant_bases.emplace(t.key, stage_set_from_frame(c.render(t.scene, t.settings), t.settings.vct)).first;
+  return it->second;
+}
+
 RelationResult check_turn(const MetamorphicContext& c, int axis, const char* name) {
-  StageSet mapped = unturned(render_set(c, turned90(c.scene, axis)), axis);
+  const TurnScene t = turn_scene(c, axis);
+  const StageSet& base = turn_base(c, t);
+  StageSet mapped =
+      unturned(stage_set_from_frame(c.render(turned90(t.scene, axis), t.settings), t.settings.vct), axis);
   const size_t left_out =
-      c.settings.vct.diffuse_cones ? keep_turn_invariant_cones(mapped, c.base, c.settings.vct.diffuse_cone_count) : 0;
-  RelationResult r = judge_against_base(name, c, mapped);
+      c.settings.vct.diffuse_cones ? keep_turn_invariant_cones(mapped, base, c.settings.vct.diffuse_cone_count) : 0;
+  RelationResult r = judge_against_base(name, base, mapped);
   r.extra["axis"] = std::string(1, "xyz"[axis]);
   r.extra["diffuse_cone_pixels_not_judged"] = left_out;
+  r.extra["variant"] = t.key;
+  if (!t.key.empty()) r.sets["base"] = base;  // not the shared base: written beside the relation
   if (left_out) {
     char b[160];
     std::snprintf(b, sizeof b, "; diffuse cone stages not judged at %zu pixels (normal off the axes: cone frame)",
                   left_out);
     r.note += b;
   }
+  if (!t.key.empty()) r.note += "; both frames without " + t.what;
   return r;
 }
 
@@ -63,7 +103,7 @@ RelationResult check_translate(const MetamorphicContext& c) {
   // Odd, mixed-sign whole voxels: every voxel keeps its index since the volume moves too.
   const ivec3 k(3, -2, 5);
   const vec3 t = vec3(k) * voxel_size(c);
-  RelationResult r = judge_against_base("translate", c, untranslated(render_set(c, translated(c.scene, t, true)), t));
+  RelationResult r = judge_against_base("translate", c.base, untranslated(render_set(c, translated(c.scene, t, true)), t));
   r.extra["voxels"] = {k.x, k.y, k.z};
   return r;
 }
@@ -72,7 +112,7 @@ RelationResult check_shift_in_volume(const MetamorphicContext& c) {
   const ivec3 k(c.shift_voxels);
   const vec3 t = vec3(k) * voxel_size(c);
   const StageSet shifted = render_set(c, translated(c.scene, t, false));
-  RelationResult r = judge_against_base("shift_in_volume", c, unshifted(shifted, k, t, c.settings.vct.soft_shadows));
+  RelationResult r = judge_against_base("shift_in_volume", c.base, unshifted(shifted, k, t, c.settings.vct.soft_shadows));
   r.extra["voxels"] = {k.x, k.y, k.z};
   return r;
 }

@@ -39,9 +39,9 @@ int radiance_channels(const std::string& stage) {
 }
 
 struct Bounds {
-  std::vector<double> level;  // per mip level, at the volume's largest value
-  double cone = 0.0;          // one cone's result
-  bool saturated = false;     // RGBA8 clipped a doubled voxel: downstream is not linear
+  std::vector<LinearBound> level;  // per mip level (0 = the base voxels at 8 fragments)
+  LinearBound cone;                // one cone's result
+  bool saturated = false;          // RGBA8 clipped a doubled voxel: downstream is not linear
 };
 
 double max_radiance(const Volume& v) {
@@ -51,26 +51,42 @@ double max_radiance(const Volume& v) {
   return m;
 }
 
+LinearBound cone_of(const std::vector<LinearBound>& levels, const VctSettings& s) {
+  LinearBound c;
+  for (const LinearBound& l : levels) c.abs = std::max(c.abs, l.abs), c.rel = std::max(c.rel, l.rel);
+  c.abs *= max_cone_steps(s);
+  return c;
+}
+
+std::vector<LinearBound> chain(const LinearBound& l0, const VctSettings& s) {
+  std::vector<LinearBound> levels = {l0};
+  for (int n = s.grid / 2; n >= 1; n /= 2) levels.push_back(next_level_bound(s, levels.back()));
+  return levels;
+}
+
 Bounds linearity_bounds(const StageSet& base, const VctSettings& s) {
   Bounds b;
   const Volume* vox = base.volumes.count(st::kVoxelRadiance) ? &base.volumes.at(st::kVoxelRadiance) : nullptr;
-  const double vmax = vox ? kScale * max_radiance(*vox) : 0.0;
-  b.saturated = s.storage == VoxelStorage::Rgba8 && vmax > 1.0;
-  double l0 = doubled_voxel_bound(s, vmax, 255.0);
-  // Multibounce re-injects cone-traced light (restitution x albedo <= 1 per frame).
-  for (int k = 1; k < s.bounces; ++k) l0 = doubled_voxel_bound(s, vmax, 255.0) + max_cone_steps(s) * diffuse_weight_sum(s) * l0;
-  b.level.push_back(l0);
-  for (int n = s.grid / 2; n >= 1; n /= 2) b.level.push_back(next_level_bound(s, b.level.back(), vmax));
-  // Each sample's weights sum to 1 and transmittance is <= 1, so a cone adds <= steps x bound.
-  b.cone = max_cone_steps(s) * *std::max_element(b.level.begin(), b.level.end());
+  b.saturated = s.storage == VoxelStorage::Rgba8 && vox && kScale * max_radiance(*vox) > 1.0;
+  const LinearBound own = doubled_voxel_bound(s, 8.0);
+  LinearBound l0 = own;
+  // Multibounce re-injects cone-traced light (restitution x albedo <= 1 per frame, W cones).
+  for (int k = 1; k < s.bounces; ++k) {
+    const LinearBound cone = cone_of(chain(l0, s), s);
+    l0 = {own.abs + diffuse_weight_sum(s) * cone.abs, own.rel + cone.rel};
+  }
+  b.level = chain(l0, s);
+  b.cone = cone_of(b.level, s);
   return b;
 }
 
-double image_bound(const std::string& stage, const Bounds& b, const VctSettings& s) {
-  if (stage == st::kImageIndirectDiffuse || stage == st::kImageDiffuseTerm) return b.cone * diffuse_weight_sum(s);
+LinearBound image_bound(const std::string& stage, const Bounds& b, const VctSettings& s) {
+  const double w = diffuse_weight_sum(s);
+  if (stage == st::kImageIndirectDiffuse || stage == st::kImageDiffuseTerm) return {b.cone.abs * w, b.cone.rel};
   if (stage == st::kImageIndirectSpecular || stage == st::kImageSpecularTerm) return b.cone;
-  if (stage == st::kImageFinal) return b.cone * (diffuse_weight_sum(s) + 1.0);
-  return 0.0;  // direct, emission, particles: float products and sums of the doubled inputs
+  // final = direct + diffuse term + specular term + emission (+ particles), all non-negative.
+  if (stage == st::kImageFinal) return {b.cone.abs * (w + 1.0), b.cone.rel};
+  return {};  // direct, emission, particles: float products and sums of the doubled inputs
 }
 
 struct Elements {
@@ -168,20 +184,19 @@ RelationResult check_linearity(const MetamorphicContext& c) {
         r.stages.push_back(missing_stage(stage, "RGBA8 voxels saturated when doubled: not linear downstream"));
         continue;
       }
-      const double bnd = image_bound(stage, bounds, s);
+      const LinearBound bnd = image_bound(stage, bounds, s);
       r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.width, b.height, false}, scaled, false,
-                                        [bnd](size_t, int ch, double) { return ch < 3 ? bnd : 0.0; }));
+                                        [bnd](size_t, int ch, double e) { return ch < 3 ? bnd.at(e) : 0.0; }));
     } else {
       const Volume &b = c.base.volumes.at(stage), &t = test.volumes.at(stage);
       if (b.data.size() != t.data.size()) continue;
       const int level = ref && ref->row->index == StageIndex::MipLevel ? ref->index : 0;
-      const double lb = bounds.level[std::min<size_t>(size_t(level), bounds.level.size() - 1)];
+      const LinearBound lb = bounds.level[std::min<size_t>(size_t(level), bounds.level.size() - 1)];
       auto bound = [&, level, lb, scaled](size_t i, int ch, double expected) {
         if (ch >= scaled) return 0.0;
-        if (level > 0 || stage != st::kVoxelRadiance) return lb;
+        if (level > 0 || stage != st::kVoxelRadiance || s.bounces > 1) return lb.at(expected);
         const double n = frags && frags->voxel_count() == b.voxel_count() ? double(frags->data[i]) : 8.0;
-        double l0 = doubled_voxel_bound(s, expected, std::max(n, 1.0));
-        return s.bounces > 1 ? std::max(l0, lb) : l0;
+        return doubled_voxel_bound(s, std::max(n, 1.0)).at(expected);
       };
       r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.nx, b.ny, true}, scaled, clip, bound));
     }
@@ -199,7 +214,8 @@ RelationResult check_linearity(const MetamorphicContext& c) {
   std::snprintf(b, sizeof b, "%zu stages compared, %zu exactly doubled; largest |test - 2 base| %.3g", compared, exact,
                 worst);
   r.note = b;
-  r.extra = {{"cone_bound", bounds.cone}, {"level_bounds", bounds.level}, {"max_cone_steps", max_cone_steps(s)}};
+  r.extra = {{"cone_bound_abs", bounds.cone.abs}, {"cone_bound_rel", bounds.cone.rel},
+             {"max_cone_steps", max_cone_steps(s)}};
   r.sets["base"] = c.base;
   r.sets["doubled"] = test;
   return r;

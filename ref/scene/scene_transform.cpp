@@ -58,12 +58,13 @@ Scene on_voxel_lattice(const Scene& scene, int grid, int room_voxels) {
   const float voxel = size / float(grid);
   Scene s = mapped(scene, [&](const vec3& p) { return snap(p, voxel / kLatticeStepsPerVoxel); }, identity);
   s.volume.size = size;
-  // Half a lattice step off the voxel lattice: no lattice position (an axis-aligned wall, a
-  // vertex) lies on a voxel face, where which of the two voxels holds it is a rounding tie that
-  // a mirror (a turn) resolves the other way. Still exact: positions minus origin are odd
-  // multiples of half a step.
-  const float half_step = 0.5f * voxel / kLatticeStepsPerVoxel;
-  s.volume.origin = glm::floor((lo - vec3(voxel)) / voxel) * voxel - vec3(half_step);
+  // Off the voxel lattice by 1/2, 1/4, 1/8 of a lattice step per axis: no lattice position (an
+  // axis-aligned wall, a vertex) lies on a voxel face, and a 45-degree edge between lattice
+  // points (a quad's diagonal) misses the lines where faces meet. There, which voxel holds a
+  // point is a rounding tie that a mirror (a turn) resolves the other way. Still exact:
+  // positions minus origin are multiples of 1/8 step.
+  const float step = voxel / kLatticeStepsPerVoxel;
+  s.volume.origin = glm::floor((lo - vec3(voxel)) / voxel) * voxel - vec3(0.5f, 0.25f, 0.125f) * step;
   s.volume.overridden = true;
   return s;
 }

@@ -4,6 +4,7 @@
 // caught by the relation that sees them. The GL side: tests/gl/gl_metamorphic_test.cpp.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "compare/metamorphic.h"
@@ -17,6 +18,11 @@ namespace vct::cmp {
 namespace {
 
 namespace st = stage_names;
+
+bool is_cone_traced_stage(const std::string& stage) {
+  const auto ref = find_stage(stage);
+  return ref && judged_on_own_inputs(*ref->row, false);
+}
 
 Settings small() {
   Settings s;
@@ -84,11 +90,13 @@ TEST(MetamorphicRef, EveryRelationHoldsOnTheCornellBox) {
   }
   // Translation with the volume: the voxel stages are identical, index by index.
   for (const StageVerdict& v : relation(run, "translate").stages) {
-    if (v.stage == st::kVoxelRadiance || v.stage == st::kVoxelOccupancy) EXPECT_EQ(v.max_abs, 0.0) << v.stage;
+    if (v.stage == st::kVoxelRadiance || v.stage == st::kVoxelOccupancy) {
+      EXPECT_EQ(v.max_abs, 0.0) << v.stage;
+    }
   }
 }
 
-TEST(MetamorphicRef, LinearityIsBitExactWithExactMeanAndHalfStorage) {
+TEST(MetamorphicRef, LinearityIsBitExactWhereThePipelineIsFloat) {
   Settings s = small();
   s.vct.reduction = Reduction::ExactMean;
   s.vct.voxelizer = Voxelizer::Conservative;
@@ -96,7 +104,23 @@ TEST(MetamorphicRef, LinearityIsBitExactWithExactMeanAndHalfStorage) {
   const RelationResult& r = relation(run, "linearity");
   print(run, "ref exact");
   EXPECT_EQ(r.verdict, Verdict::Pass);
-  for (const StageVerdict& v : r.stages) EXPECT_EQ(v.max_abs, 0.0) << v.stage << ": " << v.note;
+  for (const StageVerdict& v : r.stages) {
+    const auto ref = find_stage(v.stage);
+    ASSERT_TRUE(ref) << v.stage;
+    const bool reads_voxels = ref->row->kind == StageKind::Volume || is_cone_traced_stage(v.stage);
+    if (reads_voxels) {
+      // Half subnormals (below 2^-14) have a fixed spacing: doubling may round one 2^-24 apart
+      // there, and the mips and cones carry that on (docs/metamorphic.md, Linearity).
+      EXPECT_LE(v.max_abs, v.extra.at("bound").get<double>()) << v.stage;
+    } else {
+      EXPECT_EQ(v.max_abs, 0.0) << v.stage << ": " << v.note;  // float products of doubled inputs
+    }
+  }
+  for (const StageVerdict& v : r.stages) {
+    if (v.stage == st::kVoxelRadiance) {
+      EXPECT_LE(v.max_abs, std::ldexp(1.0, -24));
+    }
+  }
 }
 
 TEST(MetamorphicRef, FurnaceIsBoundedAndItsBiasReported) {

@@ -43,8 +43,9 @@ TEST(SceneTransform, LatticeVolumeIsDyadicAndHoldsTheSceneWithRoom) {
   EXPECT_TRUE(is_power_of_two(s.volume.size)) << s.volume.size;
   EXPECT_TRUE(s.volume.overridden);
   const float q = voxel / kLatticeStepsPerVoxel;
-  // Half a lattice step below the voxel lattice: no lattice position on a voxel face.
-  for (int a = 0; a < 3; ++a) EXPECT_EQ(std::fmod(s.volume.origin[a] + 0.5f * q, voxel), 0.0f) << a;
+  // 1/2, 1/4, 1/8 of a lattice step below the voxel lattice: no lattice position on a voxel face.
+  const vec3 offset = vec3(0.5f, 0.25f, 0.125f) * q;
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(std::fmod(s.volume.origin[a] + offset[a], voxel), 0.0f) << a;
   for (const vec3& p : s.positions)
     for (int a = 0; a < 3; ++a) EXPECT_NE(std::fmod(p[a] - s.volume.origin[a], voxel), 0.0f);
   for (const vec3& p : s.positions) {
