@@ -14,10 +14,11 @@ double storage_rounding(const VctSettings& s, double v) {
   return s.storage == VoxelStorage::Rgba8 ? 1.0 / 255.0 : half_ulp(v);
 }
 
-LinearBound doubled_voxel_bound(const VctSettings& s, double n) {
+LinearBound doubled_voxel_bound(const VctSettings& s, double n, int particles) {
   LinearBound b;
   if (s.reduction == Reduction::FixedPoint) b.abs = 2.0 * double(sh::FIXED_POINT_INV_SCALE);
   if (s.reduction == Reduction::CasRgba8) b.abs = n / 255.0;
+  b.abs += double(particles) * double(sh::FIXED_POINT_INV_SCALE);
   if (s.storage == VoxelStorage::Rgba8) {
     b.abs += 1.0 / 255.0;
     return b;

@@ -24,8 +24,10 @@ double storage_rounding(const VctSettings& s, double v);
 /// <= n and the rounded means by <= 2 quanta (abs 2^-13); CAS: <= 1/255 per running-average step
 /// (abs n/255); storage: RGBA8 always abs 1/255 (round(2y) != 2 round(y)); half floats commute
 /// with doubling but for values that already differ (rel 2^-10: one ulp) and subnormals (below
-/// 2^-14 the spacing is fixed: abs 2^-24).
-LinearBound doubled_voxel_bound(const VctSettings& s, double n);
+/// 2^-14 the spacing is fixed: abs 2^-24). Particle light is added, not averaged; a backend may
+/// add each of the scene's `particles` in fixed point (the GL build does: docs/gl_backend.md), each
+/// <= 1 quantum apart: abs particles x 2^-14, then stored once more (rel 2^-10).
+LinearBound doubled_voxel_bound(const VctSettings& s, double n, int particles = 0);
 
 /// One more mip level: a box filter of non-negative values keeps abs and rel, anisotropic
 /// compositing (front + (1 - a) back, the same a on both sides) keeps rel and at most doubles abs;

@@ -64,11 +64,19 @@ std::vector<LinearBound> chain(const LinearBound& l0, const VctSettings& s) {
   return levels;
 }
 
-Bounds linearity_bounds(const StageSet& base, const VctSettings& s) {
+// Particles the frame adds into its voxels.
+int particle_count(const Scene& scene, const VctSettings& s) {
+  int n = 0;
+  if (s.particles)
+    for (const ParticleEmitter& e : scene.emitters) n += e.count;
+  return n;
+}
+
+Bounds linearity_bounds(const StageSet& base, const VctSettings& s, int particles) {
   Bounds b;
   const Volume* vox = base.volumes.count(st::kVoxelRadiance) ? &base.volumes.at(st::kVoxelRadiance) : nullptr;
   b.saturated = s.storage == VoxelStorage::Rgba8 && vox && kScale * max_radiance(*vox) > 1.0;
-  const LinearBound own = doubled_voxel_bound(s, 8.0);
+  const LinearBound own = doubled_voxel_bound(s, 8.0, particles);
   LinearBound l0 = own;
   // Multibounce re-injects cone-traced light (restitution x albedo <= 1 per frame, W cones).
   for (int k = 1; k < s.bounces; ++k) {
@@ -165,7 +173,8 @@ StageVerdict missing_stage(const std::string& stage, const std::string& why) {
 RelationResult check_linearity(const MetamorphicContext& c) {
   const VctSettings& s = c.settings.vct;
   const StageSet test = stage_set_from_frame(c.render(light_scaled(c.scene, float(kScale)), c.settings), s);
-  const Bounds bounds = linearity_bounds(c.base, s);
+  const int particles = particle_count(c.scene, s);
+  const Bounds bounds = linearity_bounds(c.base, s, particles);
   const Volume* frags = c.base.volumes.count(st::kVoxelFragments) ? &c.base.volumes.at(st::kVoxelFragments) : nullptr;
   RelationResult r;
   r.name = "linearity";
@@ -196,7 +205,7 @@ RelationResult check_linearity(const MetamorphicContext& c) {
         if (ch >= scaled) return 0.0;
         if (level > 0 || stage != st::kVoxelRadiance || s.bounces > 1) return lb.at(expected);
         const double n = frags && frags->voxel_count() == b.voxel_count() ? double(frags->data[i]) : 8.0;
-        return doubled_voxel_bound(s, std::max(n, 1.0)).at(expected);
+        return doubled_voxel_bound(s, std::max(n, 1.0), particles).at(expected);
       };
       r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.nx, b.ny, true}, scaled, clip, bound));
     }
