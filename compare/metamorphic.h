@@ -62,7 +62,7 @@ const std::vector<MetamorphicRow>& metamorphic_rows();
 int shift_voxels_for_grid(int n);
 
 struct MetamorphicRun {
-  Scene scene;   // the scene on its voxel lattice (scene/scene_transform.h)
+  Scene scene;  // the scene on its voxel lattice (scene/scene_transform.h)
   StageSet base;
   std::vector<RelationResult> relations;
   Verdict overall() const;  // Fail if any relation fails, else Warn if any warns, else Pass

@@ -68,8 +68,8 @@ StageVerdict premultiplied(const std::string& stage, const Volume& vol, double l
 }
 
 // Every covered pixel within [lo, hi] (+ bound) and grey (all inputs are grey).
-StageVerdict within(const std::string& stage, const Image& img, const Image& coverage, double lo, double hi,
-                    double bound, double& mean) {
+StageVerdict within(const std::string& stage, const Image& img, const Image& coverage, double lo,
+                    double hi, double bound, double& mean) {
   std::vector<Offender> off;
   double worst = 0.0, sum = 0.0;
   size_t n = 0;
@@ -95,7 +95,8 @@ StageVerdict within(const std::string& stage, const Image& img, const Image& cov
     }
   mean = n ? sum / double(n) : 0.0;
   char b[160];
-  std::snprintf(b, sizeof b, "grey and in [%.4g, %.4g] within %.3g on covered pixels", lo, hi, bound);
+  std::snprintf(b, sizeof b, "grey and in [%.4g, %.4g] within %.3g on covered pixels", lo, hi,
+                bound);
   StageVerdict v = verdict_of(stage, b, n, std::move(off), worst);
   std::snprintf(b, sizeof b, "mean %.4f over %zu covered pixels", mean, n);
   v.note = b;
@@ -106,45 +107,53 @@ StageVerdict within(const std::string& stage, const Image& img, const Image& cov
 
 RelationResult check_furnace(const MetamorphicContext& c) {
   const std::string& text = embedded_scene(kFurnaceFile);
-  if (text.empty()) throw InputError("builtin:furnace_sphere", "the furnace scene is missing from this build");
+  if (text.empty())
+    throw InputError("builtin:furnace_sphere", "the furnace scene is missing from this build");
   const Scene scene = load_gltf_text(text, "builtin:furnace_sphere", "");
   Settings s = c.settings;
   s.vct.bounces = 1;  // the relation below is about one frame of light in the voxels
   const Material& m = scene.materials.at(0);
   const double le = m.emission().x, rho = m.base_color_factor.x;
   const StageSet set = stage_set_from_frame(c.render(scene, s), s.vct);
-  const double w = s.vct.diffuse_weighting == DiffuseWeighting::SeedSum ? double(s.vct.diffuse_cone_count) : 1.0;
+  const double w =
+      s.vct.diffuse_weighting == DiffuseWeighting::SeedSum ? double(s.vct.diffuse_cone_count) : 1.0;
   RelationResult r;
   r.name = "furnace";
   // Level 0 stores Le (or Le x a coverage mean); every level rounds RGB and opacity once more
   // (Le x one opacity rounding), and compositing may double what came before.
   std::vector<double> level_bounds = {storage_rounding(s.vct, le)};
   for (int n = s.vct.grid / 2; n >= 1; n /= 2)
-    level_bounds.push_back(level_bounds.back() * (s.vct.anisotropic ? 2.0 : 1.0) + storage_rounding(s.vct, le) +
-                           le * storage_rounding(s.vct, 1.0));
-  for (const auto& [stage, vol] : set.volumes) {
+    level_bounds.push_back(level_bounds.back() * (s.vct.anisotropic ? 2.0 : 1.0) +
+                           storage_rounding(s.vct, le) + le * storage_rounding(s.vct, 1.0));
+  for (const std::string& stage : pipeline_order(set, set)) {
+    if (!set.volumes.count(stage)) continue;
+    const Volume& vol = set.volumes.at(stage);
     const auto ref = find_stage(stage);
-    const bool chain = stage == st::kVoxelRadiance || (ref && ref->row->model == ToleranceModel::Mip);
+    const bool chain =
+        stage == st::kVoxelRadiance || (ref && ref->row->model == ToleranceModel::Mip);
     if (!chain || vol.channels < 4) continue;
     const int level = ref && ref->row->index == StageIndex::MipLevel ? ref->index : 0;
-    r.stages.push_back(premultiplied(stage, vol, le, level_bounds[std::min<size_t>(size_t(level), level_bounds.size() - 1)]));
+    r.stages.push_back(premultiplied(
+        stage, vol, le, level_bounds[std::min<size_t>(size_t(level), level_bounds.size() - 1)]));
   }
   // A cone is Le x its opacity plus what each sample's rounding added: <= steps x the largest
   // level bound (transmittance <= 1).
-  const double cone_bound = max_cone_steps(s.vct) * *std::max_element(level_bounds.begin(), level_bounds.end());
+  const double cone_bound =
+      max_cone_steps(s.vct) * *std::max_element(level_bounds.begin(), level_bounds.end());
   const Image& cov = set.images.at(st::kGbufferCoverage);
   double mean_indirect = 0.0, mean_final = 0.0;
   if (set.images.count(st::kImageIndirectDiffuse))
-    r.stages.push_back(within(st::kImageIndirectDiffuse, set.images.at(st::kImageIndirectDiffuse), cov, 0.0, le * w,
-                              cone_bound, mean_indirect));
+    r.stages.push_back(within(st::kImageIndirectDiffuse, set.images.at(st::kImageIndirectDiffuse),
+                              cov, 0.0, le * w, cone_bound, mean_indirect));
   if (set.images.count(st::kImageFinal))
-    r.stages.push_back(within(st::kImageFinal, set.images.at(st::kImageFinal), cov, le, le * (1.0 + rho * w),
-                              cone_bound * (1.0 + rho), mean_final));
+    r.stages.push_back(within(st::kImageFinal, set.images.at(st::kImageFinal), cov, le,
+                              le * (1.0 + rho * w), cone_bound * (1.0 + rho), mean_final));
   r.verdict = overall_of(r.stages);
   const double analytic = le * (1.0 + rho);
   char b[320];
   std::snprintf(b, sizeof b,
-                "final %.4f vs analytic one-bounce Le(1+rho) = %.4f (%+.1f%%); indirect diffuse %.4f vs Le = %.4f "
+                "final %.4f vs analytic one-bounce Le(1+rho) = %.4f (%+.1f%%); indirect diffuse "
+                "%.4f vs Le = %.4f "
                 "(%+.1f%%): VCT's bias (docs/metamorphic.md, Furnace)",
                 mean_final, analytic, 100.0 * (mean_final / analytic - 1.0), mean_indirect, le,
                 100.0 * (mean_indirect / le - 1.0));

@@ -14,14 +14,17 @@ namespace vct::cmp {
 
 namespace {
 
-float voxel_size(const MetamorphicContext& c) { return c.scene.volume.size / float(c.settings.vct.grid); }
+float voxel_size(const MetamorphicContext& c) {
+  return c.scene.volume.size / float(c.settings.vct.grid);
+}
 
 StageSet render_set(const MetamorphicContext& c, const Scene& scene) {
   return stage_set_from_frame(c.render(scene, c.settings), c.settings.vct);
 }
 
 // The base frame as the reference, the mapped-back frame as the test, on the stages both hold.
-RelationResult judge_against_base(const std::string& name, const StageSet& base_set, const StageSet& mapped) {
+RelationResult judge_against_base(const std::string& name, const StageSet& base_set,
+                                  const StageSet& mapped) {
   RelationResult r;
   r.name = name;
   const StageSet base = common_stages(base_set, mapped);
@@ -31,10 +34,12 @@ RelationResult judge_against_base(const std::string& name, const StageSet& base_
     if (v.verdict != Verdict::Missing) r.stages.push_back(v);
   r.verdict = overall_of(r.stages);
   size_t failing = 0, warning = 0;
-  for (const StageVerdict& v : r.stages) failing += v.verdict == Verdict::Fail, warning += v.verdict == Verdict::Warn;
+  for (const StageVerdict& v : r.stages)
+    failing += v.verdict == Verdict::Fail, warning += v.verdict == Verdict::Warn;
   char b[256];
-  std::snprintf(b, sizeof b, "%zu stages compared: %zu fail, %zu warn%s%s", r.stages.size(), failing, warning,
-                rep.first_failing().empty() ? "" : "; first failing: ", rep.first_failing().c_str());
+  std::snprintf(
+      b, sizeof b, "%zu stages compared: %zu fail, %zu warn%s%s", r.stages.size(), failing, warning,
+      rep.first_failing().empty() ? "" : "; first failing: ", rep.first_failing().c_str());
   r.note = b;
   r.sets["base"] = base;
   r.sets["mapped"] = test;
@@ -81,26 +86,33 @@ const StageSet& turn_base(const MetamorphicContext& c, const TurnScene& t) {
   if (t.key.empty()) return c.base;
   auto it = c.variant_bases.find(t.key);
   if (it == c.variant_bases.end())
-    it = c.variant_bases.emplace(t.key, stage_set_from_frame(c.render(t.scene, t.settings), t.settings.vct)).first;
+    it = c.variant_bases
+             .emplace(t.key, stage_set_from_frame(c.render(t.scene, t.settings), t.settings.vct))
+             .first;
   return it->second;
 }
 
 RelationResult check_turn(const MetamorphicContext& c, int axis, const char* name) {
   const TurnScene t = turn_scene(c, axis);
   const StageSet& base = turn_base(c, t);
-  StageSet mapped =
-      unturned(stage_set_from_frame(c.render(turned90(t.scene, axis), t.settings), t.settings.vct), axis);
+  StageSet mapped = unturned(
+      stage_set_from_frame(c.render(turned90(t.scene, axis), t.settings), t.settings.vct), axis);
   const size_t left_out =
-      c.settings.vct.diffuse_cones ? keep_turn_invariant_cones(mapped, base, c.settings.vct.diffuse_cone_count) : 0;
+      c.settings.vct.diffuse_cones
+          ? keep_turn_invariant_cones(mapped, base, c.settings.vct.diffuse_cone_count)
+          : 0;
   RelationResult r = judge_against_base(name, base, mapped);
   r.extra["axis"] = std::string(1, "xyz"[axis]);
   r.extra["diffuse_cone_pixels_not_judged"] = left_out;
   r.extra["variant"] = t.key;
-  if (!t.key.empty()) r.sets["base"] = base;  // not the shared base: written beside the relation
+  if (!t.key.empty())
+    r.sets["variant_base"] = base;  // not the shared base: written beside the relation
   if (left_out) {
     char b[160];
-    std::snprintf(b, sizeof b, "; diffuse cone stages not judged at %zu pixels (normal off the axes: cone frame)",
-                  left_out);
+    std::snprintf(
+        b, sizeof b,
+        "; diffuse cone stages not judged at %zu pixels (normal off the axes: cone frame)",
+        left_out);
     r.note += b;
   }
   if (!t.key.empty()) r.note += "; both frames: " + t.what;
@@ -113,7 +125,8 @@ RelationResult check_translate(const MetamorphicContext& c) {
   // Odd, mixed-sign whole voxels: every voxel keeps its index since the volume moves too.
   const ivec3 k(3, -2, 5);
   const vec3 t = vec3(k) * voxel_size(c);
-  RelationResult r = judge_against_base("translate", c.base, untranslated(render_set(c, translated(c.scene, t, true)), t));
+  RelationResult r = judge_against_base(
+      "translate", c.base, untranslated(render_set(c, translated(c.scene, t, true)), t));
   r.extra["voxels"] = {k.x, k.y, k.z};
   return r;
 }
@@ -122,13 +135,20 @@ RelationResult check_shift_in_volume(const MetamorphicContext& c) {
   const ivec3 k(c.shift_voxels);
   const vec3 t = vec3(k) * voxel_size(c);
   const StageSet shifted = render_set(c, translated(c.scene, t, false));
-  RelationResult r = judge_against_base("shift_in_volume", c.base, unshifted(shifted, k, t, c.settings.vct.soft_shadows));
+  RelationResult r = judge_against_base("shift_in_volume", c.base,
+                                        unshifted(shifted, k, t, c.settings.vct.soft_shadows));
   r.extra["voxels"] = {k.x, k.y, k.z};
   return r;
 }
 
-RelationResult check_turn_x(const MetamorphicContext& c) { return check_turn(c, 0, "turn_x"); }
-RelationResult check_turn_y(const MetamorphicContext& c) { return check_turn(c, 1, "turn_y"); }
-RelationResult check_turn_z(const MetamorphicContext& c) { return check_turn(c, 2, "turn_z"); }
+RelationResult check_turn_x(const MetamorphicContext& c) {
+  return check_turn(c, 0, "turn_x");
+}
+RelationResult check_turn_y(const MetamorphicContext& c) {
+  return check_turn(c, 1, "turn_y");
+}
+RelationResult check_turn_z(const MetamorphicContext& c) {
+  return check_turn(c, 2, "turn_z");
+}
 
 }  // namespace vct::cmp

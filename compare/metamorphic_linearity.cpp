@@ -47,13 +47,15 @@ struct Bounds {
 double max_radiance(const Volume& v) {
   double m = 0.0;
   for (size_t i = 0; i < v.voxel_count(); ++i)
-    for (int c = 0; c < std::min(3, v.channels); ++c) m = std::max(m, double(v.data[i * size_t(v.channels) + c]));
+    for (int c = 0; c < std::min(3, v.channels); ++c)
+      m = std::max(m, double(v.data[i * size_t(v.channels) + c]));
   return m;
 }
 
 LinearBound cone_of(const std::vector<LinearBound>& levels, const VctSettings& s) {
   LinearBound c;
-  for (const LinearBound& l : levels) c.abs = std::max(c.abs, l.abs), c.rel = std::max(c.rel, l.rel);
+  for (const LinearBound& l : levels)
+    c.abs = std::max(c.abs, l.abs), c.rel = std::max(c.rel, l.rel);
   c.abs *= max_cone_steps(s);
   return c;
 }
@@ -74,7 +76,8 @@ int particle_count(const Scene& scene, const VctSettings& s) {
 
 Bounds linearity_bounds(const StageSet& base, const VctSettings& s, int particles) {
   Bounds b;
-  const Volume* vox = base.volumes.count(st::kVoxelRadiance) ? &base.volumes.at(st::kVoxelRadiance) : nullptr;
+  const Volume* vox =
+      base.volumes.count(st::kVoxelRadiance) ? &base.volumes.at(st::kVoxelRadiance) : nullptr;
   b.saturated = s.storage == VoxelStorage::Rgba8 && vox && kScale * max_radiance(*vox) > 1.0;
   const LinearBound own = doubled_voxel_bound(s, 8.0, particles);
   LinearBound l0 = own;
@@ -90,7 +93,8 @@ Bounds linearity_bounds(const StageSet& base, const VctSettings& s, int particle
 
 LinearBound image_bound(const std::string& stage, const Bounds& b, const VctSettings& s) {
   const double w = diffuse_weight_sum(s);
-  if (stage == st::kImageIndirectDiffuse || stage == st::kImageDiffuseTerm) return {b.cone.abs * w, b.cone.rel};
+  if (stage == st::kImageIndirectDiffuse || stage == st::kImageDiffuseTerm)
+    return {b.cone.abs * w, b.cone.rel};
   if (stage == st::kImageIndirectSpecular || stage == st::kImageSpecularTerm) return b.cone;
   // final = direct + diffuse term + specular term + emission (+ particles), all non-negative.
   if (stage == st::kImageFinal) return {b.cone.abs * (w + 1.0), b.cone.rel};
@@ -107,8 +111,8 @@ struct Elements {
 
 // |test - 2 base| on the radiance channels, |test - base| on the rest, against `bound(i, c, e)`.
 template <class BoundFn>
-StageVerdict compare_scaled(const std::string& stage, const Elements& e, int scaled, bool clip_at_one,
-                            BoundFn bound) {
+StageVerdict compare_scaled(const std::string& stage, const Elements& e, int scaled,
+                            bool clip_at_one, BoundFn bound) {
   StageVerdict v;
   v.stage = stage;
   v.model = "linearity";
@@ -150,11 +154,12 @@ StageVerdict compare_scaled(const std::string& stage, const Elements& e, int sca
   v.worst = std::move(offenders);
   v.verdict = v.out_of_bound ? Verdict::Fail : Verdict::Pass;
   char b[200];
-  std::snprintf(b, sizeof b, "|test - %s| <= %.3g (radiance channels x2, others x1)", scaled ? "2 base" : "base",
-                worst_bound);
+  std::snprintf(b, sizeof b, "|test - %s| <= %.3g (radiance channels x2, others x1)",
+                scaled ? "2 base" : "base", worst_bound);
   v.bound = b;
-  std::snprintf(b, sizeof b, "%zu of %zu values bit-identical to the expected ones; max |diff| %.3g",
-                identical, n * size_t(std::max(e.channels, 1)), v.max_abs);
+  std::snprintf(b, sizeof b,
+                "%zu of %zu values bit-identical to the expected ones; max |diff| %.3g", identical,
+                n * size_t(std::max(e.channels, 1)), v.max_abs);
   v.note = b;
   v.extra = {{"identical_values", identical}, {"bound", worst_bound}};
   return v;
@@ -172,16 +177,18 @@ StageVerdict missing_stage(const std::string& stage, const std::string& why) {
 
 RelationResult check_linearity(const MetamorphicContext& c) {
   const VctSettings& s = c.settings.vct;
-  const StageSet test = stage_set_from_frame(c.render(light_scaled(c.scene, float(kScale)), c.settings), s);
+  const StageSet test =
+      stage_set_from_frame(c.render(light_scaled(c.scene, float(kScale)), c.settings), s);
   const int particles = particle_count(c.scene, s);
   const Bounds bounds = linearity_bounds(c.base, s, particles);
-  const Volume* frags = c.base.volumes.count(st::kVoxelFragments) ? &c.base.volumes.at(st::kVoxelFragments) : nullptr;
+  const Volume* frags =
+      c.base.volumes.count(st::kVoxelFragments) ? &c.base.volumes.at(st::kVoxelFragments) : nullptr;
   RelationResult r;
   r.name = "linearity";
   for (const std::string& stage : pipeline_order(c.base, test)) {
     const auto ref = find_stage(stage);
-    if (!c.base.has(stage) || !test.has(stage) || (ref && ref->row->role == StageRole::Auxiliary &&
-                                                    stage != st::kVoxelFragments))
+    if (!c.base.has(stage) || !test.has(stage) ||
+        (ref && ref->row->role == StageRole::Auxiliary && stage != st::kVoxelFragments))
       continue;  // the CAS interval and texture slack are the reference's judging aids
     const int scaled = radiance_channels(stage);
     const bool clip = scaled && s.storage == VoxelStorage::Rgba8 && c.base.volumes.count(stage);
@@ -190,12 +197,14 @@ RelationResult check_linearity(const MetamorphicContext& c) {
       if (b.data.size() != t.data.size()) continue;
       const bool cone = is_cone_traced(stage, s.soft_shadows);
       if (cone && bounds.saturated) {
-        r.stages.push_back(missing_stage(stage, "RGBA8 voxels saturated when doubled: not linear downstream"));
+        r.stages.push_back(
+            missing_stage(stage, "RGBA8 voxels saturated when doubled: not linear downstream"));
         continue;
       }
       const LinearBound bnd = image_bound(stage, bounds, s);
-      r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.width, b.height, false}, scaled, false,
-                                        [bnd](size_t, int ch, double e) { return ch < 3 ? bnd.at(e) : 0.0; }));
+      r.stages.push_back(compare_scaled(
+          stage, {b.data, t.data, b.channels, b.width, b.height, false}, scaled, false,
+          [bnd](size_t, int ch, double e) { return ch < 3 ? bnd.at(e) : 0.0; }));
     } else {
       const Volume &b = c.base.volumes.at(stage), &t = test.volumes.at(stage);
       if (b.data.size() != t.data.size()) continue;
@@ -204,10 +213,12 @@ RelationResult check_linearity(const MetamorphicContext& c) {
       auto bound = [&, level, lb, scaled](size_t i, int ch, double expected) {
         if (ch >= scaled) return 0.0;
         if (level > 0 || stage != st::kVoxelRadiance || s.bounces > 1) return lb.at(expected);
-        const double n = frags && frags->voxel_count() == b.voxel_count() ? double(frags->data[i]) : 8.0;
+        const double n =
+            frags && frags->voxel_count() == b.voxel_count() ? double(frags->data[i]) : 8.0;
         return doubled_voxel_bound(s, std::max(n, 1.0), particles).at(expected);
       };
-      r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.nx, b.ny, true}, scaled, clip, bound));
+      r.stages.push_back(compare_scaled(stage, {b.data, t.data, b.channels, b.nx, b.ny, true},
+                                        scaled, clip, bound));
     }
   }
   r.verdict = overall_of(r.stages);
@@ -220,10 +231,12 @@ RelationResult check_linearity(const MetamorphicContext& c) {
     worst = std::max(worst, v.max_abs);
   }
   char b[200];
-  std::snprintf(b, sizeof b, "%zu stages compared, %zu exactly doubled; largest |test - 2 base| %.3g", compared, exact,
-                worst);
+  std::snprintf(b, sizeof b,
+                "%zu stages compared, %zu exactly doubled; largest |test - 2 base| %.3g", compared,
+                exact, worst);
   r.note = b;
-  r.extra = {{"cone_bound_abs", bounds.cone.abs}, {"cone_bound_rel", bounds.cone.rel},
+  r.extra = {{"cone_bound_abs", bounds.cone.abs},
+             {"cone_bound_rel", bounds.cone.rel},
              {"max_cone_steps", max_cone_steps(s)}};
   r.sets["base"] = c.base;
   r.sets["doubled"] = test;

@@ -41,7 +41,9 @@ int level_of(const std::string& stage) {
   return ref && ref->row->index == StageIndex::MipLevel ? ref->index : 0;
 }
 
-bool is_cube(const Volume& v) { return v.nx == v.ny && v.ny == v.nz; }
+bool is_cube(const Volume& v) {
+  return v.nx == v.ny && v.ny == v.nz;
+}
 
 }  // namespace
 
@@ -49,7 +51,8 @@ StageSet untranslated(const StageSet& test, const vec3& t) {
   StageSet out = test;
   auto pos = out.images.find(st::kGbufferPosition);
   if (pos != out.images.end()) {
-    const Image& coverage = out.images.count(st::kGbufferCoverage) ? out.images.at(st::kGbufferCoverage) : Image();
+    const Image& coverage =
+        out.images.count(st::kGbufferCoverage) ? out.images.at(st::kGbufferCoverage) : Image();
     Image& p = pos->second;
     for (int y = 0; y < p.height; ++y)
       for (int x = 0; x < p.width; ++x)  // uncovered pixels hold zeros on both sides
@@ -95,7 +98,8 @@ StageSet unturned(const StageSet& test, int axis) {
       it = out.images.erase(it);
       continue;
     }
-    if (it->first == st::kGbufferPosition || it->first == st::kGbufferNormal) map_rgb(it->second, back);
+    if (it->first == st::kGbufferPosition || it->first == st::kGbufferNormal)
+      map_rgb(it->second, back);
     ++it;
   }
   auto index_map = [axis](const ivec3& i, int n) { return turned_voxel(i, n, axis); };
@@ -124,17 +128,22 @@ size_t keep_turn_invariant_cones(StageSet& mapped, const StageSet& base, int dif
   if (normal == base.images.end()) return 0;
   const Image& n = normal->second;
   const bool quarter_steps = (diffuse_cone_count - 1) % 4 == 0;
-  auto axis_aligned = [](const vec3& v) { return int(v.x == 0.0f) + int(v.y == 0.0f) + int(v.z == 0.0f) == 2; };
+  auto axis_aligned = [](const vec3& v) {
+    return int(v.x == 0.0f) + int(v.y == 0.0f) + int(v.z == 0.0f) == 2;
+  };
   size_t left_out = 0;
   for (int y = 0; y < n.height; ++y)
     for (int x = 0; x < n.width; ++x) {
       if (quarter_steps && axis_aligned(n.rgb(x, y))) continue;
       ++left_out;
-      for (const char* stage : {st::kImageIndirectDiffuse, st::kImageDiffuseTerm, st::kImageFinal}) {
+      for (const char* stage :
+           {st::kImageIndirectDiffuse, st::kImageDiffuseTerm, st::kImageFinal}) {
         auto m = mapped.images.find(stage);
         auto b = base.images.find(stage);
-        if (m == mapped.images.end() || b == base.images.end() || b->second.width != n.width) continue;
-        std::copy(b->second.pixel(x, y), b->second.pixel(x, y) + b->second.channels, m->second.pixel(x, y));
+        if (m == mapped.images.end() || b == base.images.end() || b->second.width != n.width)
+          continue;
+        std::copy(b->second.pixel(x, y), b->second.pixel(x, y) + b->second.channels,
+                  m->second.pixel(x, y));
       }
     }
   return left_out;

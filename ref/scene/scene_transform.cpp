@@ -14,7 +14,9 @@ Bounds3 bounds_of(const std::vector<vec3>& positions) {
 }
 
 // Multiples of a power of two: p / q and the product are exact, so only the rounding moves p.
-vec3 snap(const vec3& p, float quantum) { return glm::round(p / quantum) * quantum; }
+vec3 snap(const vec3& p, float quantum) {
+  return glm::round(p / quantum) * quantum;
+}
 
 // Every point of the scene through `point`, every direction through `dir` (normals, tangents,
 // spot axes, the camera frame, particle velocities).
@@ -43,7 +45,9 @@ Scene mapped(const Scene& scene, PointFn point, DirFn dir) {
   return s;
 }
 
-vec3 identity(const vec3& v) { return v; }
+vec3 identity(const vec3& v) {
+  return v;
+}
 
 }  // namespace
 
@@ -56,7 +60,8 @@ Scene on_voxel_lattice(const Scene& scene, int grid, int room_voxels) {
   // the room, and one voxel above.
   while (largest + float(3 + room_voxels) * size / float(grid) > size) size *= 2.0f;
   const float voxel = size / float(grid);
-  Scene s = mapped(scene, [&](const vec3& p) { return snap(p, voxel / kLatticeStepsPerVoxel); }, identity);
+  Scene s = mapped(
+      scene, [&](const vec3& p) { return snap(p, voxel / kLatticeStepsPerVoxel); }, identity);
   s.volume.size = size;
   // Off the voxel lattice by 1/2, 1/4, 1/8 of a lattice step per axis: no lattice position (an
   // axis-aligned wall, a vertex) lies on a voxel face, and a 45-degree edge between lattice
@@ -64,7 +69,8 @@ Scene on_voxel_lattice(const Scene& scene, int grid, int room_voxels) {
   // point is a rounding tie that a mirror (a turn) resolves the other way. Still exact:
   // positions minus origin are multiples of 1/8 step.
   const float step = voxel / kLatticeStepsPerVoxel;
-  s.volume.origin = glm::floor((lo - vec3(voxel)) / voxel) * voxel - vec3(0.5f, 0.25f, 0.125f) * step;
+  s.volume.origin =
+      glm::floor((lo - vec3(voxel)) / voxel) * voxel - vec3(0.5f, 0.25f, 0.125f) * step;
   s.volume.overridden = true;
   return s;
 }

@@ -16,9 +16,10 @@ inline constexpr float kLatticeStepsPerVoxel = 64.0f;
 
 /// The scene in a volume of its own for the checks: size a power of two, origin 1/2, 1/4,
 /// 1/8 of a lattice step below a multiple of the voxel (no lattice position on a voxel face, no
-/// 45-degree lattice edge through a voxel edge), the scene inside with one free voxel on every side plus `room_voxels` free voxels on
-/// the + side of each axis (room for a shift), and every position (vertices, lights, camera,
-/// emitters) rounded to 1/64 voxel, so that moving by whole voxels and turning are exact.
+/// 45-degree lattice edge through a voxel edge), the scene inside with one free voxel on every side
+/// plus `room_voxels` free voxels on the + side of each axis (room for a shift), and every position
+/// (vertices, lights, camera, emitters) rounded to 1/64 voxel, so that moving by whole voxels and
+/// turning are exact.
 Scene on_voxel_lattice(const Scene& scene, int grid, int room_voxels);
 
 /// Every position moved by `t` (world units); the voxel volume too when `move_volume`.

@@ -60,8 +60,8 @@ std::string failing(const RelationResult& r) {
 
 void print(const MetamorphicRun& run, const char* what) {
   for (const RelationResult& r : run.relations)
-    std::printf("  [%s] %-16s %-4s %s | failing: %s\n", what, r.name.c_str(), to_string(r.verdict).c_str(),
-                r.note.c_str(), failing(r).c_str());
+    std::printf("  [%s] %-16s %-4s %s | failing: %s\n", what, r.name.c_str(),
+                to_string(r.verdict).c_str(), r.note.c_str(), failing(r).c_str());
 }
 
 TEST(MetamorphicMap, TurnedVoxelFollowsTheTurn) {

@@ -14,7 +14,9 @@ namespace vct::gl::test {
 namespace {
 
 cmp::FrameRenderer gl_renderer(GlContext& ctx, const std::string& fault = "") {
-  return [&ctx, fault](const Scene& scene, const Settings& s) { return render_gl_frame(ctx, scene, s, {"", fault}); };
+  return [&ctx, fault](const Scene& scene, const Settings& s) {
+    return render_gl_frame(ctx, scene, s, {"", fault});
+  };
 }
 
 std::set<std::string> failing_relations(const cmp::MetamorphicRun& run) {
@@ -35,8 +37,8 @@ void print(const cmp::MetamorphicRun& run, const std::string& what) {
     std::string stages;
     for (const cmp::StageVerdict& v : r.stages)
       if (v.verdict == cmp::Verdict::Fail) stages += v.stage + " ";
-    std::printf("  [%s] %-16s %-4s %s | failing: %s\n", what.c_str(), r.name.c_str(), cmp::to_string(r.verdict).c_str(),
-                r.note.c_str(), stages.c_str());
+    std::printf("  [%s] %-16s %-4s %s | failing: %s\n", what.c_str(), r.name.c_str(),
+                cmp::to_string(r.verdict).c_str(), r.note.c_str(), stages.c_str());
   }
 }
 
@@ -47,7 +49,8 @@ TEST(GlMetamorphic, EveryRelationHoldsOnTheCornellBox) {
     s.vct.anisotropic = aniso;
     const cmp::MetamorphicRun run = cmp::run_metamorphic(cornell_box(), s, gl_renderer(*ctx));
     print(run, aniso ? "gl aniso" : "gl");
-    EXPECT_EQ(failing_relations(run), std::set<std::string>{}) << (aniso ? "anisotropic" : "isotropic");
+    EXPECT_EQ(failing_relations(run), std::set<std::string>{})
+        << (aniso ? "anisotropic" : "isotropic");
   }
 }
 
@@ -65,7 +68,8 @@ const std::map<std::string, std::set<std::string>>& expected_catches() {
       // Level l from level l-2 at level l-1's coordinates: neither shift- nor turn-equivariant.
       {"wrong_mip", {"shift_in_volume", "turn_x", "turn_y", "turn_z"}},
       // Opacity above 1: the mip model's range check needs no reference; the furnace's bound.
-      {"alpha_unclamped", {"translate", "shift_in_volume", "turn_x", "turn_y", "turn_z", "furnace"}},
+      {"alpha_unclamped",
+       {"translate", "shift_in_volume", "turn_x", "turn_y", "turn_z", "furnace"}},
       // The march starting one step late is invariant under every transform, linear, and keeps
       // the furnace's bounds: not visible without a reference.
       {"cone_step", {}},
@@ -80,7 +84,8 @@ TEST(GlMetamorphic, FaultsAreCaughtByTheRelationsThatSeeThem) {
     if (!fault.visible_on_cpu_rasterizer) continue;
     Settings s = small_settings();
     s.vct.anisotropic = std::string(fault.name) == "alpha_unclamped";  // lives in the aniso mips
-    const cmp::MetamorphicRun run = cmp::run_metamorphic(cornell_box(), s, gl_renderer(*ctx, fault.name));
+    const cmp::MetamorphicRun run =
+        cmp::run_metamorphic(cornell_box(), s, gl_renderer(*ctx, fault.name));
     print(run, fault.name);
     const std::set<std::string> got = failing_relations(run);
     std::printf("fault %-16s caught by: %s\n", fault.name, joined(got).c_str());

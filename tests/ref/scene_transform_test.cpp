@@ -45,19 +45,22 @@ TEST(SceneTransform, LatticeVolumeIsDyadicAndHoldsTheSceneWithRoom) {
   const float q = voxel / kLatticeStepsPerVoxel;
   // 1/2, 1/4, 1/8 of a lattice step below the voxel lattice: no lattice position on a voxel face.
   const vec3 offset = vec3(0.5f, 0.25f, 0.125f) * q;
-  for (int a = 0; a < 3; ++a) EXPECT_EQ(std::fmod(s.volume.origin[a] + offset[a], voxel), 0.0f) << a;
+  for (int a = 0; a < 3; ++a)
+    EXPECT_EQ(std::fmod(s.volume.origin[a] + offset[a], voxel), 0.0f) << a;
   for (const vec3& p : s.positions)
     for (int a = 0; a < 3; ++a) EXPECT_NE(std::fmod(p[a] - s.volume.origin[a], voxel), 0.0f);
   for (const vec3& p : s.positions) {
     for (int a = 0; a < 3; ++a) {
-      EXPECT_EQ(std::fmod(p[a], q), 0.0f);  // on the lattice
+      EXPECT_EQ(std::fmod(p[a], q), 0.0f);          // on the lattice
       EXPECT_GE(p[a], s.volume.origin[a] + voxel);  // one free voxel below
-      EXPECT_LE(p[a] + float(room + 1) * voxel, s.volume.origin[a] + s.volume.size);  // room + one above
+      EXPECT_LE(p[a] + float(room + 1) * voxel,
+                s.volume.origin[a] + s.volume.size);  // room + one above
     }
   }
   // The snap moves a vertex by at most half a lattice step.
   for (size_t i = 0; i < s.positions.size(); ++i)
-    for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(s.positions[i][a] - cornell().positions[i][a]), 0.5f * q);
+    for (int a = 0; a < 3; ++a)
+      EXPECT_LE(std::abs(s.positions[i][a] - cornell().positions[i][a]), 0.5f * q);
 }
 
 TEST(SceneTransform, WholeVoxelMovesAreExact) {
@@ -116,7 +119,8 @@ TEST(SceneTransform, LightScalingDoublesEverySourceAndNothingElse) {
     EXPECT_EQ(d.materials[i].emission(), 2.0f * s.materials[i].emission());
     EXPECT_EQ(d.materials[i].base_color_factor, s.materials[i].base_color_factor);
   }
-  for (size_t i = 0; i < s.spot_lights.size(); ++i) EXPECT_EQ(d.spot_lights[i].intensity, 2.0f * s.spot_lights[i].intensity);
+  for (size_t i = 0; i < s.spot_lights.size(); ++i)
+    EXPECT_EQ(d.spot_lights[i].intensity, 2.0f * s.spot_lights[i].intensity);
   EXPECT_EQ(d.emitters[0].color_start, 2.0f * e.color_start);
   EXPECT_EQ(d.emitters[0].color_end, 2.0f * e.color_end);
   EXPECT_EQ(d.positions, s.positions);
