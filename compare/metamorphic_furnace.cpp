@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "scene/embedded_scenes.h"
 #include "scene/gltf_loader.h"
+#include "shared/voxel_fixed_point.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {
@@ -119,9 +120,12 @@ RelationResult check_furnace(const MetamorphicContext& c) {
       s.vct.diffuse_weighting == DiffuseWeighting::SeedSum ? double(s.vct.diffuse_cone_count) : 1.0;
   RelationResult r;
   r.name = "furnace";
-  // Level 0 stores Le (or Le x a coverage mean); every level rounds RGB and opacity once more
-  // (Le x one opacity rounding), and compositing may double what came before.
-  std::vector<double> level_bounds = {storage_rounding(s.vct, le)};
+  // Level 0 stores the mean of equal values Le: one fixed-point quantum (round(Le 2^-14)) and one
+  // storage rounding; every level rounds RGB and opacity once more (Le x one opacity rounding),
+  // and compositing may double what came before.
+  const double quantum =
+      s.vct.reduction == Reduction::FixedPoint ? double(sh::FIXED_POINT_INV_SCALE) : 0.0;
+  std::vector<double> level_bounds = {quantum + storage_rounding(s.vct, le)};
   for (int n = s.vct.grid / 2; n >= 1; n /= 2)
     level_bounds.push_back(level_bounds.back() * (s.vct.anisotropic ? 2.0 : 1.0) +
                            storage_rounding(s.vct, le) + le * storage_rounding(s.vct, 1.0));
