@@ -87,6 +87,7 @@ void write_outputs(RunDir& run, const cmp::MetamorphicRun& m) {
 int run_metamorphic_command(const std::string& scene_path, const CommonOptions& common,
                             const MetaFlags& flags) {
   const Settings settings = resolve_settings(common, metamorphic_defaults());
+  cmp::check_relation_names(flags.only);
   const Scene scene = load_scene(scene_path, common.scene_load);
   const cmp::FrameRenderer render = make_renderer(flags);  // bad fault names and no GL fail here
   RunDir run(common.out.empty() ? default_out_dir("metamorphic", scene_path) : common.out,

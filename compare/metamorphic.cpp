@@ -89,15 +89,19 @@ Verdict MetamorphicRun::overall() const {
   return !any ? Verdict::Missing : warn ? Verdict::Warn : Verdict::Pass;
 }
 
-MetamorphicRun run_metamorphic(const Scene& scene, const Settings& s, const FrameRenderer& render,
-                               const std::vector<std::string>& only) {
-  for (const std::string& name : only) {
+void check_relation_names(const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
     const auto& rows = metamorphic_rows();
     if (std::none_of(rows.begin(), rows.end(),
                      [&](const MetamorphicRow& r) { return name == r.name; }))
       throw InputError("--only",
                        "unknown relation '" + name + "' (relations: " + metamorphic_names() + ")");
   }
+}
+
+MetamorphicRun run_metamorphic(const Scene& scene, const Settings& s, const FrameRenderer& render,
+                               const std::vector<std::string>& only) {
+  check_relation_names(only);
   auto wanted = [&](const MetamorphicRow& r) {
     return only.empty() || std::find(only.begin(), only.end(), r.name) != only.end();
   };

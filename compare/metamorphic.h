@@ -76,6 +76,9 @@ MetamorphicRun run_metamorphic(const Scene& scene, const Settings& s, const Fram
 /// Comma-separated relation names (messages, --help).
 std::string metamorphic_names();
 
+/// Throws InputError("--only", ...) for a name that is not a relation.
+void check_relation_names(const std::vector<std::string>& names);
+
 nlohmann::json to_json(const RelationResult& r);
 
 // The relations (one file each: metamorphic_geometry.cpp, metamorphic_linearity.cpp,
