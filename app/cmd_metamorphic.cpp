@@ -49,6 +49,8 @@ Settings metamorphic_defaults() {
 
 // The backend under test; a GL context is made once and kept for every frame.
 cmp::FrameRenderer make_renderer(const MetaFlags& f) {
+  if (f.backend == "ref" && !f.gl.fault.empty())
+    throw InputError("--gl-fault", "needs --backend gl (the CPU reference has no faults)");
   if (f.backend == "ref")
     return [](const Scene& scene, const Settings& s) { return render_ref_frame(scene, s); };
 #ifdef VCT_HAVE_GL

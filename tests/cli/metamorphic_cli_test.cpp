@@ -42,6 +42,8 @@ TEST(MetamorphicCli, BadInputIsRefusedBeforeAnyOutput) {
   EXPECT_EQ(
       run_vct("metamorphic --backend gl --gl-fault no_such_fault --out " + out.string() + kSmall),
       2);
+  EXPECT_EQ(
+      run_vct("metamorphic --backend ref --gl-fault wrong_mip --out " + out.string() + kSmall), 2);
   EXPECT_FALSE(fs::exists(out));
 }
 
