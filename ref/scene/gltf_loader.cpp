@@ -14,6 +14,7 @@
 
 #include "core/memory_budget.h"
 #include "scene/embedded_scenes.h"
+#include "scene/texture_mips.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_internal.h"
@@ -166,6 +167,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
   scene.stats.warnings = std::move(warnings);
   gltf::convert_textures(ctx, scene);
   gltf::convert_materials(ctx, scene);
+  build_texture_mips(scene);  // once, for the encodings the materials read
   gltf::convert_nodes(ctx, scene);
   if (scene.triangles.empty()) gltf::fail(ctx, "the scene contains no triangles to render");
   if (scene.materials.empty()) {
