@@ -138,7 +138,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   v.bound = bound_text(m);
   const int slack_ch = texture_slack ? texture_slack_channel(stage, *texture_slack) : -1;
   const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
-  if (use_slack) v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift)";
+  if (use_slack)
+    v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift and any admissible "
+               "texture LOD)";
   const int ch = std::min(ref.channels, test.channels);
   const bool strict_ties = m.id != ToleranceModel::Shading;
   double mean_abs = 0;

@@ -28,7 +28,7 @@ GBuffer make_gbuffer(int w, int h) {
   g.coverage = Image(w, h, 1);
   g.coverage.channel_names = {"Y"};
   g.texture_slack = Image(w, h, kSlackChannels);
-  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission"};
+  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission", "direct"};
   return g;
 }
 }  // namespace
@@ -61,7 +61,7 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       g.depth.at(x, row, 0) = vb.depth[i];
       g.coverage.at(x, row, 0) = 1.0f;
       const vec4 slack = texture_slack(scene, wb, x, row, tri, vb.bary[i], m, lods);
-      for (int c = 0; c < kSlackChannels; ++c) g.texture_slack.at(x, row, c) = slack[c];
+      for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];  // kSlackDirect: later
     }
   });
   return g;

@@ -21,8 +21,17 @@ namespace vct {
 constexpr double kTextureSlackShift = 1.0 / 256.0;
 
 /// Channels of GBuffer::texture_slack, one per textured attribute: the largest |change| over the
-/// attribute's channels.
-enum TextureSlackChannel : int { kSlackNormal = 0, kSlackAlbedo, kSlackMaterial, kSlackEmission, kSlackChannels };
+/// attribute's channels; kSlackDirect: the direct light shaded from those attributes
+/// (stages/direct_slack.h), filled once the direct light is.
+enum TextureSlackChannel : int {
+  kSlackNormal = 0,
+  kSlackAlbedo,
+  kSlackMaterial,
+  kSlackEmission,
+  kSlackDirect,
+  kSlackChannels
+};
+
 
 /// Window-space ray caster for one view: perspective-correct barycentrics of a triangle's plane
 /// at any window point (extrapolated beyond the triangle's edges, as GL interpolates).
@@ -37,6 +46,18 @@ class WindowBarycentrics {
   glm::dmat4 inv_view_proj_;
   int width_, height_;
 };
+
+/// The sample points the slack considers: the pixel centre and the four (+-s, +-s) shifts.
+constexpr int kSlackShifts = 5;
+
+/// True when any of the material's slots has a texture.
+bool is_textured(const Material& m);
+
+/// The surface points of `triangle` at image pixel (x, row)'s centre (raster barycentrics `bary`,
+/// so the first is exactly the G-buffer's) and at its (+-s, +-s) shifts, s = kTextureSlackShift;
+/// returns how many (shifts whose view ray misses the plane are left out).
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
+                           const vec3& bary, SurfacePoint out[kSlackShifts]);
 
 /// The lambdas whose lookups span every value an admissible lambda in `range` can give: lo, hi,
 /// each integer strictly between, and (when magnification and minification both lie in the
