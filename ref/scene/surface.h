@@ -42,6 +42,9 @@ enum TextureSlot : int { kSlotBaseColor = 0, kSlotMetallicRoughness, kSlotNormal
 /// level 0 with the magnification filter: a lookup without derivatives.
 struct SlotLods {
   double lambda[kTextureSlots] = {0.0, 0.0, 0.0, 0.0};
+  // sRGB slots (base colour, emissive) decoded after filtering instead of per texel, as GL 4.5
+  // §8.24 allows (scene/texture_sample.h); the reference decodes per texel, the slack tries both.
+  bool srgb_after_filter = false;
 };
 
 /// A surface sample's lambdas: the reference's own (exact derivatives) and, per slot, every lambda

@@ -64,16 +64,21 @@ vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int heig
          av * ((1.0f - au) * fetch(texels, width, x0, y1, srgb) + au * fetch(texels, width, x1, y1, srgb));
 }
 
-vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda) {
+vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda, bool decode_after_filter) {
   if (tex.width <= 0 || tex.height <= 0) return vec4(1.0f);
   const LevelBlend b = select_levels(tex, lambda, available_levels(tex, srgb) - 1);
+  // The chain is the one built for `srgb` reads either way; only where the decode happens moves.
+  const bool decode_texels = srgb && !decode_after_filter;
   int w = 0, h = 0;
   const uint8_t* t1 = mip_level_texels(tex, srgb, b.level1, w, h);
-  const vec4 v1 = sample_level(tex, t1, w, h, uv, b.linear, srgb);
-  if (b.weight2 == 0.0f || b.level2 == b.level1) return v1;
-  const uint8_t* t2 = mip_level_texels(tex, srgb, b.level2, w, h);
-  const vec4 v2 = sample_level(tex, t2, w, h, uv, b.linear, srgb);
-  return (1.0f - b.weight2) * v1 + b.weight2 * v2;
+  vec4 v = sample_level(tex, t1, w, h, uv, b.linear, decode_texels);
+  if (b.weight2 != 0.0f && b.level2 != b.level1) {
+    const uint8_t* t2 = mip_level_texels(tex, srgb, b.level2, w, h);
+    const vec4 v2 = sample_level(tex, t2, w, h, uv, b.linear, decode_texels);
+    v = (1.0f - b.weight2) * v + b.weight2 * v2;
+  }
+  if (srgb && decode_after_filter) v = vec4(srgb_to_linear(v.r), srgb_to_linear(v.g), srgb_to_linear(v.b), v.a);
+  return v;
 }
 
 }  // namespace vct

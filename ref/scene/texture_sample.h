@@ -20,7 +20,11 @@ vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int heig
 /// The lookup at scale factor lambda = log2(rho): magnification (lambda <= 0) with the mag
 /// filter on level 0, else the min filter over the levels built for `srgb` reads
 /// (Texture::mips; absent levels clamp the chain as a texture allocated with fewer levels).
-vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda);
+/// `decode_after_filter` (sRGB only): the whole filter (texels and level blend) on the encoded
+/// values, RGB decoded once at the end, which GL 4.5 §8.24 allows ("implementations are allowed
+/// to perform this conversion after filtering", llvmpipe does); by convexity of the decode it is
+/// the lower end of what any staging of the conversion gives, decode-before the upper end.
+vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda, bool decode_after_filter = false);
 
 /// Level 0 with the magnification filter (lambda = 0).
 inline vec4 sample_texture(const Texture& tex, vec2 uv, bool srgb) { return sample_texture_lod(tex, uv, srgb, 0.0); }

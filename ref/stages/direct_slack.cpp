@@ -39,10 +39,11 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       for (int p = 0; p < n; ++p)
         for (int i0 = 0; i0 < count[0]; ++i0)
           for (int i1 = 0; i1 < count[1]; ++i1)
-            for (int i2 = 0; i2 < count[2]; ++i2) {
+            for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
+              l.srgb_after_filter = i2 >= count[2];
               l.lambda[kSlots[0]] = cand[0][i0];
               l.lambda[kSlots[1]] = cand[1][i1];
-              l.lambda[kSlots[2]] = cand[2][i2];
+              l.lambda[kSlots[2]] = cand[2][i2 % count[2]];
               const SurfaceMaterial m = evaluate_material(scene, points[p], l);
               const vec3 nrm = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
               const vec3 v = glm::normalize(eye - points[p].position);

@@ -61,10 +61,11 @@ std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vo
     SlotLods s = l.exact;
     for (int i0 = 0; i0 < count[0]; ++i0)
       for (int i1 = 0; i1 < count[1]; ++i1)
-        for (int i2 = 0; i2 < count[2]; ++i2) {
+        for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
+          s.srgb_after_filter = i2 >= count[2];
           s.lambda[kSlots[0]] = cand[0][i0];
           s.lambda[kSlots[1]] = cand[1][i1];
-          s.lambda[kSlots[2]] = cand[2][i2];
+          s.lambda[kSlots[2]] = cand[2][i2 % count[2]];
           const vec3 d = glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) -
                                   values[size_t(i)]);
           slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));

@@ -96,13 +96,15 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
     rounds = std::max(rounds, count[slot]);
   }
   vec4 slack(0.0f);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < rounds; ++j) {
-      SlotLods l;
-      for (int slot = 0; slot < kTextureSlots; ++slot) l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
-      slack = glm::max(slack, difference(evaluate_material(scene, points[i], l), centre));
-    }
-  }
+  // Each at both ends of where GL may decode sRGB (before or after filtering, GL 4.5 §8.24).
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < rounds; ++j)
+      for (const bool after : {false, true}) {
+        SlotLods l;
+        for (int slot = 0; slot < kTextureSlots; ++slot) l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
+        l.srgb_after_filter = after;
+        slack = glm::max(slack, difference(evaluate_material(scene, points[i], l), centre));
+      }
   return slack;
 }
 
