@@ -21,6 +21,7 @@ float pixel_spread_angle(const Camera& camera, int height);
 /// W = 2 t tan(beta / 2) the cone's width at distance t, n the triangle's geometric normal, d the
 /// unit ray direction, T_a the triangle's area in the slot's level-0 texels (through the
 /// KHR_texture_transform scale) and P_a its world area (RTG eqs. 20.4-20.6).
-SlotLods ray_cone_lods(const Scene& scene, uint32_t triangle, float t, const vec3& dir, float spread_angle);
+SlotLods ray_cone_lods(const Scene& scene, uint32_t triangle, float t, const vec3& dir,
+                       float spread_angle);
 
 }  // namespace vct::pt

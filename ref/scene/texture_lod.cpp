@@ -5,7 +5,8 @@
 
 namespace vct {
 
-TexelDerivatives texel_derivatives(const Texture& texture, const TextureRef& ref, const UvDerivatives& d) {
+TexelDerivatives texel_derivatives(const Texture& texture, const TextureRef& ref,
+                                   const UvDerivatives& d) {
   const int set = ref.texcoord == 1 ? 1 : 0;
   glm::dvec2 dx(d.dx[set]), dy(d.dy[set]);
   const TextureTransform& t = ref.transform;
@@ -29,9 +30,15 @@ double exact_lod(const TexelDerivatives& d) {
 }
 
 namespace {
-double lower(const glm::dvec2& d) { return std::max(std::abs(d.x), std::abs(d.y)); }
-double upper(const glm::dvec2& d) { return std::abs(d.x) + std::abs(d.y); }
-double log2_or_floor(double rho) { return rho > 0.0 ? std::log2(rho) : -1000.0; }
+double lower(const glm::dvec2& d) {
+  return std::max(std::abs(d.x), std::abs(d.y));
+}
+double upper(const glm::dvec2& d) {
+  return std::abs(d.x) + std::abs(d.y);
+}
+double log2_or_floor(double rho) {
+  return rho > 0.0 ? std::log2(rho) : -1000.0;
+}
 }  // namespace
 
 void RhoBounds::add_x(const glm::dvec2& d) {
@@ -45,7 +52,8 @@ void RhoBounds::add_y(const glm::dvec2& d) {
 }
 
 LodRange RhoBounds::range() const {
-  return {log2_or_floor(std::max(x_lo, y_lo)) - kLodPrecision, log2_or_floor(std::max(x_hi, y_hi)) + kLodPrecision};
+  return {log2_or_floor(std::max(x_lo, y_lo)) - kLodPrecision,
+          log2_or_floor(std::max(x_hi, y_hi)) + kLodPrecision};
 }
 
 LevelBlend select_levels(const Texture& texture, double lambda, int q) {

@@ -23,7 +23,8 @@ struct UvDerivatives {
 struct TexelDerivatives {
   glm::dvec2 dx{0.0}, dy{0.0};
 };
-TexelDerivatives texel_derivatives(const Texture& texture, const TextureRef& ref, const UvDerivatives& d);
+TexelDerivatives texel_derivatives(const Texture& texture, const TextureRef& ref,
+                                   const UvDerivatives& d);
 
 /// lambda_base = log2(rho) with GL's exact rho = max(|d/dx|, |d/dy|) (§8.14.1 eq. 8.8); -inf
 /// for zero derivatives (magnified).

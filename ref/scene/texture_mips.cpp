@@ -18,8 +18,9 @@ namespace {
 
 uint8_t srgb_mean(const uint8_t v[4]) {
   // Summed in a fixed order: the same bits on every machine and thread count.
-  const float linear =
-      ((srgb8_to_linear(v[0]) + srgb8_to_linear(v[1])) + (srgb8_to_linear(v[2]) + srgb8_to_linear(v[3]))) * 0.25f;
+  const float linear = ((srgb8_to_linear(v[0]) + srgb8_to_linear(v[1])) +
+                        (srgb8_to_linear(v[2]) + srgb8_to_linear(v[3]))) *
+                       0.25f;
   const float encoded = std::clamp(linear_to_srgb(linear), 0.0f, 1.0f) * 255.0f;
   return uint8_t(std::lround(encoded));
 }
@@ -81,7 +82,8 @@ void build_texture_mips(Scene& scene) {
   }
 }
 
-const uint8_t* mip_level_texels(const Texture& texture, bool srgb, int level, int& width, int& height) {
+const uint8_t* mip_level_texels(const Texture& texture, bool srgb, int level, int& width,
+                                int& height) {
   if (level == 0) {
     width = texture.width;
     height = texture.height;

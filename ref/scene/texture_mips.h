@@ -29,7 +29,8 @@ std::vector<TextureLevel> build_mip_chain(const Texture& texture, bool srgb);
 void build_texture_mips(Scene& scene);
 
 /// Level `level` of `texture` as read with encoding `srgb` (0 = level 0); nullptr if absent.
-const uint8_t* mip_level_texels(const Texture& texture, bool srgb, int level, int& width, int& height);
+const uint8_t* mip_level_texels(const Texture& texture, bool srgb, int level, int& width,
+                                int& height);
 
 /// Levels available for `srgb` reads: 1 + the chain built for that encoding.
 inline int available_levels(const Texture& texture, bool srgb) {

@@ -15,7 +15,8 @@ namespace vct {
 float srgb8_to_linear(uint8_t v);
 
 /// One level: NEAREST (`linear` false) or bilinear (LINEAR) at uv in [0,1] units of that level.
-vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int height, vec2 uv, bool linear, bool srgb);
+vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int height, vec2 uv,
+                  bool linear, bool srgb);
 
 /// The lookup at scale factor lambda = log2(rho): magnification (lambda <= 0) with the mag
 /// filter on level 0, else the min filter over the levels built for `srgb` reads
@@ -24,9 +25,12 @@ vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int heig
 /// values, RGB decoded once at the end, which GL 4.5 §8.24 allows ("implementations are allowed
 /// to perform this conversion after filtering", llvmpipe does); by convexity of the decode it is
 /// the lower end of what any staging of the conversion gives, decode-before the upper end.
-vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda, bool decode_after_filter = false);
+vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda,
+                        bool decode_after_filter = false);
 
 /// Level 0 with the magnification filter (lambda = 0).
-inline vec4 sample_texture(const Texture& tex, vec2 uv, bool srgb) { return sample_texture_lod(tex, uv, srgb, 0.0); }
+inline vec4 sample_texture(const Texture& tex, vec2 uv, bool srgb) {
+  return sample_texture_lod(tex, uv, srgb, 0.0);
+}
 
 }  // namespace vct

@@ -18,7 +18,7 @@ namespace vct {
 /// largest |direct(candidate) - direct| over RGB, with `direct` the reference's image.direct.
 /// Every combination of the base colour, metallic-roughness and normal slots' LOD candidates is
 /// shaded at each shifted sample point.
-void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps, const VctSettings& settings,
-                              const Image& direct, GBuffer& g);
+void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps,
+                              const VctSettings& settings, const Image& direct, GBuffer& g);
 
 }  // namespace vct

@@ -4,8 +4,8 @@
 
 namespace vct {
 
-ScreenBarycentrics::ScreenBarycentrics(const Scene& scene, uint32_t triangle, const mat4& view_proj, int width,
-                                       int height)
+ScreenBarycentrics::ScreenBarycentrics(const Scene& scene, uint32_t triangle, const mat4& view_proj,
+                                       int width, int height)
     : width_(double(width)), height_(double(height)) {
   const uvec3 t = scene.triangles[triangle];
   glm::dmat3 m;
@@ -32,7 +32,8 @@ void ScreenBarycentrics::derivatives(double wx, double wy, glm::dvec3& dx, glm::
   dy = (hy * s - h * (hy.x + hy.y + hy.z)) / (s * s);
 }
 
-UvDerivatives uv_derivatives(const Scene& scene, uint32_t triangle, const glm::dvec3& dx, const glm::dvec3& dy) {
+UvDerivatives uv_derivatives(const Scene& scene, uint32_t triangle, const glm::dvec3& dx,
+                             const glm::dvec3& dy) {
   UvDerivatives d;
   const uvec3 t = scene.triangles[triangle];
   const std::vector<vec2>* sets[2] = {&scene.uv0, &scene.uv1};
@@ -50,7 +51,8 @@ UvDerivatives uv_derivatives(const Scene& scene, uint32_t triangle, const glm::d
   return d;
 }
 
-SurfaceLods pixel_lods(const Scene& scene, uint32_t triangle, const ScreenBarycentrics& sb, int px, int py) {
+SurfaceLods pixel_lods(const Scene& scene, uint32_t triangle, const ScreenBarycentrics& sb, int px,
+                       int py) {
   SurfaceLods out;
   const Material& m = scene.materials[scene.triangle_material[triangle]];
   if (!sb.valid()) return out;
@@ -63,7 +65,8 @@ SurfaceLods pixel_lods(const Scene& scene, uint32_t triangle, const ScreenBaryce
   for (int r = 0; r < 2; ++r)
     for (int c = 0; c < 2; ++c) b[r][c] = sb.at(double(qx + c) + 0.5, double(qy + r) + 0.5);
   UvDerivatives quad[2];  // quad[k]: row k's d/dx, column k's d/dy
-  for (int k = 0; k < 2; ++k) quad[k] = uv_derivatives(scene, triangle, b[k][1] - b[k][0], b[1][k] - b[0][k]);
+  for (int k = 0; k < 2; ++k)
+    quad[k] = uv_derivatives(scene, triangle, b[k][1] - b[k][0], b[1][k] - b[0][k]);
   for (int slot = 0; slot < kTextureSlots; ++slot) {
     const TextureRef* ref = slot_texture(m, slot);
     if (!ref || size_t(ref->texture) >= scene.textures.size()) continue;

@@ -19,7 +19,8 @@ namespace vct {
 /// (x, y, w) (homogeneous rasterization). Double precision.
 class ScreenBarycentrics {
  public:
-  ScreenBarycentrics(const Scene& scene, uint32_t triangle, const mat4& view_proj, int width, int height);
+  ScreenBarycentrics(const Scene& scene, uint32_t triangle, const mat4& view_proj, int width,
+                     int height);
   bool valid() const { return valid_; }
   glm::dvec3 at(double wx, double wy) const;
   /// Exact d b / d wx and d b / d wy at (wx, wy).
@@ -32,12 +33,14 @@ class ScreenBarycentrics {
 };
 
 /// The UV derivatives of `triangle` for barycentric derivatives (dx, dy).
-UvDerivatives uv_derivatives(const Scene& scene, uint32_t triangle, const glm::dvec3& dx, const glm::dvec3& dy);
+UvDerivatives uv_derivatives(const Scene& scene, uint32_t triangle, const glm::dvec3& dx,
+                             const glm::dvec3& dy);
 
 /// For window pixel (px, py) (y up) covered by `triangle`: exact derivatives at its centre, and
 /// the envelope over the exact ones and the quad differences of both rows (d/dx) and both
 /// columns (d/dy) of its 2x2 quad (pixels (px & ~1, py & ~1) .. +1), each widened by the rho
 /// approximation and the LOD precision (scene/texture_lod.h RhoBounds).
-SurfaceLods pixel_lods(const Scene& scene, uint32_t triangle, const ScreenBarycentrics& sb, int px, int py);
+SurfaceLods pixel_lods(const Scene& scene, uint32_t triangle, const ScreenBarycentrics& sb, int px,
+                       int py);
 
 }  // namespace vct

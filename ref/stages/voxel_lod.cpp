@@ -21,7 +21,7 @@ SurfaceLods voxel_lods(const Scene& scene, uint32_t triangle, int n) {
   const double a = e1[ax], b = e2[ax], c = e1[ay], d = e2[ay];
   const double det = a * d - b * c;
   if (!(std::abs(det) > 0.0)) return out;
-  const double voxel = double(scene.volume.size) / double(n);  // world units per pixel
+  const double voxel = double(scene.volume.size) / double(n);   // world units per pixel
   const glm::dvec3 bx(0.0, d / det * voxel, -c / det * voxel);  // d(b0, b1, b2) / d window x
   const glm::dvec3 by(0.0, -b / det * voxel, a / det * voxel);  // d(b0, b1, b2) / d window y
   UvDerivatives uv;
@@ -29,7 +29,8 @@ SurfaceLods voxel_lods(const Scene& scene, uint32_t triangle, int n) {
   for (int set = 0; set < 2; ++set) {
     const std::vector<vec2>& u = *sets[set];
     if (u.empty()) continue;
-    const glm::dvec2 du1 = glm::dvec2(u[t.y]) - glm::dvec2(u[t.x]), du2 = glm::dvec2(u[t.z]) - glm::dvec2(u[t.x]);
+    const glm::dvec2 du1 = glm::dvec2(u[t.y]) - glm::dvec2(u[t.x]),
+                     du2 = glm::dvec2(u[t.z]) - glm::dvec2(u[t.x]);
     uv.dx[set] = vec2(bx.y * du1 + bx.z * du2);
     uv.dy[set] = vec2(by.y * du1 + by.z * du2);
   }
@@ -48,7 +49,8 @@ SurfaceLods voxel_lods(const Scene& scene, uint32_t triangle, int n) {
 
 std::vector<SurfaceLods> voxel_lods_per_triangle(const Scene& scene, int n) {
   std::vector<SurfaceLods> out(scene.triangles.size());
-  parallel_for(int64_t(out.size()), [&](int64_t i) { out[size_t(i)] = voxel_lods(scene, uint32_t(i), n); });
+  parallel_for(int64_t(out.size()),
+               [&](int64_t i) { out[size_t(i)] = voxel_lods(scene, uint32_t(i), n); });
   return out;
 }
 

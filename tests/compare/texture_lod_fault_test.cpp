@@ -2,7 +2,8 @@
 // caught although textured stages now carry the admissible-LOD slack (docs/compare.md, "Texture
 // LOD"): simulated by rendering the reference from the same scene with every texture's min filter
 // set to LINEAR, and judged against the correct reference, on issue 13's tiled floor. The GL
-// build's own version of this bug is the `texture_level_zero` fault (tests/gl/gl_textures_test.cpp).
+// build's own version of this bug is the `texture_level_zero` fault
+// (tests/gl/gl_textures_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -34,8 +35,8 @@ TEST(TextureLodFault, LevelZeroLookupsFailTheGBufferAndTheVoxels) {
   const Report r = compare_stage_sets(rs, stage_set_from_frame(bad, s.vct));
   for (const char* st : {"gbuffer.normal", "gbuffer.albedo", "voxel.radiance"}) {
     const StageVerdict& v = test::find(r, st);
-    std::printf("  level-0 lookups: %s %s, %zu of %zu beyond the bound\n", st, to_string(v.verdict).c_str(),
-                v.out_of_bound, v.checked);
+    std::printf("  level-0 lookups: %s %s, %zu of %zu beyond the bound\n", st,
+                to_string(v.verdict).c_str(), v.out_of_bound, v.checked);
     EXPECT_EQ(v.verdict, Verdict::Fail) << st << ": " << v.note;
   }
   EXPECT_EQ(r.first_failing(), "gbuffer.normal");

@@ -44,7 +44,8 @@ TEST(RayCone, FacingPlaneLambdaIsTheConeWidthInTexels) {
   EXPECT_EQ(l.lambda[kSlotNormal], 0.0);  // no normal map: level 0
   // Seen at 60 degrees from the normal the footprint stretches by 1 / cos = 2: one level more.
   const vec3 oblique(std::sin(1.0471976f), 0.0f, -std::cos(1.0471976f));
-  EXPECT_NEAR(ray_cone_lods(s, 0, 3.0f, oblique, beta).lambda[kSlotBaseColor], l.lambda[kSlotBaseColor] + 1.0, 1e-5);
+  EXPECT_NEAR(ray_cone_lods(s, 0, 3.0f, oblique, beta).lambda[kSlotBaseColor],
+              l.lambda[kSlotBaseColor] + 1.0, 1e-5);
 }
 
 TEST(RayCone, AgreesWithTheGBufferLambdaOnAFacingPlane) {

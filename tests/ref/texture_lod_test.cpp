@@ -28,7 +28,8 @@ Texture with_filters(MinFilter min, Filter mag = Filter::Linear) {
 TEST(TextureLod, LevelSelectionPerMinFilter) {
   const int q = 4;  // a 16 x 16 chain: levels 0..4
   // Magnified (lambda <= 0): level 0 with the mag filter, whatever the min filter.
-  LevelBlend b = select_levels(with_filters(MinFilter::LinearMipmapLinear, Filter::Nearest), -0.5, q);
+  LevelBlend b =
+      select_levels(with_filters(MinFilter::LinearMipmapLinear, Filter::Nearest), -0.5, q);
   EXPECT_EQ(b.level1, 0);
   EXPECT_FALSE(b.linear);
   EXPECT_EQ(select_levels(with_filters(MinFilter::NearestMipmapNearest), 0.0, q).linear, true);
@@ -105,7 +106,8 @@ Scene floor_scene() {
   Scene s;
   const uint32_t m = test::add_material(s, vec3(1.0f));
   test::add_quad(s, {-40, -1, -60}, {40, -1, -60}, {40, -1, -0.6f}, {-40, -1, -0.6f}, {0, 1, 0}, m);
-  for (size_t i = 0; i < s.positions.size(); ++i) s.uv0[i] = vec2(s.positions[i].x / 4.0f, -s.positions[i].z / 4.0f);
+  for (size_t i = 0; i < s.positions.size(); ++i)
+    s.uv0[i] = vec2(s.positions[i].x / 4.0f, -s.positions[i].z / 4.0f);
   Texture t;
   t.width = t.height = 256;
   t.rgba8.assign(256 * 256 * 4, 128);
@@ -130,7 +132,8 @@ TEST(TextureLod, FloorLambdaIsExactInTheCamera) {
     for (int px : {3, 32, 60}) {
       const double nx = 2.0 * (px + 0.5) / w - 1.0, ny = 2.0 * (py + 0.5) / w - 1.0;
       const double dist = -1.0 / (ny * t);
-      const glm::dvec2 dx = k * t * dist * glm::dvec2(1.0, 0.0), dy = k / (ny * ny * t) * glm::dvec2(nx * t, 1.0);
+      const glm::dvec2 dx = k * t * dist * glm::dvec2(1.0, 0.0),
+                       dy = k / (ny * ny * t) * glm::dvec2(nx * t, 1.0);
       const double lambda = std::log2(std::max(glm::length(dx), glm::length(dy)));
       // Which triangle of the quad covers the pixel does not matter: both lie on the same plane.
       for (uint32_t tri = 0; tri < 2; ++tri) {
@@ -140,7 +143,8 @@ TEST(TextureLod, FloorLambdaIsExactInTheCamera) {
         // the admissible range holds the exact value with room for the approximations.
         EXPECT_LT(l.range[kSlotBaseColor].lo, lambda - kLodPrecision * 0.99);
         EXPECT_GT(l.range[kSlotBaseColor].hi, lambda + kLodPrecision * 0.99);
-        EXPECT_LT(l.range[kSlotBaseColor].hi - l.range[kSlotBaseColor].lo, 2.0);  // near the horizon: ~1.1
+        EXPECT_LT(l.range[kSlotBaseColor].hi - l.range[kSlotBaseColor].lo,
+                  2.0);  // near the horizon: ~1.1
         ++checked;
       }
     }
@@ -155,7 +159,8 @@ TEST(TextureLod, FacingPlaneHasOnlyTheLodPrecisionAsFreedom) {
   Scene s;
   const uint32_t m = test::add_material(s, vec3(1.0f));
   test::add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}, {0, 0, 1}, m);
-  for (size_t i = 0; i < s.positions.size(); ++i) s.uv0[i] = vec2((s.positions[i].x + 2.0f) / 4.0f, 0.5f);
+  for (size_t i = 0; i < s.positions.size(); ++i)
+    s.uv0[i] = vec2((s.positions[i].x + 2.0f) / 4.0f, 0.5f);
   Texture t;
   t.width = t.height = 256;
   s.textures.push_back(t);
@@ -173,8 +178,9 @@ TEST(TextureLod, FacingPlaneHasOnlyTheLodPrecisionAsFreedom) {
   EXPECT_NEAR(l.range[kSlotBaseColor].hi, lambda + kLodPrecision, 1e-6);
   // The slot's transform scales the texel derivatives: scale 4 in u adds exactly 2 levels.
   s.materials[m].base_color_texture.transform.scale = vec2(4.0f, 1.0f);
-  EXPECT_NEAR(pixel_lods(s, 0, ScreenBarycentrics(s, 0, vp, 16, 16), 5, 9).exact.lambda[kSlotBaseColor], lambda + 2.0,
-              1e-6);
+  EXPECT_NEAR(
+      pixel_lods(s, 0, ScreenBarycentrics(s, 0, vp, 16, 16), 5, 9).exact.lambda[kSlotBaseColor],
+      lambda + 2.0, 1e-6);
 }
 
 TEST(TextureLod, VoxelGridLambdaFromTheDominantAxisProjection) {

@@ -26,7 +26,8 @@ TEST(TextureMips, LevelCountFollowsTheLargerAxis) {
 
 TEST(TextureMips, LinearTwoByTwoIsTheRoundedMean) {
   // Texels (R, G, B, A): R sums to 1 + 2 + 3 + 4 = 10 -> 10/4 = 2.5 rounds half up to 3;
-  // G 0 + 0 + 0 + 1 = 1 -> 0.25 -> 0; B 255 x 4 -> 255; A 0 + 255 + 255 + 255 = 765 -> 191.25 -> 191.
+  // G 0 + 0 + 0 + 1 = 1 -> 0.25 -> 0; B 255 x 4 -> 255; A 0 + 255 + 255 + 255 = 765 -> 191.25 ->
+  // 191.
   const Texture t = texture(2, 2, {1, 0, 255, 0, 2, 0, 255, 255, 3, 0, 255, 255, 4, 1, 255, 255});
   const std::vector<TextureLevel> chain = build_mip_chain(t, false);
   ASSERT_EQ(chain.size(), 1u);
@@ -37,14 +38,16 @@ TEST(TextureMips, LinearTwoByTwoIsTheRoundedMean) {
 
 TEST(TextureMips, SrgbIsAveragedInLinearLight) {
   // Black and white: linear mean 0.5, re-encoded 1.055 * 0.5^(1/2.4) - 0.055 = 0.735357 -> 187.516
-  // -> 188 (a naive 8-bit mean would give 128). Alpha stays linear: (0 + 0 + 255 + 255 + 2) / 4 = 128.
+  // -> 188 (a naive 8-bit mean would give 128). Alpha stays linear: (0 + 0 + 255 + 255 + 2) / 4 =
+  // 128.
   const Texture t = texture(2, 2, {0, 0, 0, 0, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255, 255});
   const std::vector<TextureLevel> chain = build_mip_chain(t, true);
   ASSERT_EQ(chain.size(), 1u);
   EXPECT_EQ(chain[0].rgba8, (std::vector<uint8_t>{188, 188, 188, 128}));
   // The checker greys: light (200, 190, 170) and dark (90, 80, 70) average to
   // (157.58, 148.33, 132.23) -> (158, 148, 132) in linear light, not (145, 135, 120).
-  const Texture c = texture(2, 2, {200, 190, 170, 255, 90, 80, 70, 255, 90, 80, 70, 255, 200, 190, 170, 255});
+  const Texture c =
+      texture(2, 2, {200, 190, 170, 255, 90, 80, 70, 255, 90, 80, 70, 255, 200, 190, 170, 255});
   EXPECT_EQ(build_mip_chain(c, true)[0].rgba8, (std::vector<uint8_t>{158, 148, 132, 255}));
   EXPECT_EQ(build_mip_chain(c, false)[0].rgba8, (std::vector<uint8_t>{145, 135, 120, 255}));
 }
