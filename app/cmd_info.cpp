@@ -47,13 +47,19 @@ const char* wrap_name(Wrap w) {
 // glTF / GL spelling of a min filter, lower case.
 const char* min_filter_name(MinFilter f) {
   switch (f) {
-    case MinFilter::Nearest: return "nearest";
-    case MinFilter::Linear: return "linear";
-    case MinFilter::NearestMipmapNearest: return "nearest_mipmap_nearest";
-    case MinFilter::LinearMipmapNearest: return "linear_mipmap_nearest";
-    case MinFilter::NearestMipmapLinear: return "nearest_mipmap_linear";
+    case MinFilter::Nearest:
+      return "nearest";
+    case MinFilter::Linear:
+      return "linear";
+    case MinFilter::NearestMipmapNearest:
+      return "nearest_mipmap_nearest";
+    case MinFilter::LinearMipmapNearest:
+      return "linear_mipmap_nearest";
+    case MinFilter::NearestMipmapLinear:
+      return "nearest_mipmap_linear";
     case MinFilter::LinearMipmapLinear:
-    default: return "linear_mipmap_linear";
+    default:
+      return "linear_mipmap_linear";
   }
 }
 
@@ -183,7 +189,8 @@ void print_text(const Scene& s) {
   for (size_t i = 0; i < s.textures.size(); ++i) {
     const Texture& t = s.textures[i];
     fmt::print("  {} '{}': {}x{} RGBA8, wrap {}/{}, mag {}, min {}\n", i, t.name, t.width, t.height,
-               wrap_name(t.wrap_s), wrap_name(t.wrap_t), t.mag_filter == Filter::Nearest ? "nearest" : "linear",
+               wrap_name(t.wrap_s), wrap_name(t.wrap_t),
+               t.mag_filter == Filter::Nearest ? "nearest" : "linear",
                min_filter_name(t.min_filter));
   }
   const Camera& c = s.camera;

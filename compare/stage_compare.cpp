@@ -139,8 +139,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   const int slack_ch = texture_slack ? texture_slack_channel(stage, *texture_slack) : -1;
   const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
   if (use_slack)
-    v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift and any admissible "
-               "texture LOD)";
+    v.bound +=
+        " + the reference's texture slack (its value's range under a 2^-8 px sample shift and any "
+        "admissible texture LOD)";
   const int ch = std::min(ref.channels, test.channels);
   const bool strict_ties = m.id != ToleranceModel::Shading;
   double mean_abs = 0;
@@ -238,8 +239,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
 }
 
 namespace {
-StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
-                                   const CompareOptions& opt, const std::vector<uint8_t>* tolerated,
+StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test,
+                                   double abs, double rel, const CompareOptions& opt,
+                                   const std::vector<uint8_t>* tolerated,
                                    const std::vector<float>* extra_abs = nullptr);
 }  // namespace
 
@@ -249,8 +251,9 @@ StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, c
 }
 
 namespace {
-StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
-                                   const CompareOptions& opt, const std::vector<uint8_t>* tolerated,
+StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test,
+                                   double abs, double rel, const CompareOptions& opt,
+                                   const std::vector<uint8_t>* tolerated,
                                    const std::vector<float>* extra_abs) {
   StageVerdict v;
   v.stage = stage;
@@ -456,7 +459,8 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   if (m.cas_interval && !interval) v.note = "no cas_lo/cas_hi in the reference: judged with +-1/255 only; ";
   // Textured scenes: each voxel's mean may move by its fragments' mean LOD slack (the reference's
   // voxel.texture_slack, docs/compare.md "Texture LOD").
-  const Volume* lod_slack = rs.volumes.count(st::kVoxelTextureSlack) ? &rs.volumes.at(st::kVoxelTextureSlack) : nullptr;
+  const Volume* lod_slack =
+      rs.volumes.count(st::kVoxelTextureSlack) ? &rs.volumes.at(st::kVoxelTextureSlack) : nullptr;
   if (lod_slack && !same_size(*lod_slack, ref)) lod_slack = nullptr;
   const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
   const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
@@ -480,10 +484,12 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     for (int c = 0; c < ch; ++c) {
       const size_t k = i * size_t(ref.channels) + size_t(c);
       const double r = ref.data[k], t = test.data[i * size_t(test.channels) + size_t(c)];
-      const double slack = lod_slack && c < 3 ? double(lod_slack->data[i * size_t(lod_slack->channels)]) : 0.0;
+      const double slack =
+          lod_slack && c < 3 ? double(lod_slack->data[i * size_t(lod_slack->channels)]) : 0.0;
       double d = std::abs(t - r), bound = m.bound(r, n) + slack;
       if (interval) {
-        const double l = double(lo->data[k]) - m.abs - slack, h = double(hi->data[k]) + m.abs + slack;
+        const double l = double(lo->data[k]) - m.abs - slack,
+                     h = double(hi->data[k]) + m.abs + slack;
         d = t < l ? l - t : t > h ? t - h : 0.0;
         bound = m.abs + slack;
       }
@@ -580,8 +586,8 @@ Taint taint_at_level(const Taint& base, int n, const Volume& level_vol, int leve
 // of the 2^L cube of base voxels under it (iso box filter), so it moves by at most their largest
 // slack; anisotropic compositing c_f + (1 - a_f) c_b at most doubles a bound per level (as the
 // aniso-mip-propagated model). Empty when the reference has no slack volume.
-std::vector<float> mip_lod_slack(const StageSet& rs, const Volume& base, const Volume& level_vol, int level,
-                                 bool aniso) {
+std::vector<float> mip_lod_slack(const StageSet& rs, const Volume& base, const Volume& level_vol,
+                                 int level, bool aniso) {
   if (!rs.volumes.count(st::kVoxelTextureSlack)) return {};
   const Volume& s = rs.volumes.at(st::kVoxelTextureSlack);
   if (!same_size(s, base) || s.nx != s.ny || s.ny != s.nz) return {};
@@ -593,8 +599,10 @@ std::vector<float> mip_lod_slack(const StageSet& rs, const Volume& base, const V
       for (int x = 0; x < s.nx; ++x) {
         const int lx = x / f, ly = y / f, lz = z / f;
         if (lx >= level_vol.nx || ly >= level_vol.ny || lz >= level_vol.nz) continue;
-        const size_t li = (size_t(lz) * size_t(level_vol.ny) + size_t(ly)) * size_t(level_vol.nx) + size_t(lx);
-        const float v = s.data[((size_t(z) * size_t(s.ny) + size_t(y)) * size_t(s.nx) + size_t(x)) * size_t(s.channels)];
+        const size_t li =
+            (size_t(lz) * size_t(level_vol.ny) + size_t(ly)) * size_t(level_vol.nx) + size_t(lx);
+        const float v = s.data[((size_t(z) * size_t(s.ny) + size_t(y)) * size_t(s.nx) + size_t(x)) *
+                               size_t(s.channels)];
         out[li] = std::max(out[li], grow * v);
       }
   return out;
@@ -618,8 +626,8 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
                        ? taint_at_level(taint, base_vol.nx, rs.volumes.at(stage), level)
                        : Taint();
   const std::vector<float> slack = mip_lod_slack(rs, base_vol, rs.volumes.at(stage), level, aniso);
-  StageVerdict v = compare_volume_masked(stage, rs.volumes.at(stage), ts.volumes.at(stage), b.abs, b.rel, opt, &lt,
-                                         slack.empty() ? nullptr : &slack);
+  StageVerdict v = compare_volume_masked(stage, rs.volumes.at(stage), ts.volumes.at(stage), b.abs,
+                                         b.rel, opt, &lt, slack.empty() ? nullptr : &slack);
   v.model = std::string(aniso ? "aniso" : "iso") + "-mip-propagated(" + base.name + ")";
   // Opacity is a coverage fraction: outside [0, 1] is wrong whatever the reference says.
   const Volume& t = ts.volumes.at(stage);

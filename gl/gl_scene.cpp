@@ -32,13 +32,19 @@ GLint wrap_mode(Wrap w) {
 
 GLint min_filter_mode(MinFilter f) {
   switch (f) {
-    case MinFilter::Nearest: return GL_NEAREST;
-    case MinFilter::Linear: return GL_LINEAR;
-    case MinFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
-    case MinFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
-    case MinFilter::NearestMipmapLinear: return GL_NEAREST_MIPMAP_LINEAR;
+    case MinFilter::Nearest:
+      return GL_NEAREST;
+    case MinFilter::Linear:
+      return GL_LINEAR;
+    case MinFilter::NearestMipmapNearest:
+      return GL_NEAREST_MIPMAP_NEAREST;
+    case MinFilter::LinearMipmapNearest:
+      return GL_LINEAR_MIPMAP_NEAREST;
+    case MinFilter::NearestMipmapLinear:
+      return GL_NEAREST_MIPMAP_LINEAR;
     case MinFilter::LinearMipmapLinear:
-    default: return GL_LINEAR_MIPMAP_LINEAR;
+    default:
+      return GL_LINEAR_MIPMAP_LINEAR;
   }
 }
 
@@ -127,7 +133,8 @@ GLuint GlScene::texture(int index, bool srgb) {
     glTextureSubImage2D(t, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, texels);
   }
   glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, min_filter_mode(tex.min_filter));
-  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, tex.mag_filter == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER,
+                      tex.mag_filter == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_WRAP_S, wrap_mode(tex.wrap_s));
   glTextureParameteri(t, GL_TEXTURE_WRAP_T, wrap_mode(tex.wrap_t));
   textures_[key] = t;

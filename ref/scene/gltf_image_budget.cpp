@@ -37,7 +37,8 @@ uint64_t mip_chain_bytes(uint64_t width, uint64_t height) {
 }  // namespace
 
 uint64_t image_decode_bytes(uint64_t width, uint64_t height, int bits) {
-  return 2 * decoded_bytes(width, height, bits) + width * height * 4 + mip_chain_bytes(width, height);
+  return 2 * decoded_bytes(width, height, bits) + width * height * 4 +
+         mip_chain_bytes(width, height);
 }
 
 uint64_t image_kept_bytes(uint64_t width, uint64_t height, int bits) {

@@ -14,11 +14,11 @@
 
 #include "core/memory_budget.h"
 #include "scene/embedded_scenes.h"
-#include "scene/texture_mips.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_internal.h"
 #include "scene/json_nesting.h"
+#include "scene/texture_mips.h"
 
 namespace vct {
 namespace gltf {

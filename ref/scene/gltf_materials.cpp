@@ -63,13 +63,19 @@ Wrap wrap_of(int gl) {
 // LINEAR_MIPMAP_LINEAR, what engines use for material textures (docs/scenes.md, "Textures").
 MinFilter min_filter_of(int gl) {
   switch (gl) {
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: return MinFilter::Nearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: return MinFilter::Linear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return MinFilter::NearestMipmapNearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return MinFilter::LinearMipmapNearest;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return MinFilter::NearestMipmapLinear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      return MinFilter::Nearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      return MinFilter::Linear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      return MinFilter::NearestMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return MinFilter::LinearMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      return MinFilter::NearestMipmapLinear;
     case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
-    default: return MinFilter::LinearMipmapLinear;
+    default:
+      return MinFilter::LinearMipmapLinear;
   }
 }
 

@@ -28,8 +28,8 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
 
 namespace {
 
-vec4 sample_ref(const Scene& scene, const TextureRef& ref, const SurfacePoint& p, bool srgb, double lambda,
-                bool srgb_after_filter) {
+vec4 sample_ref(const Scene& scene, const TextureRef& ref, const SurfacePoint& p, bool srgb,
+                double lambda, bool srgb_after_filter) {
   const Texture& tex = scene.textures[size_t(ref.texture)];
   vec2 uv = ref.texcoord == 1 ? p.uv1 : p.uv0;
   if (!ref.transform.is_identity()) uv = ref.transform.apply(uv);
@@ -39,8 +39,8 @@ vec4 sample_ref(const Scene& scene, const TextureRef& ref, const SurfacePoint& p
 }  // namespace
 
 const TextureRef* slot_texture(const Material& m, int slot) {
-  const TextureRef* refs[kTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
-                                           &m.emissive_texture};
+  const TextureRef* refs[kTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture,
+                                           &m.normal_texture, &m.emissive_texture};
   return refs[slot]->present() ? refs[slot] : nullptr;
 }
 
@@ -62,23 +62,29 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   const Material& m = scene.materials[scene.triangle_material[p.triangle]];
   SurfaceMaterial s;
   vec4 base = m.base_color_factor;
-  if (m.base_color_texture.present()) base *= sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor], lods.srgb_after_filter);
+  if (m.base_color_texture.present())
+    base *= sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor],
+                       lods.srgb_after_filter);
   s.albedo = vec3(base);
   s.opacity = base.a;
   s.metallic = m.metallic_factor;
   s.roughness = m.roughness_factor;
   if (m.metallic_roughness_texture.present()) {
-    const vec4 mr = sample_ref(scene, m.metallic_roughness_texture, p, false, lods.lambda[kSlotMetallicRoughness], lods.srgb_after_filter);
+    const vec4 mr = sample_ref(scene, m.metallic_roughness_texture, p, false,
+                               lods.lambda[kSlotMetallicRoughness], lods.srgb_after_filter);
     s.roughness *= mr.g;  // glTF: G = roughness, B = metallic
     s.metallic *= mr.b;
   }
   s.specular_factor = m.specular_factor;
   s.specular_color = m.specular_color_factor;
   s.emission = m.emission();
-  if (m.emissive_texture.present()) s.emission *= vec3(sample_ref(scene, m.emissive_texture, p, true, lods.lambda[kSlotEmissive], lods.srgb_after_filter));
+  if (m.emissive_texture.present())
+    s.emission *= vec3(sample_ref(scene, m.emissive_texture, p, true, lods.lambda[kSlotEmissive],
+                                  lods.srgb_after_filter));
   s.shading_normal = p.normal;
   if (m.normal_texture.present()) {
-    const vec4 texel = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal], lods.srgb_after_filter);
+    const vec4 texel = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal],
+                                  lods.srgb_after_filter);
     vec3 tn(texel.x * 2.0f - 1.0f, texel.y * 2.0f - 1.0f, texel.z * 2.0f - 1.0f);
     if (m.normal_two_channel) tn.z = std::sqrt(std::max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
     s.shading_normal = apply_normal_map(p.normal, p.tangent, tn, m.normal_scale);

@@ -36,7 +36,13 @@ struct SurfaceMaterial {
 SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1, float b2);
 
 /// A material's texture slots, in the order GL binds them (gl/shaders/surface.glsl).
-enum TextureSlot : int { kSlotBaseColor = 0, kSlotMetallicRoughness, kSlotNormal, kSlotEmissive, kTextureSlots };
+enum TextureSlot : int {
+  kSlotBaseColor = 0,
+  kSlotMetallicRoughness,
+  kSlotNormal,
+  kSlotEmissive,
+  kTextureSlots
+};
 
 /// The lambda (GL 4.5 §8.14, scene/texture_lod.h) each slot's lookup uses. The default, 0, is
 /// level 0 with the magnification filter: a lookup without derivatives.
@@ -56,13 +62,16 @@ struct SurfaceLods {
 
 /// The texture and encoding of `slot` in `m`; nullptr when the slot has no texture.
 const TextureRef* slot_texture(const Material& m, int slot);
-inline bool slot_is_srgb(int slot) { return slot == kSlotBaseColor || slot == kSlotEmissive; }
+inline bool slot_is_srgb(int slot) {
+  return slot == kSlotBaseColor || slot == kSlotEmissive;
+}
 
 /// Evaluates the triangle's material at `p`, each texture looked up at its slot's lambda
 /// (scene/texture_sample.h: GL's texel centres, wrap modes, min/mag filters and mip levels);
 /// sRGB textures (base colour, emissive) are decoded per texel before filtering, as GL does for
 /// SRGB8_ALPHA8.
-SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, const SlotLods& lods = {});
+SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p,
+                                  const SlotLods& lods = {});
 
 /// Applies a tangent-space normal map value (already in [-1,1]^3, z reconstructed if needed).
 vec3 apply_normal_map(const vec3& normal, const vec4& tangent, vec3 tangent_space_normal, float scale);

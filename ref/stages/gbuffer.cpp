@@ -46,7 +46,8 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       const uint32_t tri = uint32_t(vb.triangle[i]);
       const SurfacePoint sp = interpolate_surface(scene, tri, vb.bary[i].y, vb.bary[i].z);
       // Texture LOD from the exact screen-space UV derivatives at the pixel centre (GL 4.5 §8.14).
-      const SurfaceLods lods = pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+      const SurfaceLods lods =
+          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
       const SurfaceMaterial m = evaluate_material(scene, sp, lods.exact);
       const vec3 n = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
       g.position.set_rgb(x, row, sp.position);

@@ -13,8 +13,11 @@ namespace vct {
 namespace {
 
 vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMaterial& m,
-                   const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce) {
-  vec3 l = diffuse_outgoing_radiance(scene, maps, settings, f.position, m.shading_normal, m.albedo) + m.emission;
+                   const std::vector<ShadowMap>& maps, const VctSettings& settings,
+                   const BounceLight* bounce) {
+  vec3 l =
+      diffuse_outgoing_radiance(scene, maps, settings, f.position, m.shading_normal, m.albedo) +
+      m.emission;
   if (bounce && *bounce) l += (*bounce)(f, m);
   return l;
 }
@@ -33,16 +36,19 @@ std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox,
   std::vector<vec3> out(vox.fragments.size());
   parallel_for(int64_t(out.size()), [&](int64_t i) {
     const VoxelFragment& f = vox.fragments[size_t(i)];
-    const SlotLods& l = lods[f.triangle].exact;  // the voxel raster's implicit LOD (stages/voxel_lod.h)
-    const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), l);
+    const SlotLods& l =
+        lods[f.triangle].exact;  // the voxel raster's implicit LOD (stages/voxel_lod.h)
+    const SurfaceMaterial m =
+        evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), l);
     out[size_t(i)] = light_leaving(scene, f, m, maps, settings, bounce);
   });
   return out;
 }
 
-std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
-                                      const std::vector<ShadowMap>& maps, const VctSettings& settings,
-                                      const BounceLight* bounce) {
+std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox,
+                                      const std::vector<vec3>& values,
+                                      const std::vector<ShadowMap>& maps,
+                                      const VctSettings& settings, const BounceLight* bounce) {
   const std::vector<SurfaceLods> lods = voxel_lods_per_triangle(scene, vox.n);
   std::vector<float> out(vox.fragments.size(), 0.0f);
   parallel_for(int64_t(out.size()), [&](int64_t i) {
@@ -66,8 +72,9 @@ std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vo
           s.lambda[kSlots[0]] = cand[0][i0];
           s.lambda[kSlots[1]] = cand[1][i1];
           s.lambda[kSlots[2]] = cand[2][i2 % count[2]];
-          const vec3 d = glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) -
-                                  values[size_t(i)]);
+          const vec3 d = glm::abs(
+              light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) -
+              values[size_t(i)]);
           slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));
         }
     out[size_t(i)] = slack;
@@ -144,7 +151,8 @@ Volume voxel_lod_slack(const Voxelization& vox, const std::vector<float>& slack)
   while (b < vox.fragments.size()) {
     size_t e = b;
     double sum = 0.0;
-    while (e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel) sum += slack[e++];
+    while (e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel)
+      sum += double(slack[e++]);
     const ivec3 c = vox.fragments[b].voxel;
     *v.voxel(c.x, c.y, c.z) = float(sum / double(e - b));
     b = e;
@@ -159,7 +167,8 @@ VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const s
   bool any_texture = false;
   for (const Material& m : scene.materials) any_texture = any_texture || textured(m);
   if (any_texture) {
-    g.texture_slack = voxel_lod_slack(vox, fragment_lod_slack(scene, vox, values, maps, settings, bounce));
+    g.texture_slack =
+        voxel_lod_slack(vox, fragment_lod_slack(scene, vox, values, maps, settings, bounce));
   }
   return g;
 }

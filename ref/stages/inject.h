@@ -26,8 +26,10 @@ std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox,
 /// Per fragment, the largest |change| (over RGB) of its light when every textured slot is looked
 /// up at the other lambdas a correct GL may use in the voxel raster (stages/voxel_lod.h), against
 /// `values` (fragment_radiance). 0 for untextured materials.
-std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
-                                      const std::vector<ShadowMap>& maps, const VctSettings& settings,
+std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox,
+                                      const std::vector<vec3>& values,
+                                      const std::vector<ShadowMap>& maps,
+                                      const VctSettings& settings,
                                       const BounceLight* bounce = nullptr);
 
 /// Per voxel, the mean of its fragments' slacks (a bound on how far the voxel's mean may move).

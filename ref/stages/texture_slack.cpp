@@ -57,10 +57,12 @@ int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]) {
   return n;
 }
 
-bool is_textured(const Material& m) { return textured(m); }
+bool is_textured(const Material& m) {
+  return textured(m);
+}
 
-int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                           const vec3& bary, SurfacePoint out[kSlackShifts]) {
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]) {
   // The shift set is symmetric, so the row direction (image rows grow downward, window y upward)
   // only matters for the centre itself.
   const double cx = double(x) + 0.5, cy = double(wb.height()) - double(row) - 0.5;
@@ -68,12 +70,14 @@ int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int
   if (!wb.at(scene, triangle, cx, cy, bc)) return 0;
   constexpr double s = kTextureSlackShift;
   // The centre and the corners: the change of a (locally) linear value peaks there, as in the
-  // position model's 2^-8 (|d/dx| + |d/dy|); edge midpoints doubled the G-buffer's cost for nothing.
+  // position model's 2^-8 (|d/dx| + |d/dy|); edge midpoints doubled the G-buffer's cost for
+  // nothing.
   static constexpr int kShifts[kSlackShifts][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   int n = 0;
   for (const auto& k : kShifts) {
     glm::dvec2 bs = bc;
-    if ((k[0] != 0 || k[1] != 0) && !wb.at(scene, triangle, cx + s * k[0], cy + s * k[1], bs)) continue;
+    if ((k[0] != 0 || k[1] != 0) && !wb.at(scene, triangle, cx + s * k[0], cy + s * k[1], bs))
+      continue;
     // Moved by the ray-cast difference from the raster's own barycentrics, so the centre value
     // is exactly the G-buffer's.
     const float b1 = bary.y + float(bs.x - bc.x), b2 = bary.z + float(bs.y - bc.y);
@@ -82,8 +86,9 @@ int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int
   return n;
 }
 
-vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                   const vec3& bary, const SurfaceMaterial& centre, const SurfaceLods& lods) {
+vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                   uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
+                   const SurfaceLods& lods) {
   if (!textured(scene.materials[scene.triangle_material[triangle]])) return vec4(0.0f);
   SurfacePoint points[kSlackShifts];
   const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
@@ -101,7 +106,8 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
     for (int j = 0; j < rounds; ++j)
       for (const bool after : {false, true}) {
         SlotLods l;
-        for (int slot = 0; slot < kTextureSlots; ++slot) l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
+        for (int slot = 0; slot < kTextureSlots; ++slot)
+          l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
         l.srgb_after_filter = after;
         slack = glm::max(slack, difference(evaluate_material(scene, points[i], l), centre));
       }

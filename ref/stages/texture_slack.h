@@ -32,7 +32,6 @@ enum TextureSlackChannel : int {
   kSlackChannels
 };
 
-
 /// Window-space ray caster for one view: perspective-correct barycentrics of a triangle's plane
 /// at any window point (extrapolated beyond the triangle's edges, as GL interpolates).
 class WindowBarycentrics {
@@ -56,8 +55,8 @@ bool is_textured(const Material& m);
 /// The surface points of `triangle` at image pixel (x, row)'s centre (raster barycentrics `bary`,
 /// so the first is exactly the G-buffer's) and at its (+-s, +-s) shifts, s = kTextureSlackShift;
 /// returns how many (shifts whose view ray misses the plane are left out).
-int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                           const vec3& bary, SurfacePoint out[kSlackShifts]);
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]);
 
 /// The lambdas whose lookups span every value an admissible lambda in `range` can give: lo, hi,
 /// each integer strictly between, and (when magnification and minification both lie in the
@@ -72,7 +71,8 @@ int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]);
 /// up at lods.exact: for each TextureSlackChannel, the largest |value - centre| over the centre
 /// and the 4 shifts (+-s, +-s), s = kTextureSlackShift, each at every lod candidate of the
 /// channel's texture slot. Zero for materials without textures.
-vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                   const vec3& bary, const SurfaceMaterial& centre, const SurfaceLods& lods);
+vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                   uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
+                   const SurfaceLods& lods);
 
 }  // namespace vct

@@ -9,9 +9,9 @@
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "gl_test_util.h"
+#include "scene/texture_sample.h"
 #include "stages/gbuffer.h"
 #include "stages/pipeline.h"
-#include "scene/texture_sample.h"
 #include "stages/uv_derivatives.h"
 #include "stages/voxel_lod.h"
 
@@ -19,7 +19,8 @@ namespace vct::gl::test {
 namespace {
 
 const Scene& tiled_floor() {
-  static const Scene scene = load_gltf_file(std::string(VCT_SOURCE_DIR) + "/scenes/tiled_floor.gltf");
+  static const Scene scene =
+      load_gltf_file(std::string(VCT_SOURCE_DIR) + "/scenes/tiled_floor.gltf");
   return scene;
 }
 
@@ -30,18 +31,20 @@ const cmp::StageVerdict& verdict(const cmp::Report& r, const std::string& stage)
 }
 
 // The report `vct validate` gives the GL frame (cone stages on its own inputs), with `fault`.
-cmp::Report judge_tiled_floor(GlContext& ctx, const Settings& s, const FrameResult& ref, const std::string& fault) {
+cmp::Report judge_tiled_floor(GlContext& ctx, const Settings& s, const FrameResult& ref,
+                              const std::string& fault) {
   const FrameResult gl = render_gl_frame(ctx, tiled_floor(), s, {"", fault});
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), gl_set);
   const FrameResult ref_on_gl = cmp::reference_on_test_inputs(tiled_floor(), gl, s.vct);
-  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-                               s.vct.soft_shadows);
+  cmp::apply_isolated_verdicts(
+      rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
+      s.vct.soft_shadows);
   for (const char* st : {"gbuffer.normal", "gbuffer.albedo", "voxel.radiance"}) {
     const cmp::StageVerdict& v = verdict(rep, st);
     std::printf("  tiled floor%s%s: %s %s, %zu of %zu beyond the bound, worst %.3g (bound %.3g)\n",
-                fault.empty() ? "" : " with ", fault.c_str(), st, to_string(v.verdict).c_str(), v.out_of_bound,
-                v.checked, v.worst.empty() ? 0.0 : double(v.worst[0].error),
+                fault.empty() ? "" : " with ", fault.c_str(), st, to_string(v.verdict).c_str(),
+                v.out_of_bound, v.checked, v.worst.empty() ? 0.0 : double(v.worst[0].error),
                 v.worst.empty() ? 0.0 : double(v.worst[0].bound));
   }
   return rep;
@@ -104,7 +107,6 @@ TEST(GlTextures, TexturedGBufferMatchesTheCpu) {
   EXPECT_LE(normal_sum / double(3 * both), 5e-3);
 }
 
-
 namespace {
 
 // A 2 m floor (y = 0) in a 2 m volume, u = S (x + 1) / 2, v = S (z + 1) / 2, an emissive texture
@@ -134,7 +136,8 @@ Scene level_marked_floor(float uv_scale) {
   t.width = t.height = 256;
   t.rgba8.assign(size_t(256) * 256 * 4, 10);
   for (int k = 1, size = 128; size >= 1; ++k, size /= 2)
-    t.mips[1].push_back(TextureLevel{size, size, std::vector<uint8_t>(size_t(size) * size_t(size) * 4, uint8_t(10 + 30 * k))});
+    t.mips[1].push_back(TextureLevel{
+        size, size, std::vector<uint8_t>(size_t(size) * size_t(size) * 4, uint8_t(10 + 30 * k))});
   s.textures.push_back(t);
   s.volume.origin = vec3(-1.0f);
   s.volume.size = 2.0f;
@@ -154,7 +157,8 @@ Scene level_marked_wall(float uv_scale) {
   for (int i = 0; i < 4; ++i) {
     s.positions[size_t(i)] = corners[i];
     s.normals[size_t(i)] = vec3(0, 0, 1);
-    s.uv0[size_t(i)] = vec2(uv_scale * (corners[i].x + 2.0f) / 4.0f, uv_scale * (corners[i].y + 2.0f) / 4.0f);
+    s.uv0[size_t(i)] =
+        vec2(uv_scale * (corners[i].x + 2.0f) / 4.0f, uv_scale * (corners[i].y + 2.0f) / 4.0f);
     s.bounds.add(corners[i]);
   }
   s.triangles = {uvec3(0, 1, 2), uvec3(0, 2, 3)};
@@ -182,7 +186,9 @@ Admissible admissible_emission(const Texture& t, const LodRange& range) {
       a.hi = std::max(a.hi, v);
     }
   const int k = int(std::floor(range.lo));
-  const double step = (srgb8_to_linear(uint8_t(10 + 30 * (k + 2))) - srgb8_to_linear(uint8_t(10 + 30 * k))) / 256.0;
+  const double step =
+      double(srgb8_to_linear(uint8_t(10 + 30 * (k + 2))) - srgb8_to_linear(uint8_t(10 + 30 * k))) /
+      256.0;
   a.lo -= step + a.lo * std::ldexp(1.0, -11);
   a.hi += step + a.hi * std::ldexp(1.0, -11);
   return a;
@@ -190,7 +196,8 @@ Admissible admissible_emission(const Texture& t, const LodRange& range) {
 
 // lambda = k + f read back from a value, assuming the level blend in linear light.
 double lambda_if_linear(double value, int k) {
-  const double c0 = srgb8_to_linear(uint8_t(10 + 30 * k)), c1 = srgb8_to_linear(uint8_t(10 + 30 * (k + 1)));
+  const double c0 = srgb8_to_linear(uint8_t(10 + 30 * k)),
+               c1 = srgb8_to_linear(uint8_t(10 + 30 * (k + 1)));
   return k + (value - c0) / (c1 - c0);
 }
 
@@ -206,9 +213,9 @@ TEST(GlTextures, CameraLambdaOfAFacingPlane) {
   for (float scale : {1.0f, 3.0f}) {
     const Scene scene = level_marked_wall(scale);
     const mat4 vp = scene.camera.projection(1.0f) * scene.camera.view();
-    const double lambda =
-        pixel_lods(scene, 0, ScreenBarycentrics(scene, 0, vp, 32, 32), 16, 16).exact.lambda[kSlotEmissive];
-    ASSERT_NEAR(lambda, std::log2(256.0 * scale / 4.0 * 4.0 * std::tan(0.5) / 32.0), 1e-5);
+    const double lambda = pixel_lods(scene, 0, ScreenBarycentrics(scene, 0, vp, 32, 32), 16, 16)
+                              .exact.lambda[kSlotEmissive];
+    ASSERT_NEAR(lambda, std::log2(256.0 * double(scale) * std::tan(0.5) / 32.0), 1e-5);
     const FrameResult gl = render_gl_frame(*ctx, scene, s);
     const LodRange range =
         pixel_lods(scene, 0, ScreenBarycentrics(scene, 0, vp, 32, 32), 16, 16).range[kSlotEmissive];
@@ -221,9 +228,10 @@ TEST(GlTextures, CameraLambdaOfAFacingPlane) {
         hi = std::max(hi, double(gl.gbuffer.emission.at(x, y, 0)));
       }
     const int k = int(std::floor(lambda));
-    std::printf("  camera lambda %.4f: GL value %.5f..%.5f (lambda %.4f if blended in linear light), admissible "
-                "%.5f..%.5f\n",
-                lambda, lo, hi, lambda_if_linear(lo, k), a.lo, a.hi);
+    std::printf(
+        "  camera lambda %.4f: GL value %.5f..%.5f (lambda %.4f if blended in linear light), "
+        "admissible %.5f..%.5f\n",
+        lambda, lo, hi, lambda_if_linear(lo, k), a.lo, a.hi);
     EXPECT_GE(lo, a.lo);
     EXPECT_LE(hi, a.hi);
   }
@@ -237,9 +245,10 @@ TEST(GlTextures, VoxelizationLambdaIsTheVoxelGridsFootprint) {
   for (float scale : {0.6f, 1.7f}) {
     const Scene scene = level_marked_floor(scale);
     const double lambda = voxel_lods(scene, 0, s.vct.grid).exact.lambda[kSlotEmissive];
-    ASSERT_NEAR(lambda, std::log2(256.0 * scale / 2.0 * 2.0 / 32.0), 1e-6);
+    ASSERT_NEAR(lambda, std::log2(256.0 * double(scale) / 32.0), 1e-6);
     const FrameResult gl = render_gl_frame(*ctx, scene, s);
-    const Admissible a = admissible_emission(scene.textures[0], voxel_lods(scene, 0, s.vct.grid).range[kSlotEmissive]);
+    const Admissible a = admissible_emission(scene.textures[0],
+                                             voxel_lods(scene, 0, s.vct.grid).range[kSlotEmissive]);
     double lo = 1e9, hi = -1e9;
     const Volume& v = gl.voxels.radiance;
     for (size_t i = 0; i < v.voxel_count(); ++i) {
@@ -248,9 +257,10 @@ TEST(GlTextures, VoxelizationLambdaIsTheVoxelGridsFootprint) {
       hi = std::max(hi, double(v.data[i * 4]));
     }
     const int k = int(std::floor(lambda));
-    std::printf("  voxel raster lambda %.4f: GL value %.5f..%.5f (lambda %.4f if blended in linear light), "
-                "admissible %.5f..%.5f\n",
-                lambda, lo, hi, lambda_if_linear(lo, k), a.lo, a.hi);
+    std::printf(
+        "  voxel raster lambda %.4f: GL value %.5f..%.5f (lambda %.4f if blended in linear light), "
+        "admissible %.5f..%.5f\n",
+        lambda, lo, hi, lambda_if_linear(lo, k), a.lo, a.hi);
     EXPECT_GE(lo, a.lo);
     EXPECT_LE(hi, a.hi);
   }

@@ -148,8 +148,10 @@ TEST(GltfLimits, ImageOverTheMemoryBudgetIsRefusedWithTheBytesItNeeds) {
   SceneLoadOptions o;
   o.image_memory_budget = 40000;
   const std::string msg = load_error(textured_doc("small.png"), o);
-  EXPECT_NE(msg.find("decoding it needs 53.3 KiB, but only 39.1 KiB of the 39.1 KiB memory budget is left"),
-            std::string::npos)
+  EXPECT_NE(
+      msg.find(
+          "decoding it needs 53.3 KiB, but only 39.1 KiB of the 39.1 KiB memory budget is left"),
+      std::string::npos)
       << msg;
 }
 
@@ -160,10 +162,12 @@ TEST(GltfLimits, TheBudgetCountsImagesAlreadyDecoded) {
   d.j["images"] = {{{"uri", "real64.png"}}, {{"uri", "real64.png"}}};
   d.j["textures"] = {{{"source", 0}}, {{"source", 1}}};
   SceneLoadOptions o;
-  o.image_memory_budget = 54612;  // the first fits exactly; it keeps 37.3 KiB, so the second does not
+  o.image_memory_budget =
+      54612;  // the first fits exactly; it keeps 37.3 KiB, so the second does not
   const std::string msg = load_error(d.text(), o);
   EXPECT_NE(msg.find("image 1 'real64.png'"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("only 16.0 KiB of the 53.3 KiB memory budget is left"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("only 16.0 KiB of the 53.3 KiB memory budget is left"), std::string::npos)
+      << msg;
   o.image_memory_budget = 2 * 54612;
   EXPECT_EQ(load_error(d.text(), o), "");
 }
