@@ -44,6 +44,25 @@ const char* wrap_name(Wrap w) {
   return w == Wrap::Repeat ? "repeat" : (w == Wrap::ClampToEdge ? "clamp_to_edge" : "mirrored_repeat");
 }
 
+// glTF / GL spelling of a min filter, lower case.
+const char* min_filter_name(MinFilter f) {
+  switch (f) {
+    case MinFilter::Nearest:
+      return "nearest";
+    case MinFilter::Linear:
+      return "linear";
+    case MinFilter::NearestMipmapNearest:
+      return "nearest_mipmap_nearest";
+    case MinFilter::LinearMipmapNearest:
+      return "linear_mipmap_nearest";
+    case MinFilter::NearestMipmapLinear:
+      return "nearest_mipmap_linear";
+    case MinFilter::LinearMipmapLinear:
+    default:
+      return "linear_mipmap_linear";
+  }
+}
+
 // The one description of a scene; the text output prints the same facts.
 json summary(const Scene& s) {
   const int grid = VctSettings{}.grid;
@@ -85,7 +104,8 @@ json summary(const Scene& s) {
                              {"height", t.height},
                              {"wrap_s", wrap_name(t.wrap_s)},
                              {"wrap_t", wrap_name(t.wrap_t)},
-                             {"mag_filter", t.mag_filter == Filter::Nearest ? "nearest" : "linear"}});
+                             {"mag_filter", t.mag_filter == Filter::Nearest ? "nearest" : "linear"},
+                             {"min_filter", min_filter_name(t.min_filter)}});
   }
   const Camera& c = s.camera;
   j["camera"] = {{"from_file", c.from_file}, {"position", vec_json(c.position)}, {"forward", vec_json(c.forward)},
@@ -170,8 +190,10 @@ void print_text(const Scene& s) {
   fmt::print("textures: {}\n", s.textures.size());
   for (size_t i = 0; i < s.textures.size(); ++i) {
     const Texture& t = s.textures[i];
-    fmt::print("  {} '{}': {}x{} RGBA8, wrap {}/{}, {} filter\n", i, t.name, t.width, t.height, wrap_name(t.wrap_s),
-               wrap_name(t.wrap_t), t.mag_filter == Filter::Nearest ? "nearest" : "linear");
+    fmt::print("  {} '{}': {}x{} RGBA8, wrap {}/{}, mag {}, min {}\n", i, t.name, t.width, t.height,
+               wrap_name(t.wrap_s), wrap_name(t.wrap_t),
+               t.mag_filter == Filter::Nearest ? "nearest" : "linear",
+               min_filter_name(t.min_filter));
   }
   const Camera& c = s.camera;
   const std::string lens = c.orthographic ? fmt::format("orthographic ymag {:.4g}", c.ymag)

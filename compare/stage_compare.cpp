@@ -138,7 +138,10 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   v.bound = bound_text(m);
   const int slack_ch = texture_slack ? texture_slack_channel(stage, *texture_slack) : -1;
   const bool use_slack = slack_ch >= 0 && texture_slack->width == ref.width && texture_slack->height == ref.height;
-  if (use_slack) v.bound += " + the reference's texture slack (its value's range under a 2^-8 px sample shift)";
+  if (use_slack)
+    v.bound +=
+        " + the reference's texture slack (its value's range under a 2^-8 px sample shift and any "
+        "admissible texture LOD)";
   const int ch = std::min(ref.channels, test.channels);
   const bool strict_ties = m.id != ToleranceModel::Shading;
   double mean_abs = 0;
@@ -246,8 +249,10 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
 }
 
 namespace {
-StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
-                                   const CompareOptions& opt, const std::vector<uint8_t>* tolerated);
+StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test,
+                                   double abs, double rel, const CompareOptions& opt,
+                                   const std::vector<uint8_t>* tolerated,
+                                   const std::vector<float>* extra_abs = nullptr);
 }  // namespace
 
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
@@ -256,8 +261,10 @@ StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, c
 }
 
 namespace {
-StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
-                                   const CompareOptions& opt, const std::vector<uint8_t>* tolerated) {
+StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, const Volume& test,
+                                   double abs, double rel, const CompareOptions& opt,
+                                   const std::vector<uint8_t>* tolerated,
+                                   const std::vector<float>* extra_abs) {
   StageVerdict v;
   v.stage = stage;
   v.model = "volume-abs-rel";
@@ -278,7 +285,8 @@ StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, 
     float we = 0, wb = 0;
     for (int c = 0; c < ch; ++c) {
       const double r = ref.data[i * size_t(ref.channels) + size_t(c)], t = test.data[i * size_t(test.channels) + size_t(c)];
-      const double d = std::abs(t - r), bound = abs + rel * std::abs(r);
+      const double slack = extra_abs && i < extra_abs->size() ? double((*extra_abs)[i]) : 0.0;
+      const double d = std::abs(t - r), bound = abs + rel * std::abs(r) + slack;
       se += d * d;
       v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
       const double ratio = std::isfinite(d) ? d / std::max(bound, 1e-30) : 1e30;
@@ -459,6 +467,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const Volume* hi = rs.volumes.count(st::kVoxelCasHi) ? &rs.volumes.at(st::kVoxelCasHi) : nullptr;
   const bool interval = m.cas_interval && lo && hi && same_size(*lo, ref) && same_size(*hi, ref);
   if (m.cas_interval && !interval) v.note = "no cas_lo/cas_hi in the reference: judged with +-1/255 only; ";
+  // Textured scenes: each voxel's mean may move by its fragments' mean LOD slack (the reference's
+  // voxel.texture_slack, docs/compare.md "Texture LOD").
+  const Volume* lod_slack =
+      rs.volumes.count(st::kVoxelTextureSlack) ? &rs.volumes.at(st::kVoxelTextureSlack) : nullptr;
+  if (lod_slack && !same_size(*lod_slack, ref)) lod_slack = nullptr;
   const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
   const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
   if (tfrags && (!frags || !same_size(*tfrags, ref))) tfrags = nullptr;
@@ -481,11 +494,14 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     for (int c = 0; c < ch; ++c) {
       const size_t k = i * size_t(ref.channels) + size_t(c);
       const double r = ref.data[k], t = test.data[i * size_t(test.channels) + size_t(c)];
-      double d = std::abs(t - r), bound = m.bound(r, n);
+      const double slack =
+          lod_slack && c < 3 ? double(lod_slack->data[i * size_t(lod_slack->channels)]) : 0.0;
+      double d = std::abs(t - r), bound = m.bound(r, n) + slack;
       if (interval) {
-        const double l = double(lo->data[k]) - m.abs, h = double(hi->data[k]) + m.abs;
+        const double l = double(lo->data[k]) - m.abs - slack,
+                     h = double(hi->data[k]) + m.abs + slack;
         d = t < l ? l - t : t > h ? t - h : 0.0;
-        bound = m.abs;
+        bound = m.abs + slack;
       }
       se += (t - r) * (t - r);
       v.max_abs = std::max(v.max_abs, std::abs(t - r));
@@ -576,6 +592,32 @@ Taint taint_at_level(const Taint& base, int n, const Volume& level_vol, int leve
   return t;
 }
 
+// The base level's texture LOD slack carried up the chain: a level-L voxel is a convex combination
+// of the 2^L cube of base voxels under it (iso box filter), so it moves by at most their largest
+// slack; anisotropic compositing c_f + (1 - a_f) c_b at most doubles a bound per level (as the
+// aniso-mip-propagated model). Empty when the reference has no slack volume.
+std::vector<float> mip_lod_slack(const StageSet& rs, const Volume& base, const Volume& level_vol,
+                                 int level, bool aniso) {
+  if (!rs.volumes.count(st::kVoxelTextureSlack)) return {};
+  const Volume& s = rs.volumes.at(st::kVoxelTextureSlack);
+  if (!same_size(s, base) || s.nx != s.ny || s.ny != s.nz) return {};
+  const int f = 1 << level;
+  const float grow = aniso ? float(f) : 1.0f;
+  std::vector<float> out(level_vol.voxel_count(), 0.0f);
+  for (int z = 0; z < s.nz; ++z)
+    for (int y = 0; y < s.ny; ++y)
+      for (int x = 0; x < s.nx; ++x) {
+        const int lx = x / f, ly = y / f, lz = z / f;
+        if (lx >= level_vol.nx || ly >= level_vol.ny || lz >= level_vol.nz) continue;
+        const size_t li =
+            (size_t(lz) * size_t(level_vol.ny) + size_t(ly)) * size_t(level_vol.nx) + size_t(lx);
+        const float v = s.data[((size_t(z) * size_t(s.ny) + size_t(y)) * size_t(s.nx) + size_t(x)) *
+                               size_t(s.channels)];
+        out[li] = std::max(out[li], grow * v);
+      }
+  return out;
+}
+
 StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const StageSet& ts, const CompareOptions& opt,
                          const Taint& taint) {
   const StageRef ref = *find_stage(stage);  // a mip.<dir>.<level> row: the caller dispatched on it
@@ -593,7 +635,9 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
   const Taint lt = base_vol.nx == base_vol.ny && base_vol.ny == base_vol.nz
                        ? taint_at_level(taint, base_vol.nx, rs.volumes.at(stage), level)
                        : Taint();
-  StageVerdict v = compare_volume_masked(stage, rs.volumes.at(stage), ts.volumes.at(stage), b.abs, b.rel, opt, &lt);
+  const std::vector<float> slack = mip_lod_slack(rs, base_vol, rs.volumes.at(stage), level, aniso);
+  StageVerdict v = compare_volume_masked(stage, rs.volumes.at(stage), ts.volumes.at(stage), b.abs,
+                                         b.rel, opt, &lt, slack.empty() ? nullptr : &slack);
   v.model = std::string(aniso ? "aniso" : "iso") + "-mip-propagated(" + base.name + ")";
   // Opacity is a coverage fraction: outside [0, 1] is wrong whatever the reference says.
   const Volume& t = ts.volumes.at(stage);

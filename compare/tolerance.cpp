@@ -117,10 +117,11 @@ std::string bound_text(const ImageModel& m) {
 
 int texture_slack_channel(const std::string& stage, const Image& slack) {
   // TextureSlackChannel order: the slack image's channel names, and the stage each widens.
-  static const char* kNames[] = {"normal", "albedo", "material", "emission"};
+  static const char* kNames[] = {"normal", "albedo", "material", "emission", "direct"};
   static const char* kStages[] = {stage_names::kGbufferNormal, stage_names::kGbufferAlbedo,
-                                  stage_names::kGbufferMaterial, stage_names::kGbufferEmission};
-  for (int k = 0; k < 4; ++k) {
+                                  stage_names::kGbufferMaterial, stage_names::kGbufferEmission,
+                                  stage_names::kImageDirect};
+  for (int k = 0; k < 5; ++k) {
     if (stage != kStages[k]) continue;
     if (int(slack.channel_names.size()) != slack.channels) return k < slack.channels ? k : -1;
     for (int c = 0; c < slack.channels; ++c)

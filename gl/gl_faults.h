@@ -31,6 +31,8 @@ inline constexpr GlFault kGlFaults[] = {
     {"wrong_mip", "iso mip l built from level l-2 (mip_iso.comp)", "mip.iso.2", false},
     {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",
      false},
+    {"texture_level_zero", "material textures looked up at level 0, no mipmapping (textureLod(.., 0), surface.glsl)",
+     stage_names::kGbufferNormal, false},
     {"cone_step", "the cone march starts one step late (cone.glsl)", stage_names::kImageIndirectDiffuse, false},
     // Alpha-mask faults show only on scenes with alpha masks (scenes/foliage.gltf).
     {"alpha_shadow", "the depth pass ignores alphaMode MASK (depth_only.frag)", "shadow_map.0",

@@ -9,6 +9,7 @@
 #include "gl_context.h"
 #include "gl_setting_uniforms.h"
 #include "shared/vct_shared.h"
+#include "scene/texture_mips.h"
 
 namespace vct::gl {
 namespace {
@@ -27,6 +28,24 @@ GLint wrap_mode(Wrap w) {
     case Wrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
     case Wrap::Repeat:
     default: return GL_REPEAT;
+  }
+}
+
+GLint min_filter_mode(MinFilter f) {
+  switch (f) {
+    case MinFilter::Nearest:
+      return GL_NEAREST;
+    case MinFilter::Linear:
+      return GL_LINEAR;
+    case MinFilter::NearestMipmapNearest:
+      return GL_NEAREST_MIPMAP_NEAREST;
+    case MinFilter::LinearMipmapNearest:
+      return GL_LINEAR_MIPMAP_NEAREST;
+    case MinFilter::NearestMipmapLinear:
+      return GL_NEAREST_MIPMAP_LINEAR;
+    case MinFilter::LinearMipmapLinear:
+    default:
+      return GL_LINEAR_MIPMAP_LINEAR;
   }
 }
 
@@ -102,15 +121,22 @@ GLuint GlScene::texture(int index, bool srgb) {
   const auto it = textures_.find(key);
   if (it != textures_.end()) return it->second;
   const Texture& tex = scene_.textures[size_t(index)];
+  // Every level the CPU built for this encoding (scene/texture_mips.h), uploaded as is: GL and the
+  // CPU then filter identical bits; glGenerateMipmap's filter is the driver's own.
+  const int levels = available_levels(tex, srgb);
   GLuint t = 0;
   glCreateTextures(GL_TEXTURE_2D, 1, &t);
-  glTextureStorage2D(t, 1, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, tex.width, tex.height);
+  glTextureStorage2D(t, levels, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, tex.width, tex.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  // Row 0 of Texture::rgba8 is v = 0, which is also GL's t = 0 row: no flip.
-  glTextureSubImage2D(t, 0, 0, 0, tex.width, tex.height, GL_RGBA, GL_UNSIGNED_BYTE, tex.rgba8.data());
-  const GLint filter = tex.mag_filter == Filter::Nearest ? GL_NEAREST : GL_LINEAR;
-  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, filter);
-  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, filter);
+  for (int level = 0; level < levels; ++level) {
+    int w = 0, h = 0;
+    const uint8_t* texels = mip_level_texels(tex, srgb, level, w, h);
+    // Row 0 is v = 0, which is also GL's t = 0 row: no flip.
+    glTextureSubImage2D(t, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  }
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, min_filter_mode(tex.min_filter));
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER,
+                      tex.mag_filter == Filter::Nearest ? GL_NEAREST : GL_LINEAR);
   glTextureParameteri(t, GL_TEXTURE_WRAP_S, wrap_mode(tex.wrap_s));
   glTextureParameteri(t, GL_TEXTURE_WRAP_T, wrap_mode(tex.wrap_t));
   textures_[key] = t;

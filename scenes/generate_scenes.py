@@ -298,6 +298,41 @@ def leaf_card_texture(size=64):
     return png_bytes(size, size, rows, channels=4)
 
 
+def checker_albedo(size=256, square=32):
+    """sRGB checker: squares of `square` texels, light (200, 190, 170) and dark (90, 80, 70)."""
+    rows = []
+    for y in range(size):
+        r = bytearray()
+        for x in range(size):
+            light = ((x // square) + (y // square)) % 2 == 0
+            r += bytes((200, 190, 170) if light else (90, 80, 70))
+        rows.append(bytes(r))
+    return png_bytes(size, size, rows)
+
+
+def bump_normal(size=256, period=32):
+    """Tangent-space normals of round bumps, one per `period` x `period` cell: a height field
+    h = cos^2(pi r / (2 R)) inside radius R = 0.4 period (0 outside), differentiated centrally."""
+    radius = 0.4 * period
+
+    def height(x, y):
+        cx, cy = (x % period) - period / 2 + 0.5, (y % period) - period / 2 + 0.5
+        r = math.sqrt(cx * cx + cy * cy)
+        return math.cos(math.pi * r / (2 * radius)) ** 2 if r < radius else 0.0
+
+    rows = []
+    for y in range(size):
+        r = bytearray()
+        for x in range(size):
+            dhdx = (height(x + 1, y) - height(x - 1, y)) * 0.5 * 4.0
+            dhdrow = (height(x, y + 1) - height(x, y - 1)) * 0.5 * 4.0
+            # x right, y up in the image (toward row 0), z out of the surface (glTF convention).
+            n = normalize([-dhdx, dhdrow, 1.0])
+            r += bytes(int(round((k * 0.5 + 0.5) * 255)) for k in n)
+        rows.append(bytes(r))
+    return png_bytes(size, size, rows)
+
+
 # ----------------------------------------------------------------------------- glTF writer
 class Gltf:
     def __init__(self, generator_note):
@@ -653,9 +688,42 @@ def foliage():
     return g.write("foliage.gltf")
 
 
+def tiled_floor():
+    """Issue 13's ordinary tiled floor: 4 m x 4 m, a 256^2 sRGB checker (32-texel squares) and a
+    bump normal map (32-texel period), both repeated 4x (TEXCOORD_0 0..4), sampler
+    LINEAR_MIPMAP_LINEAR / LINEAR / REPEAT, roughness 0.6; a closed room with a spot light and an
+    emissive panel. Seen at a grazing angle the floor is strongly minified (mip levels 2-5)."""
+    g = Gltf("tiled floor: mipmapped, repeated, normal-mapped textures")
+    files = {"textures/checker_albedo.png": checker_albedo(), "textures/bump_normal.png": bump_normal()}
+    t_albedo = g.texture("textures/checker_albedo.png", "checker_albedo")
+    t_normal = g.texture("textures/bump_normal.png", "bump_normal")
+    floor = g.material("tiled_floor", (1.0, 1.0, 1.0), roughness=0.6,
+                       base_color=g.texture_info(t_albedo), normal=g.texture_info(t_normal, scale=1.0))
+    walls = g.material("walls", (0.7, 0.7, 0.68), lambert=True)
+    panel = g.material("panel", (0.0, 0.0, 0.0), lambert=True, emissive=(1.0, 0.9, 0.7), strength=3.0)
+    m = MeshData(with_tangents=True)
+    m.quad([-2, 0, 2], [4, 0, 0], [0, 0, -4])  # uv = (s * 4, (1 - t) * 4): TEXCOORD_0 0..4
+    g.node("floor", mesh=g.mesh("floor", m, floor))
+    room = MeshData()
+    H = 2.5
+    room.quad([-2, H, -2], [4, 0, 0], [0, 0, 4])    # ceiling
+    room.quad([-2, 0, -2], [4, 0, 0], [0, H, 0])    # back wall
+    room.quad([2, 0, 2], [-4, 0, 0], [0, H, 0])     # front wall
+    room.quad([-2, 0, 2], [0, 0, -4], [0, H, 0])    # left wall
+    room.quad([2, 0, -2], [0, 0, 4], [0, H, 0])     # right wall
+    g.node("room", mesh=g.mesh("room", room, walls))
+    lamp = MeshData()
+    lamp.quad([-0.6, 1.0, -1.98], [1.2, 0, 0], [0, 0.6, 0])
+    g.node("panel", mesh=g.mesh("panel", lamp, panel))
+    g.spot("floor_spot", [0.5, 2.4, 0.5], look_rotation([0.5, 2.4, 0.5], [-0.3, 0.0, -0.6]), intensity=12.0,
+           inner=0.35, outer=0.75)
+    g.camera([0.0, 1.2, 1.9], [0.0, 0.2, -1.5], yfov=1.0)
+    return [g.write("tiled_floor.gltf")] + [(name, data) for name, data in files.items()]
+
+
 def main():
     outputs = []
-    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage):
+    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage, tiled_floor):
         result = make()
         outputs += result if isinstance(result, list) else [result]
     check = "--check" in sys.argv

@@ -77,7 +77,7 @@ render() {
   local fault
   for fault in $("$runner" --list-faults); do  # the table of gl/gl_faults.h
     if [ "$fault" = alpha_unclamped ]; then continue; fi  # needs aniso mips: below
-    case "$fault" in alpha_shadow|alpha_voxel) continue ;; esac  # need alpha masks: below
+    case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero) continue ;; esac  # need their scenes: below
     one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa --gl-fault "$fault"
   done
   one "fault.racy_average.cas" "$box" --reduction cas --max-msaa --gl-fault racy_average
@@ -86,6 +86,8 @@ render() {
   for fault in alpha_shadow alpha_voxel; do
     one "fault.$fault.fixed" "$here/scenes/foliage.gltf" --reduction fixed --max-msaa --gl-fault "$fault"
   done
+  one "fault.texture_level_zero.fixed" "$here/scenes/tiled_floor.gltf" --reduction fixed --max-msaa \
+    --gl-fault texture_level_zero
   echo "  faults: $((SECONDS - t0)) s"
   mkdir -p "$out/timings"
   if [ "$timings" = 0 ]; then

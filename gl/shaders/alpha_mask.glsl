@@ -8,7 +8,9 @@ uniform float u_alpha_cutoff;
 
 float base_color_alpha(vec2 uv0, vec2 uv1) {
   float alpha = u_base_color_factor.a;
-  if (u_tex_present[0] != 0) alpha *= texture(u_tex_base, slot_uv(0, uv0, uv1)).a;
+  // Level 0, as every engine tests alpha (docs/scenes.md "Alpha modes"): an explicit LOD also needs no
+  // derivatives, which are undefined after a discard in non-uniform control flow.
+  if (u_tex_present[0] != 0) alpha *= textureLod(u_tex_base, slot_uv(0, uv0, uv1), 0.0f).a;
   return alpha;
 }
 

@@ -1,6 +1,8 @@
 // The textured material at a surface point: the GLSL twin of ref/scene/surface.cpp's
 // evaluate_material (same factors, same glTF channel use, same normal-map frame). Texture
-// filtering itself is GL's (SRGB8_ALPHA8 decode before filtering, LINEAR without mipmaps).
+// filtering itself is GL's: SRGB8_ALPHA8 decode before filtering, the glTF sampler's filters, and
+// in fragment shaders the implicit LOD from the quad's derivatives (GL 4.5 §8.14) over the mip
+// chain the CPU built and gl_scene.cpp uploaded.
 uniform vec4 u_base_color_factor;
 uniform float u_metallic_factor;
 uniform float u_roughness_factor;
@@ -28,6 +30,14 @@ struct SurfaceMaterial {
   vec3 shading_normal;
 };
 
+vec4 material_texture(sampler2D s, vec2 uv) {
+#ifdef VCT_FAULT_TEXTURE_LEVEL_ZERO
+  return textureLod(s, uv, 0.0f);  // fault: every lookup at level 0, minified textures alias
+#else
+  return texture(s, uv);
+#endif
+}
+
 vec2 slot_uv(int slot, vec2 uv0, vec2 uv1) {
   vec2 uv = u_tex_coord[slot] == 1 ? uv1 : uv0;
   return (u_tex_transform[slot] * vec3(uv, 1.0f)).xy;
@@ -50,22 +60,22 @@ vec3 apply_normal_map(vec3 normal, vec4 tangent, vec3 tn, float scale) {
 SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1) {
   SurfaceMaterial s;
   vec4 base = u_base_color_factor;
-  if (u_tex_present[0] != 0) base *= texture(u_tex_base, slot_uv(0, uv0, uv1));
+  if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, slot_uv(0, uv0, uv1));
   s.albedo = base.rgb;
   s.metallic = u_metallic_factor;
   s.roughness = u_roughness_factor;
   if (u_tex_present[1] != 0) {
-    vec4 mr = texture(u_tex_mr, slot_uv(1, uv0, uv1));
+    vec4 mr = material_texture(u_tex_mr, slot_uv(1, uv0, uv1));
     s.roughness *= mr.g;
     s.metallic *= mr.b;
   }
   s.specular_factor = u_specular_factor;
   s.specular_color = u_specular_color;
   s.emission = u_emission;
-  if (u_tex_present[3] != 0) s.emission *= texture(u_tex_emissive, slot_uv(3, uv0, uv1)).rgb;
+  if (u_tex_present[3] != 0) s.emission *= material_texture(u_tex_emissive, slot_uv(3, uv0, uv1)).rgb;
   s.shading_normal = normal;
   if (u_tex_present[2] != 0) {
-    vec4 texel = texture(u_tex_normal, slot_uv(2, uv0, uv1));
+    vec4 texel = material_texture(u_tex_normal, slot_uv(2, uv0, uv1));
     vec3 tn = texel.xyz * 2.0f - 1.0f;
     if (u_normal_two_channel != 0) tn.z = sqrt(max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
     s.shading_normal = apply_normal_map(normal, tangent, tn, u_normal_scale);

@@ -83,6 +83,8 @@ uint64_t hash_scene(const Scene& s) {
     h.pod(int(t.wrap_s));
     h.pod(int(t.wrap_t));
     h.pod(int(t.mag_filter));
+    h.pod(int(
+        t.min_filter));  // the primary hit's ray-cone lookup reads the mip chain (pt/ray_cone.h)
   }
   for (const SpotLight& l : s.spot_lights) {
     h.pod(l.position);

@@ -7,6 +7,7 @@
 #include "pt/bsdf_sampling.h"
 #include "pt/camera_ray.h"
 #include "scene/alpha_mask.h"
+#include "pt/ray_cone.h"
 #include "scene/surface.h"
 #include "shared/vct_shared.h"
 
@@ -178,7 +179,13 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
 
   for (int depth = 1; hit.hit; ++depth) {
     const SurfacePoint sp = interpolate_surface(scene_, hit.triangle, hit.b1, hit.b2);
-    const SurfaceMaterial mat = evaluate_material(scene_, sp);
+    // The primary hit looks textures up at the pixel's ray-cone footprint (pt/ray_cone.h), as the
+    // G-buffer does at its LOD; later vertices integrate the texture by Monte Carlo at level 0.
+    const SlotLods lods = depth == 1
+                              ? ray_cone_lods(scene_, hit.triangle, hit.t, dir,
+                                              pixel_spread_angle(scene_.camera, settings_.height))
+                              : SlotLods{};
+    const SurfaceMaterial mat = evaluate_material(scene_, sp, lods);
     const vec3 wo = -dir;
 
     // Emission seen from the previous vertex (or the camera); MIS against step 3's sampling.

@@ -21,14 +21,28 @@ std::string describe(const tinygltf::Image& image, int index, const EncodedImage
          std::to_string(h.channels) + " channel(s) of " + std::to_string(h.bits) + " bits";
 }
 
+/// The RGBA8 levels 1..q a mip chain adds (scene/texture_mips.h): below 1/3 of level 0 for a
+/// square image, up to 1x for a one-texel-high strip. One chain per image; a texture that
+/// materials read both as sRGB and as linear keeps a second one, not counted here.
+uint64_t mip_chain_bytes(uint64_t width, uint64_t height) {
+  uint64_t bytes = 0;
+  while (width > 1 || height > 1) {
+    width = width > 1 ? width / 2 : 1;
+    height = height > 1 ? height / 2 : 1;
+    bytes += width * height * 4;
+  }
+  return bytes;
+}
+
 }  // namespace
 
 uint64_t image_decode_bytes(uint64_t width, uint64_t height, int bits) {
-  return 2 * decoded_bytes(width, height, bits) + width * height * 4;
+  return 2 * decoded_bytes(width, height, bits) + width * height * 4 +
+         mip_chain_bytes(width, height);
 }
 
 uint64_t image_kept_bytes(uint64_t width, uint64_t height, int bits) {
-  return decoded_bytes(width, height, bits) + width * height * 4;
+  return decoded_bytes(width, height, bits) + width * height * 4 + mip_chain_bytes(width, height);
 }
 
 bool load_image_within_budget(tinygltf::Image* image, int index, std::string* err, std::string* warn, int req_width,

@@ -19,10 +19,11 @@ struct ImageBudget {
 
 /// The bytes decoding a width x height image with `bits` per channel needs at its peak: stb's
 /// RGBA output and tinygltf's copy of it (tinygltf always asks for 4 channels), plus the Scene's
-/// RGBA8 texture made from it (gltf_materials.cpp).
+/// RGBA8 texture made from it (gltf_materials.cpp) and its mip chain (scene/texture_mips.h).
 uint64_t image_decode_bytes(uint64_t width, uint64_t height, int bits);
 
-/// What stays allocated per image after decoding: tinygltf's copy and the Scene's RGBA8.
+/// What stays allocated per image after decoding: tinygltf's copy, the Scene's RGBA8 and its
+/// mip chain.
 uint64_t image_kept_bytes(uint64_t width, uint64_t height, int bits);
 
 /// A tinygltf::LoadImageDataFunction; `user` is an ImageBudget. On refusal it fills

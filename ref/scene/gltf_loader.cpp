@@ -18,6 +18,7 @@
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_internal.h"
 #include "scene/json_nesting.h"
+#include "scene/texture_mips.h"
 
 namespace vct {
 namespace gltf {
@@ -176,6 +177,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
   scene.stats.warnings = std::move(warnings);
   gltf::convert_textures(ctx, scene);
   gltf::convert_materials(ctx, scene);
+  build_texture_mips(scene);  // once, for the encodings the materials read
   gltf::convert_nodes(ctx, scene);
   if (scene.triangles.empty()) gltf::fail(ctx, "the scene contains no triangles to render");
   warn_if_unlit(scene);

@@ -60,6 +60,26 @@ Wrap wrap_of(int gl) {
   return Wrap::Repeat;
 }
 
+// glTF leaves an absent minFilter (or a texture without a sampler) to the implementation; ours is
+// LINEAR_MIPMAP_LINEAR, what engines use for material textures (docs/scenes.md, "Textures").
+MinFilter min_filter_of(int gl) {
+  switch (gl) {
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      return MinFilter::Nearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      return MinFilter::Linear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      return MinFilter::NearestMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return MinFilter::LinearMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      return MinFilter::NearestMipmapLinear;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+    default:
+      return MinFilter::LinearMipmapLinear;
+  }
+}
+
 // tinygltf decodes to 8 or 16 bits with 1..4 channels; the Scene keeps RGBA8.
 std::vector<uint8_t> to_rgba8(const tinygltf::Image& img) {
   const size_t texels = size_t(img.width) * size_t(img.height);
@@ -127,6 +147,7 @@ void convert_textures(const Context& ctx, Scene& scene) {
       out.wrap_s = wrap_of(s.wrapS);
       out.wrap_t = wrap_of(s.wrapT);
       out.mag_filter = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? Filter::Nearest : Filter::Linear;
+      out.min_filter = min_filter_of(s.minFilter);
     }
     scene.textures.push_back(std::move(out));
   }

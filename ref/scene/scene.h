@@ -20,15 +20,39 @@ struct TextureTransform {
 };
 
 enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+/// GL's magnification filters (glTF sampler magFilter).
 enum class Filter { Nearest, Linear };
+/// GL's six minification filters (glTF sampler minFilter; GL 4.5 §8.14.2-8.14.3).
+enum class MinFilter {
+  Nearest,
+  Linear,
+  NearestMipmapNearest,
+  LinearMipmapNearest,
+  NearestMipmapLinear,
+  LinearMipmapLinear
+};
 
-/// A decoded 8-bit texture (RGBA, 4 bytes per texel, row 0 = first row of the file = v=0).
+/// One level of a texture's mip chain: RGBA8, row 0 = v = 0, as Texture::rgba8.
+struct TextureLevel {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba8;
+};
+
+/// A decoded 8-bit texture (RGBA, 4 bytes per texel, row 0 = first row of the file = v=0) with its
+/// glTF sampler. The default sampler (a glTF texture without one: glTF leaves it to the
+/// implementation) is LINEAR_MIPMAP_LINEAR / LINEAR / REPEAT (docs/scenes.md, "Textures").
 struct Texture {
   std::string name;
   int width = 0, height = 0;
-  std::vector<uint8_t> rgba8;
+  std::vector<uint8_t> rgba8;  // level 0
   Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
   Filter mag_filter = Filter::Linear;
+  MinFilter min_filter = MinFilter::LinearMipmapLinear;
+  /// Levels 1..q of the mip chain (scene/texture_mips.h), built once from level 0 for each way
+  /// the scene's materials read the texture: [0] decoded linear, [1] decoded from sRGB (the box
+  /// filter averages in linear light). Empty where not built: sampling then has level 0 only, as
+  /// a GL texture allocated with one level.
+  std::vector<TextureLevel> mips[2];
 };
 
 /// A material slot's texture: which texture, which UV set, which transform. texture < 0: none.

@@ -6,6 +6,8 @@
 
 #include "core/math.h"
 #include "scene/scene.h"
+#include "scene/texture_lod.h"
+#include "scene/texture_sample.h"
 
 namespace vct {
 
@@ -33,13 +35,43 @@ struct SurfaceMaterial {
 
 SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1, float b2);
 
-/// Evaluates the triangle's material at `p`. Textures are sampled bilinearly at mip level 0 with
-/// GL's texel-centre convention and the texture's wrap modes; sRGB textures (base colour,
-/// emissive) are decoded per texel before filtering, as GL does for SRGB8_ALPHA8.
-SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p);
+/// A material's texture slots, in the order GL binds them (gl/shaders/surface.glsl).
+enum TextureSlot : int {
+  kSlotBaseColor = 0,
+  kSlotMetallicRoughness,
+  kSlotNormal,
+  kSlotEmissive,
+  kTextureSlots
+};
 
-/// Bilinear sample of an RGBA8 texture in [0,1] units (decoded from sRGB when `srgb`).
-vec4 sample_texture(const Texture& tex, vec2 uv, bool srgb);
+/// The lambda (GL 4.5 §8.14, scene/texture_lod.h) each slot's lookup uses. The default, 0, is
+/// level 0 with the magnification filter: a lookup without derivatives.
+struct SlotLods {
+  double lambda[kTextureSlots] = {0.0, 0.0, 0.0, 0.0};
+  // sRGB slots (base colour, emissive) decoded after filtering instead of per texel, as GL 4.5
+  // §8.24 allows (scene/texture_sample.h); the reference decodes per texel, the slack tries both.
+  bool srgb_after_filter = false;
+};
+
+/// A surface sample's lambdas: the reference's own (exact derivatives) and, per slot, every lambda
+/// a correct GL may use instead (docs/compare.md, "Texture LOD").
+struct SurfaceLods {
+  SlotLods exact;
+  LodRange range[kTextureSlots];
+};
+
+/// The texture and encoding of `slot` in `m`; nullptr when the slot has no texture.
+const TextureRef* slot_texture(const Material& m, int slot);
+inline bool slot_is_srgb(int slot) {
+  return slot == kSlotBaseColor || slot == kSlotEmissive;
+}
+
+/// Evaluates the triangle's material at `p`, each texture looked up at its slot's lambda
+/// (scene/texture_sample.h: GL's texel centres, wrap modes, min/mag filters and mip levels);
+/// sRGB textures (base colour, emissive) are decoded per texel before filtering, as GL does for
+/// SRGB8_ALPHA8.
+SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p,
+                                  const SlotLods& lods = {});
 
 /// Applies a tangent-space normal map value (already in [-1,1]^3, z reconstructed if needed).
 vec3 apply_normal_map(const vec3& normal, const vec4& tangent, vec3 tangent_space_normal, float scale);

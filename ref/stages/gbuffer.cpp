@@ -6,6 +6,7 @@
 #include "stages/alpha_ties.h"
 #include "stages/raster.h"
 #include "stages/texture_slack.h"
+#include "stages/uv_derivatives.h"
 
 namespace vct {
 
@@ -29,7 +30,7 @@ GBuffer make_gbuffer(int w, int h) {
   g.coverage = Image(w, h, 1);
   g.coverage.channel_names = {"Y"};
   g.texture_slack = Image(w, h, kSlackChannels);
-  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission", "alpha_tie"};
+  g.texture_slack.channel_names = {"normal", "albedo", "material", "emission", "direct", "alpha_tie"};
   return g;
 }
 // kSlackAlphaTie: pixels whose front-most surface, masks ignored, is alpha tested with an alpha
@@ -62,8 +63,12 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
     for (int x = 0; x < w; ++x) {
       const size_t i = vb.index(x, row);
       if (vb.triangle[i] < 0) continue;
-      const SurfacePoint sp = interpolate_surface(scene, uint32_t(vb.triangle[i]), vb.bary[i].y, vb.bary[i].z);
-      const SurfaceMaterial m = evaluate_material(scene, sp);
+      const uint32_t tri = uint32_t(vb.triangle[i]);
+      const SurfacePoint sp = interpolate_surface(scene, tri, vb.bary[i].y, vb.bary[i].z);
+      // Texture LOD from the exact screen-space UV derivatives at the pixel centre (GL 4.5 §8.14).
+      const SurfaceLods lods =
+          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+      const SurfaceMaterial m = evaluate_material(scene, sp, lods.exact);
       const vec3 n = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
       g.position.set_rgb(x, row, sp.position);
       g.normal.set_rgb(x, row, n);
@@ -76,8 +81,8 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       g.emission.set_rgb(x, row, m.emission);
       g.depth.at(x, row, 0) = vb.depth[i];
       g.coverage.at(x, row, 0) = 1.0f;
-      const vec4 slack = texture_slack(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], m);
-      for (int c = 0; c < kSlackAlphaTie; ++c) g.texture_slack.at(x, row, c) = slack[c];
+      const vec4 slack = texture_slack(scene, wb, x, row, tri, vb.bary[i], m, lods);
+      for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];  // kSlackDirect: later
     }
   });
   if (scene_has_alpha_test(scene)) mark_alpha_ties(scene, view_proj, wb, g);

@@ -23,8 +23,21 @@ using BounceLight = std::function<vec3(const VoxelFragment&, const SurfaceMateri
 std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                                     const VctSettings& settings, const BounceLight* bounce = nullptr);
 
+/// Per fragment, the largest |change| (over RGB) of its light when every textured slot is looked
+/// up at the other lambdas a correct GL may use in the voxel raster (stages/voxel_lod.h), against
+/// `values` (fragment_radiance). 0 for untextured materials.
+std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox,
+                                      const std::vector<vec3>& values,
+                                      const std::vector<ShadowMap>& maps,
+                                      const VctSettings& settings,
+                                      const BounceLight* bounce = nullptr);
+
+/// Per voxel, the mean of its fragments' slacks (a bound on how far the voxel's mean may move).
+Volume voxel_lod_slack(const Voxelization& vox, const std::vector<float>& slack);
+
 /// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied,
-/// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8.
+/// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
+/// texture_slack (voxel_lod_slack) when a material has a texture.
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                             const VctSettings& settings, const BounceLight* bounce = nullptr);
 

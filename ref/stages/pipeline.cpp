@@ -7,6 +7,7 @@
 #include "io/run_dir.h"
 #include "stages/composite.h"
 #include "stages/direct.h"
+#include "stages/direct_slack.h"
 #include "stages/gbuffer.h"
 #include "stages/indirect_pass.h"
 #include "stages/multibounce.h"
@@ -84,7 +85,11 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const
   r.info["covered_voxels"] = std::to_string(vox.covered);
   FrameImages& im = r.images;
   if (!s.soft_shadows)
-    timed(r, "direct", [&] { im.direct = shade_direct(scene, r.gbuffer, r.shadow_maps, s); });
+    timed(r, "direct", [&] {
+      im.direct = shade_direct(scene, r.gbuffer, r.shadow_maps, s);
+      // The reference's own freedom for image.direct's bound (stages/direct_slack.h).
+      add_direct_texture_slack(scene, r.shadow_maps, s, im.direct, r.gbuffer);
+    });
   timed(r, "particles", [&] { im.particles = render_particles(scene, r.gbuffer, s); });
   trace_cone_stages(scene, s, r);
   r.timings_ms["total"] = total.ms();

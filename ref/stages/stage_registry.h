@@ -34,6 +34,7 @@ inline constexpr char kVoxelRadiance[] = "voxel.radiance";
 inline constexpr char kVoxelFragments[] = "voxel.fragments";
 inline constexpr char kVoxelCasLo[] = "voxel.cas_lo";
 inline constexpr char kVoxelCasHi[] = "voxel.cas_hi";
+inline constexpr char kVoxelTextureSlack[] = "voxel.texture_slack";
 inline constexpr char kVoxelConservative[] = "voxel.conservative";
 inline constexpr char kVoxelHoles[] = "voxel.holes";
 inline constexpr char kMipIso[] = "mip.iso";

@@ -46,28 +46,71 @@ vec4 difference(const SurfaceMaterial& a, const SurfaceMaterial& b) {
 
 }  // namespace
 
-vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                   const vec3& bary, const SurfaceMaterial& centre) {
-  if (!textured(scene.materials[scene.triangle_material[triangle]])) return vec4(0.0f);
+int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]) {
+  int n = 0;
+  out[n++] = range.lo;
+  if (range.lo <= 0.0 && range.hi > 0.0) out[n++] = 1e-9;  // minified at level 0
+  for (double k = std::floor(range.lo) + 1.0; k < range.hi && n < kMaxLodCandidates - 1; k += 1.0) {
+    if (k > 0.0) out[n++] = k;
+  }
+  if (range.hi > out[n - 1]) out[n++] = range.hi;
+  return n;
+}
+
+bool is_textured(const Material& m) {
+  return textured(m);
+}
+
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]) {
   // The shift set is symmetric, so the row direction (image rows grow downward, window y upward)
   // only matters for the centre itself.
   const double cx = double(x) + 0.5, cy = double(wb.height()) - double(row) - 0.5;
   glm::dvec2 bc;
-  if (!wb.at(scene, triangle, cx, cy, bc)) return vec4(0.0f);
+  if (!wb.at(scene, triangle, cx, cy, bc)) return 0;
   constexpr double s = kTextureSlackShift;
-  // The corners only: the change of a (locally) linear value peaks there, as in the position
-  // model's 2^-8 (|d/dx| + |d/dy|); edge midpoints doubled the G-buffer's cost for nothing.
-  static constexpr int kShifts[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
-  vec4 slack(0.0f);
+  // The centre and the corners: the change of a (locally) linear value peaks there, as in the
+  // position model's 2^-8 (|d/dx| + |d/dy|); edge midpoints doubled the G-buffer's cost for
+  // nothing.
+  static constexpr int kShifts[kSlackShifts][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+  int n = 0;
   for (const auto& k : kShifts) {
-    glm::dvec2 bs;
-    if (!wb.at(scene, triangle, cx + s * k[0], cy + s * k[1], bs)) continue;
+    glm::dvec2 bs = bc;
+    if ((k[0] != 0 || k[1] != 0) && !wb.at(scene, triangle, cx + s * k[0], cy + s * k[1], bs))
+      continue;
     // Moved by the ray-cast difference from the raster's own barycentrics, so the centre value
     // is exactly the G-buffer's.
     const float b1 = bary.y + float(bs.x - bc.x), b2 = bary.z + float(bs.y - bc.y);
-    const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, triangle, b1, b2));
-    slack = glm::max(slack, difference(m, centre));
+    out[n++] = interpolate_surface(scene, triangle, b1, b2);
   }
+  return n;
+}
+
+vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                   uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
+                   const SurfaceLods& lods) {
+  if (!textured(scene.materials[scene.triangle_material[triangle]])) return vec4(0.0f);
+  SurfacePoint points[kSlackShifts];
+  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  // Each slot's candidates; evaluation j takes the j-th of every slot (the last once a slot has
+  // fewer), and each slack channel reads one slot only, so every candidate of every slot is seen.
+  double cand[kTextureSlots][kMaxLodCandidates];
+  int count[kTextureSlots], rounds = 1;
+  for (int slot = 0; slot < kTextureSlots; ++slot) {
+    count[slot] = lod_candidates(lods.range[slot], cand[slot]);
+    rounds = std::max(rounds, count[slot]);
+  }
+  vec4 slack(0.0f);
+  // Each at both ends of where GL may decode sRGB (before or after filtering, GL 4.5 §8.24).
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < rounds; ++j)
+      for (const bool after : {false, true}) {
+        SlotLods l;
+        for (int slot = 0; slot < kTextureSlots; ++slot)
+          l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
+        l.srgb_after_filter = after;
+        slack = glm::max(slack, difference(evaluate_material(scene, points[i], l), centre));
+      }
   return slack;
 }
 

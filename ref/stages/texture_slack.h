@@ -1,14 +1,18 @@
-// How much a textured G-buffer value may legitimately move between two correct rasterizers: the
-// reference's own value over the sample-position shift that vertex snapping allows (the same
-// 2^-8 pixel the interpolated-attribute tolerance uses, compare/tolerance.h). GL does not mip the
-// material textures (LINEAR at level 0, gl/gl_scene.cpp), so under minification one pixel spans
-// many texels and a 1e-3 pixel shift moves the bilinear sample across texel steps: 0.02 texels
-// at 16 texels per pixel on demo_room's back wall at 64^2 (docs/compare.md, "G-buffer").
+// How much a textured G-buffer value may legitimately move between two correct GL implementations:
+// the range of the reference's own value over the sample-position shift that vertex snapping
+// allows (the same 2^-8 pixel the interpolated-attribute tolerance uses, compare/tolerance.h) and
+// over every lambda GL may use for the lookup (stages/uv_derivatives.h: quad differences, the
+// approximated rho, LOD precision). A trilinear lookup is linear in lambda between integer levels
+// (and piecewise constant for *_MIPMAP_NEAREST, stepping at k + 1/2), so its values over
+// [lo, hi] are spanned by those at lo, hi and every integer in between (docs/compare.md,
+// "G-buffer" and "Texture LOD"; dEQP's texture-lookup verifier takes the same approach).
 #pragma once
 
 #include "core/math.h"
 #include "scene/scene.h"
 #include "scene/surface.h"
+#include "scene/texture_lod.h"
+#include "stages/uv_derivatives.h"
 
 namespace vct {
 
@@ -17,14 +21,16 @@ namespace vct {
 constexpr double kTextureSlackShift = 1.0 / 256.0;
 
 /// Channels of GBuffer::texture_slack, one per textured attribute: the largest |change| over the
-/// attribute's channels; then kSlackAlphaTie, 1 where the alpha test may go either way
-/// (stages/alpha_ties.h), which the comparison adds to its edge map (docs/compare.md,
-/// "Alpha-mask ties").
+/// attribute's channels; kSlackDirect: the direct light shaded from those attributes
+/// (stages/direct_slack.h), filled once the direct light is; then kSlackAlphaTie, 1 where the
+/// alpha test may go either way (stages/alpha_ties.h), which the comparison adds to its edge map
+/// (docs/compare.md, "Alpha-mask ties").
 enum TextureSlackChannel : int {
   kSlackNormal = 0,
   kSlackAlbedo,
   kSlackMaterial,
   kSlackEmission,
+  kSlackDirect,
   kSlackAlphaTie,
   kSlackChannels
 };
@@ -43,11 +49,33 @@ class WindowBarycentrics {
   int width_, height_;
 };
 
+/// The sample points the slack considers: the pixel centre and the four (+-s, +-s) shifts.
+constexpr int kSlackShifts = 5;
+
+/// True when any of the material's slots has a texture.
+bool is_textured(const Material& m);
+
+/// The surface points of `triangle` at image pixel (x, row)'s centre (raster barycentrics `bary`,
+/// so the first is exactly the G-buffer's) and at its (+-s, +-s) shifts, s = kTextureSlackShift;
+/// returns how many (shifts whose view ray misses the plane are left out).
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]);
+
+/// The lambdas whose lookups span every value an admissible lambda in `range` can give: lo, hi,
+/// each integer strictly between, and (when magnification and minification both lie in the
+/// range) the minified lookup at lambda -> 0+, which differs from the magnified one when the
+/// filters do. At most kMaxLodCandidates (the range is then clipped to its first ones; ranges
+/// are a few tenths of a level wide).
+constexpr int kMaxLodCandidates = 8;
+int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]);
+
 /// Slack of the textured values at image pixel (x, row) (row 0 = top) whose closest surface is
-/// `triangle` at barycentrics `bary` (b0, b1, b2): for each TextureSlackChannel, the largest
-/// |value(shifted) - value(centre)| over the 4 shifts (+-s, +-s) with s = kTextureSlackShift.
-/// Zero for materials without textures.
-vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
-                   const vec3& bary, const SurfaceMaterial& centre);
+/// `triangle` at barycentrics `bary` (b0, b1, b2) and whose reference value `centre` was looked
+/// up at lods.exact: for each TextureSlackChannel, the largest |value - centre| over the centre
+/// and the 4 shifts (+-s, +-s), s = kTextureSlackShift, each at every lod candidate of the
+/// channel's texture slot. Zero for materials without textures.
+vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                   uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
+                   const SurfaceLods& lods);
 
 }  // namespace vct

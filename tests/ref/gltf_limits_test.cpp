@@ -140,15 +140,18 @@ TEST(GltfLimits, PngClaimingHundredThousandSquaredIsRefusedWithItsSize) {
 }
 
 TEST(GltfLimits, ImageOverTheMemoryBudgetIsRefusedWithTheBytesItNeeds) {
-  // 2 x stb's and tinygltf's RGBA8 (16 KiB each at 64 x 64) + the Scene's RGBA8 (16 KiB) = 48 KiB.
-  EXPECT_EQ(gltf::image_decode_bytes(64, 64, 8), 49152u);
+  // 2 x stb's and tinygltf's RGBA8 (16 KiB each at 64 x 64) + the Scene's RGBA8 (16 KiB) = 48 KiB,
+  // + its mip chain: (32^2 + 16^2 + 8^2 + 4^2 + 2^2 + 1) x 4 = 5460 bytes; 54612 bytes = 53.3 KiB.
+  EXPECT_EQ(gltf::image_decode_bytes(64, 64, 8), 54612u);
   const std::string png = png_header_only(64, 64, 8, 6);
   test::write_file("small.png", png);
   SceneLoadOptions o;
   o.image_memory_budget = 40000;
   const std::string msg = load_error(textured_doc("small.png"), o);
-  EXPECT_NE(msg.find("decoding it needs 48.0 KiB, but only 39.1 KiB of the 39.1 KiB memory budget is left"),
-            std::string::npos)
+  EXPECT_NE(
+      msg.find(
+          "decoding it needs 53.3 KiB, but only 39.1 KiB of the 39.1 KiB memory budget is left"),
+      std::string::npos)
       << msg;
 }
 
@@ -159,11 +162,13 @@ TEST(GltfLimits, TheBudgetCountsImagesAlreadyDecoded) {
   d.j["images"] = {{{"uri", "real64.png"}}, {{"uri", "real64.png"}}};
   d.j["textures"] = {{{"source", 0}}, {{"source", 1}}};
   SceneLoadOptions o;
-  o.image_memory_budget = 49152;  // the first fits exactly; it keeps 32 KiB, so the second does not
+  o.image_memory_budget =
+      54612;  // the first fits exactly; it keeps 37.3 KiB, so the second does not
   const std::string msg = load_error(d.text(), o);
   EXPECT_NE(msg.find("image 1 'real64.png'"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("only 16.0 KiB of the 48.0 KiB memory budget is left"), std::string::npos) << msg;
-  o.image_memory_budget = 2 * 49152;
+  EXPECT_NE(msg.find("only 16.0 KiB of the 53.3 KiB memory budget is left"), std::string::npos)
+      << msg;
+  o.image_memory_budget = 2 * 54612;
   EXPECT_EQ(load_error(d.text(), o), "");
 }
 

@@ -164,6 +164,16 @@ TEST(GltfLoader, MaterialExtensionsAndTextureTransform) {
   EXPECT_EQ(t.wrap_s, Wrap::ClampToEdge);
   EXPECT_EQ(t.wrap_t, Wrap::MirroredRepeat);
   EXPECT_EQ(t.mag_filter, Filter::Nearest);
+  // No minFilter in the sampler: ours, LINEAR_MIPMAP_LINEAR (docs/scenes.md, "Textures"). The
+  // 2x1 image is read as sRGB (base colour, emissive) and linear (metallic-roughness, normal):
+  // one 1x1 level 1 per encoding.
+  EXPECT_EQ(t.min_filter, MinFilter::LinearMipmapLinear);
+  ASSERT_EQ(t.mips[0].size(), 1u);
+  ASSERT_EQ(t.mips[1].size(), 1u);
+  EXPECT_EQ(t.mips[0][0].rgba8,
+            (std::vector<uint8_t>{128, 128, 0, 255}));  // (255 + 0 + 1) / 2 rounded
+  EXPECT_EQ(t.mips[1][0].rgba8,
+            (std::vector<uint8_t>{188, 188, 0, 255}));  // linear 0.5 -> sRGB 187.5
   const Material& m = s.materials[0];
   EXPECT_EQ(m.base_color_factor, vec4(0.5f, 0.6f, 0.7f, 1.0f));
   EXPECT_EQ(m.base_color_texture.texture, 0);

@@ -1,0 +1,61 @@
+#include "stages/direct_slack.h"
+
+#include <algorithm>
+
+#include "core/parallel.h"
+#include "stages/direct.h"
+#include "stages/raster.h"
+#include "stages/texture_slack.h"
+#include "stages/uv_derivatives.h"
+
+namespace vct {
+
+void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps,
+                              const VctSettings& settings, const Image& direct, GBuffer& g) {
+  const int w = settings.width, h = settings.height;
+  if (g.texture_slack.channels <= kSlackDirect || direct.width != w || direct.height != h) return;
+  const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
+  // The G-buffer keeps no triangle ids: the same visibility again (same rasterizer, same bits).
+  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
+  const vec3 eye = scene.camera.position;
+  // Direct light reads albedo, metallic, roughness and the shading normal; not emission.
+  static constexpr int kSlots[3] = {kSlotBaseColor, kSlotMetallicRoughness, kSlotNormal};
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = vb.index(x, row);
+      if (vb.triangle[i] < 0) continue;
+      const uint32_t tri = uint32_t(vb.triangle[i]);
+      if (!is_textured(scene.materials[scene.triangle_material[tri]])) continue;
+      const SurfaceLods lods =
+          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+      double cand[3][kMaxLodCandidates];
+      int count[3];
+      for (int k = 0; k < 3; ++k) count[k] = lod_candidates(lods.range[kSlots[k]], cand[k]);
+      SurfacePoint points[kSlackShifts];
+      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);
+      const vec3 ref = direct.rgb(x, row);
+      float slack = 0.0f;
+      SlotLods l = lods.exact;
+      for (int p = 0; p < n; ++p)
+        for (int i0 = 0; i0 < count[0]; ++i0)
+          for (int i1 = 0; i1 < count[1]; ++i1)
+            for (int i2 = 0; i2 < count[2] * 2;
+                 ++i2) {  // x2: sRGB decoded before / after filtering
+              l.srgb_after_filter = i2 >= count[2];
+              l.lambda[kSlots[0]] = cand[0][i0];
+              l.lambda[kSlots[1]] = cand[1][i1];
+              l.lambda[kSlots[2]] = cand[2][i2 % count[2]];
+              const SurfaceMaterial m = evaluate_material(scene, points[p], l);
+              const vec3 nrm = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
+              const vec3 v = glm::normalize(eye - points[p].position);
+              const vec3 d = glm::abs(
+                  direct_radiance(scene, maps, settings, points[p].position, nrm, v, m) - ref);
+              slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));
+            }
+      g.texture_slack.at(x, row, kSlackDirect) = slack;
+    }
+  });
+}
+
+}  // namespace vct

@@ -1,0 +1,24 @@
+// How far the direct light may legitimately move at a textured pixel: the reference's own
+// direct_radiance (stages/direct.h) shaded from every textured material a correct GL G-buffer may
+// hold there (the texture slack's sample shifts x admissible LODs, stages/texture_slack.h), at
+// the same shadow maps. image.direct's bound adds it (docs/compare.md, "Texture LOD"): a
+// normal-mapped surface's admissible normals move n.l and the specular lobe by more than the
+// shading bound alone allows.
+#pragma once
+
+#include <vector>
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+/// Fills channel kSlackDirect of g.texture_slack: per covered pixel of a textured material, the
+/// largest |direct(candidate) - direct| over RGB, with `direct` the reference's image.direct.
+/// Every combination of the base colour, metallic-roughness and normal slots' LOD candidates is
+/// shaded at each shifted sample point.
+void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps,
+                              const VctSettings& settings, const Image& direct, GBuffer& g);
+
+}  // namespace vct
