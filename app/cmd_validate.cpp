@@ -143,7 +143,7 @@ int run(const ValidateOptions& o) {
   RunDir run(out, RunRole::Run);  // locked; INCOMPLETE until finish()
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()},
-                         {"lights", scene.spot_lights.size()}};
+                         {"lights", scene.lights.size()}};
   run.json()["settings"] = s;
   run.json()["environment"] = environment_info();
   // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).

@@ -27,7 +27,8 @@ class GlScene {
   /// Draws positions only (depth passes), one call for everything.
   void draw_depth_only() const;
   /// Spot-light uniforms (lights.glsl) for `p`; `view_proj` one per light.
-  void set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& view_proj) const;
+  void set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& layer_view_proj,
+                  const std::vector<int>& light_layer) const;
   const Scene& scene() const { return scene_; }
 
  private:
@@ -42,7 +43,7 @@ class GlScene {
   GLuint white_ = 0;
 };
 
-/// Maximum spot lights the shaders take (lights.glsl's MAX_LIGHTS).
+/// Maximum lights (of any kind) the shaders take (lights.glsl's MAX_LIGHTS).
 constexpr int kMaxLights = 8;
 
 }  // namespace vct::gl

@@ -84,7 +84,8 @@ uint64_t hash_scene(const Scene& s) {
     h.pod(int(t.wrap_t));
     h.pod(int(t.mag_filter));
   }
-  for (const SpotLight& l : s.spot_lights) {
+  for (const Light& l : s.lights) {
+    h.pod(int(l.kind));
     h.pod(l.position);
     h.pod(l.direction);
     h.pod(l.color);

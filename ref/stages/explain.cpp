@@ -63,12 +63,12 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
   spec.result = trace_specular_cone(f.mips, scene.volume, s, p, n, view_vector(scene, p), g.material.at(x, y, 1),
                                     &spec.samples);
   cones.push_back(std::move(spec));
-  for (size_t li = 0; li < scene.spot_lights.size(); ++li) {
+  for (size_t li = 0; li < scene.lights.size(); ++li) {
     TracedCone sc{"shadow", int(li), Cone{}, 1.0f, vec4(0.0f), {}};
-    const float vis = trace_shadow_cone(f.mips, scene.volume, s, p, scene.spot_lights[li].position, &sc.samples);
-    sc.cone.origin = scene.volume.to_texture(p);
-    sc.cone.direction = glm::normalize(scene.volume.to_texture(scene.spot_lights[li].position) - sc.cone.origin);
-    sc.cone.aperture = s.soft_shadow_aperture_deg * kPi / 180.0f;
+    const ConeFrame frame(f.mips, scene.volume, s, 0.0f, false);
+    const float vis = frame.shadow(p, scene.lights[li], &sc.samples);
+    float max_distance = 0.0f;
+    sc.cone = frame.shadow_cone(p, scene.lights[li], &max_distance);
     sc.result = vec4(vec3(0.0f), 1.0f - vis);
     cones.push_back(std::move(sc));
   }
