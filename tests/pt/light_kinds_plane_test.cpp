@@ -31,10 +31,12 @@ Image render_direct(const Scene& scene, Image* variance) {
   return acc.mean(kDirect);
 }
 
-// Pixel centre -> the camera ray (GLM unprojection, independent of camera_ray's basis arithmetic).
+// Pixel centre -> the camera ray (GLM unprojection, independent of camera_ray's basis arithmetic),
+// through the far plane: a point near the camera would leave the direction ~1e-5 off, which the
+// range window (steep near its end) turns into ~1e-3 relative.
 vec3 pixel_ray(const Camera& c, int x, int y) {
   const vec4 viewport(0, 0, kSize, kSize);
-  const vec3 win(float(x) + 0.5f, float(kSize - y) - 0.5f, 0.5f);  // GL windows: row 0 at the bottom
+  const vec3 win(float(x) + 0.5f, float(kSize - y) - 0.5f, 1.0f);  // GL windows: row 0 at the bottom
   return glm::normalize(glm::unProject(win, c.view(), c.projection(1.0f), viewport) - c.position);
 }
 
