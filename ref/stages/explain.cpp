@@ -10,6 +10,8 @@
 #include "shared/vct_shared.h"
 #include "stages/cone_sets.h"
 #include "stages/indirect_pass.h"
+#include "stages/light_sample.h"
+#include "stages/shadow_map.h"
 
 namespace vct {
 
@@ -73,6 +75,26 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
     cones.push_back(std::move(sc));
   }
   return cones;
+}
+
+// Each light as this pixel sees it: kind, direction, irradiance, n.l and the shadow map's PCF
+// visibility (the shadow cone's is among the cones), so a dark pixel says which light and why.
+json lights_json(const Scene& scene, const FrameResult& f, const VctSettings& s, const vec3& p, const vec3& n) {
+  json arr = json::array();
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const LightSample ls = sample_light(light, s.light_model, p);
+    const float pcf = i < f.shadow_maps.size() ? light_visibility(f.shadow_maps[i], light, p, s) : 1.0f;
+    arr.push_back({{"light", i},
+                   {"name", light.name},
+                   {"kind", light_kind_name(light.kind)},
+                   {"to_light", vec_json(ls.l)},
+                   {"distance", light.is_directional() ? json(nullptr) : json(ls.distance)},
+                   {"irradiance", vec_json(ls.irradiance)},
+                   {"n_dot_l", glm::dot(n, ls.l)},
+                   {"shadow_map_visibility", pcf}});
+  }
+  return arr;
 }
 
 // --- The picture: one z/y/x slice of the base level through the surface point. ---
@@ -202,6 +224,7 @@ PixelExplanation explain_pixel(const Scene& scene, const FrameResult& f, const V
     if (!img->empty()) comps[name] = vec_json(img->rgb(x, y));
   }
   j["components"] = comps;
+  j["lights"] = lights_json(scene, f, s, p, n);
   const std::vector<TracedCone> cones = trace_all(scene, f, s, x, y);
   json arr = json::array();
   for (const TracedCone& c : cones) arr.push_back(cone_json(c));
