@@ -22,7 +22,9 @@ const std::array<CubeFaceAxes, 6> kFaces = {{
 
 }  // namespace
 
-const CubeFaceAxes& cube_face_axes(int face) { return kFaces[size_t(face)]; }
+const CubeFaceAxes& cube_face_axes(int face) {
+  return kFaces[size_t(face)];
+}
 
 int cube_face(const vec3& r) {
   const float ax = std::abs(r.x), ay = std::abs(r.y), az = std::abs(r.z);

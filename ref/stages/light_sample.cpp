@@ -15,11 +15,12 @@ LightSample sample_light(const Light& light, LightModel model, const vec3& p) {
   LightSample out;
   const int kind = int(light.kind);
   out.l = sh::to_light_direction(kind, light.position, light.direction, p);
-  out.distance = light.is_directional() ? std::numeric_limits<float>::infinity() : glm::length(light.position - p);
+  out.distance = light.is_directional() ? std::numeric_limits<float>::infinity()
+                                        : glm::length(light.position - p);
   const float cos_axis = glm::dot(-out.l, glm::normalize(light.direction));
-  out.irradiance = sh::punctual_irradiance(shared_light_model(model), kind, light.color, light.intensity, out.distance,
-                                           cos_axis, std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle),
-                                           light.range);
+  out.irradiance = sh::punctual_irradiance(
+      shared_light_model(model), kind, light.color, light.intensity, out.distance, cos_axis,
+      std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle), light.range);
   return out;
 }
 

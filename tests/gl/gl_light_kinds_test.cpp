@@ -1,7 +1,8 @@
 // Point and directional lights on GL against the CPU reference and against closed forms: sun_room
 // (a sun, two point lamps) plus a spot, judged stage by stage as `vct validate` judges it (every
-// shadow map and cube face, direct light, voxels, mips, cones); and image.direct of a point light over a plane (E = I cos / d^2) and of a sun on a
-// tilted plane (E = lux cos) from GL's own G-buffer positions (32^3, 64^2).
+// shadow map and cube face, direct light, voxels, mips, cones); and image.direct of a point light
+// over a plane (E = I cos / d^2) and of a sun on a tilted plane (E = lux cos) from GL's own
+// G-buffer positions (32^3, 64^2).
 #include <cmath>
 #include <cstdio>
 
@@ -15,8 +16,8 @@ namespace vct::gl::test {
 namespace {
 
 // scenes/sun_room.gltf (a sun and two point lamps, placed clear of the constant bias's acne at
-// 1024^2 maps: docs/pipeline.md "Shadow maps") plus a narrow spot straight down onto the floor, which
-// faces it head-on: all three kinds in one frame.
+// 1024^2 maps: docs/pipeline.md "Shadow maps") plus a narrow spot straight down onto the floor,
+// which faces it head-on: all three kinds in one frame.
 Scene mixed_light_room() {
   Scene s = load_gltf_file(std::string(VCT_SOURCE_DIR) + "/scenes/sun_room.gltf");
   Light spot;
@@ -50,16 +51,20 @@ TEST(GlLightKinds, MixedLightsPassEveryStage) {
   EXPECT_TRUE(gl.shadow_maps[1].is_cube());
   EXPECT_TRUE(gl.shadow_maps[2].is_cube());
   EXPECT_FALSE(gl.shadow_maps[3].depth.empty());  // the spot
-  for (int f = 0; f < 6; ++f) EXPECT_EQ(gl.shadow_maps[1].cube_view_proj[size_t(f)], ref.shadow_maps[1].cube_view_proj[size_t(f)]);
+  for (int f = 0; f < 6; ++f)
+    EXPECT_EQ(gl.shadow_maps[1].cube_view_proj[size_t(f)],
+              ref.shadow_maps[1].cube_view_proj[size_t(f)]);
   EXPECT_EQ(gl.shadow_maps[0].view_proj, ref.shadow_maps[0].view_proj);
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), gl_set);
   const FrameResult ref_on_gl = cmp::reference_on_test_inputs(scene, gl, s.vct);
-  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-                               s.vct.soft_shadows);
+  cmp::apply_isolated_verdicts(
+      rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
+      s.vct.soft_shadows);
   int light_stages = 0;
   for (const auto& st : rep.stages) {
-    std::printf("  %-24s %-5s %s\n", st.stage.c_str(), to_string(st.verdict).c_str(), st.note.c_str());
+    std::printf("  %-24s %-5s %s\n", st.stage.c_str(), to_string(st.verdict).c_str(),
+                st.note.c_str());
     if (st.stage.rfind("shadow_map", 0) == 0) {
       ++light_stages;
       EXPECT_NE(st.verdict, cmp::Verdict::Missing) << st.stage;
@@ -78,7 +83,8 @@ Scene plane_scene(const Light& light, float tilt) {
   m.specular_factor = 0.0f;  // pure Lambertian
   m.double_sided = true;
   s.materials.push_back(m);
-  const vec3 n(std::sin(tilt), std::cos(tilt), 0.0f), u = 2.0f * vec3(std::cos(tilt), -std::sin(tilt), 0.0f), w(0, 0, 2);
+  const vec3 n(std::sin(tilt), std::cos(tilt), 0.0f),
+      u = 2.0f * vec3(std::cos(tilt), -std::sin(tilt), 0.0f), w(0, 0, 2);
   const vec3 corners[4] = {-u - w, u - w, u + w, -u + w};
   for (const vec3& p : corners) {
     s.positions.push_back(p);
@@ -133,7 +139,8 @@ TEST(GlLightKinds, SunOnATiltedPlaneIsLuxTimesCosine) {
   for (float tilt : {0.0f, 0.8f}) {
     const Scene scene = plane_scene(sun, tilt);
     Settings s = small_settings();
-    s.vct.shadow_bias = 0.02f;  // above the tilted plane's depth change over the PCF footprint (ref test)
+    s.vct.shadow_bias =
+        0.02f;  // above the tilted plane's depth change over the PCF footprint (ref test)
     const FrameResult f = render_gl_frame(*ctx, scene, s);
     const float expected = 0.5f / kPi * sun.intensity * std::cos(tilt);
     int checked = 0;
@@ -141,7 +148,8 @@ TEST(GlLightKinds, SunOnATiltedPlaneIsLuxTimesCosine) {
       for (int x = 0; x < f.gbuffer.coverage.width; ++x) {
         if (f.gbuffer.coverage.at(x, y, 0) == 0.0f) continue;
         // The G-buffer normal is the plane's up to float rounding: cos from it moves by ~1e-6.
-        EXPECT_NEAR(f.images.direct.at(x, y, 0), expected, 1e-4f * expected) << tilt << " " << x << "," << y;
+        EXPECT_NEAR(f.images.direct.at(x, y, 0), expected, 1e-4f * expected)
+            << tilt << " " << x << "," << y;
         ++checked;
       }
     EXPECT_GT(checked, 1000);

@@ -1,8 +1,8 @@
 // The path tracer's next-event estimation for point and directional lights against closed forms
-// written out here: a point light over a plane, E = I cos(theta) / d^2 x the glTF range window, with
-// a blocker whose shadow an independent ray-quad test decides; a sun on a tilted plane,
-// E = lux cos(theta) everywhere. Pixel-centre primary rays and delta lights make pt_direct
-// noise-free, so the tolerance is float rounding.
+// written out here: a point light over a plane, E = I cos(theta) / d^2 x the glTF range window,
+// with a blocker whose shadow an independent ray-quad test decides; a sun on a tilted plane, E =
+// lux cos(theta) everywhere. Pixel-centre primary rays and delta lights make pt_direct noise-free,
+// so the tolerance is float rounding.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -36,7 +36,8 @@ Image render_direct(const Scene& scene, Image* variance) {
 // range window (steep near its end) turns into ~1e-3 relative.
 vec3 pixel_ray(const Camera& c, int x, int y) {
   const vec4 viewport(0, 0, kSize, kSize);
-  const vec3 win(float(x) + 0.5f, float(kSize - y) - 0.5f, 1.0f);  // GL windows: row 0 at the bottom
+  const vec3 win(float(x) + 0.5f, float(kSize - y) - 0.5f,
+                 1.0f);  // GL windows: row 0 at the bottom
   return glm::normalize(glm::unProject(win, c.view(), c.projection(1.0f), viewport) - c.position);
 }
 
@@ -78,7 +79,9 @@ TEST(LightKindsPlane, PointLightIsInverseSquareWithRangeAndShadow) {
       if (blocked < 0) continue;
       const float dist = glm::length(l.position - p), cos_t = (l.position.y - p.y) / dist;
       const float window = std::max(std::min(1.0f - std::pow(dist / l.range, 4.0f), 1.0f), 0.0f);
-      const vec3 expected = blocked ? vec3(0.0f) : kAlbedo / kPi * l.color * l.intensity * cos_t / (dist * dist) * window;
+      const vec3 expected =
+          blocked ? vec3(0.0f)
+                  : kAlbedo / kPi * l.color * l.intensity * cos_t / (dist * dist) * window;
       for (int c = 0; c < 3; ++c) {
         ASSERT_NEAR(direct.at(x, y, c), expected[c], 2e-4f * expected[c] + 1e-6f) << x << "," << y;
         ASSERT_EQ(var.at(x, y, c), 0.0f);
@@ -111,7 +114,8 @@ TEST(LightKindsPlane, SunOnATiltedPlaneIsLuxTimesCosine) {
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x)
         for (int c = 0; c < 3; ++c) {
-          ASSERT_NEAR(direct.at(x, y, c), expected[c], 2e-4f * expected[c]) << tilt << " " << x << "," << y;
+          ASSERT_NEAR(direct.at(x, y, c), expected[c], 2e-4f * expected[c])
+              << tilt << " " << x << "," << y;
           ASSERT_EQ(var.at(x, y, c), 0.0f);
         }
   }

@@ -38,11 +38,11 @@ TEST(CubeMap, TiesOnEdgesAndCornersGoToXThenY) {
 TEST(CubeMap, FaceCoordinatesFollowTable8_19) {
   // s = (sc/|ma| + 1)/2, t = (tc/|ma| + 1)/2 with sc, tc, ma from the table's row.
   EXPECT_EQ(cube_face_st(0, vec3(1, 0.5f, -0.25f)), vec2(0.625f, 0.25f));  // sc = -rz, tc = -ry
-  EXPECT_EQ(cube_face_st(1, vec3(-2, 1, 1)), vec2(0.75f, 0.25f));          // sc = rz, tc = -ry, |ma| = 2
-  EXPECT_EQ(cube_face_st(2, vec3(0.5f, 1, -0.5f)), vec2(0.75f, 0.25f));    // sc = rx, tc = rz
-  EXPECT_EQ(cube_face_st(3, vec3(0.5f, -1, -0.5f)), vec2(0.75f, 0.75f));   // sc = rx, tc = -rz
-  EXPECT_EQ(cube_face_st(4, vec3(0.5f, 0.5f, 1)), vec2(0.75f, 0.25f));     // sc = rx, tc = -ry
-  EXPECT_EQ(cube_face_st(5, vec3(0.5f, 0.5f, -1)), vec2(0.25f, 0.25f));    // sc = -rx, tc = -ry
+  EXPECT_EQ(cube_face_st(1, vec3(-2, 1, 1)), vec2(0.75f, 0.25f));  // sc = rz, tc = -ry, |ma| = 2
+  EXPECT_EQ(cube_face_st(2, vec3(0.5f, 1, -0.5f)), vec2(0.75f, 0.25f));   // sc = rx, tc = rz
+  EXPECT_EQ(cube_face_st(3, vec3(0.5f, -1, -0.5f)), vec2(0.75f, 0.75f));  // sc = rx, tc = -rz
+  EXPECT_EQ(cube_face_st(4, vec3(0.5f, 0.5f, 1)), vec2(0.75f, 0.25f));    // sc = rx, tc = -ry
+  EXPECT_EQ(cube_face_st(5, vec3(0.5f, 0.5f, -1)), vec2(0.25f, 0.25f));   // sc = -rx, tc = -ry
 }
 
 TEST(CubeMap, DirectionIsTheInverseOfTheFaceCoordinates) {
@@ -80,8 +80,10 @@ TEST(CubeMap, RenderedFacesSeeAlongTheirAxes) {
   // s = t = 0.75; no other face sees it, and the mirrored texel on +x is empty.
   Scene s;
   const uint32_t m = test::add_material(s, vec3(0.5f));
-  test::add_quad(s, {2, -1.2f, -1.2f}, {2, -0.8f, -1.2f}, {2, -0.8f, -0.8f}, {2, -1.2f, -0.8f}, {-1, 0, 0}, m);
-  test::add_quad(s, {-3, -3, -3}, {-2.9f, -3, -3}, {-2.9f, -2.9f, -3}, {-3, -2.9f, -3}, {0, 0, 1}, m);  // bounds only
+  test::add_quad(s, {2, -1.2f, -1.2f}, {2, -0.8f, -1.2f}, {2, -0.8f, -0.8f}, {2, -1.2f, -0.8f},
+                 {-1, 0, 0}, m);
+  test::add_quad(s, {-3, -3, -3}, {-2.9f, -3, -3}, {-2.9f, -2.9f, -3}, {-3, -2.9f, -3}, {0, 0, 1},
+                 m);  // bounds only
   Light l;
   l.kind = LightKind::Point;
   l.position = vec3(0.0f);

@@ -47,7 +47,9 @@ Scene point_plane(float range, bool occluder) {
   Scene s;
   const uint32_t m = lambert_material(s);
   test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
-  if (occluder) test::add_quad(s, {0.3f, 0.5f, -0.1f}, {0.5f, 0.5f, -0.1f}, {0.5f, 0.5f, 0.1f}, {0.3f, 0.5f, 0.1f}, {0, 1, 0}, m);
+  if (occluder)
+    test::add_quad(s, {0.3f, 0.5f, -0.1f}, {0.5f, 0.5f, -0.1f}, {0.5f, 0.5f, 0.1f},
+                   {0.3f, 0.5f, 0.1f}, {0, 1, 0}, m);
   s.lights.push_back(point_light(3.0f, range));
   s.volume = fit_volume(s.bounds);
   top_camera(s);
@@ -80,7 +82,8 @@ TEST(LightKinds, PointLightOverAPlaneIsInverseSquareInImageDirect) {
         // The -y face sees the whole floor at one depth (no PCF acne): keep its taps on it.
         if (std::abs(p.x) > 0.9f || std::abs(p.z) > 0.9f) continue;
         const vec3 expected = point_closed_form(s.lights[0], p);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(x, y, c), expected[c], 1e-6f + 1e-5f * expected[c]) << x << "," << y;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(img.at(x, y, c), expected[c], 1e-6f + 1e-5f * expected[c]) << x << "," << y;
         ++checked;
       }
     EXPECT_GT(checked, 600);
@@ -101,7 +104,8 @@ TEST(LightKinds, PointLightCubeShadowsTheFloorBehindAnOccluder) {
       if (g.coverage.at(x, y, 0) == 0.0f) continue;
       const vec3 p = g.position.rgb(x, y);
       if (std::abs(p.y) > 1e-4f) continue;
-      // The occluder (x 0.3..0.5, |z| < 0.1 at height 0.5) shadows x 0.6..1.0, |z| < 0.2; inside it:
+      // The occluder (x 0.3..0.5, |z| < 0.1 at height 0.5) shadows x 0.6..1.0, |z| < 0.2; inside
+      // it:
       if (p.x > 0.68f && p.x < 0.92f && std::abs(p.z) < 0.12f) {
         EXPECT_EQ(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
         ++shadowed;
@@ -115,14 +119,18 @@ TEST(LightKinds, PointLightCubeShadowsTheFloorBehindAnOccluder) {
 Scene sun_plane(float tilt, bool occluder) {
   Scene s;
   const uint32_t m = lambert_material(s);
-  const vec3 n(std::sin(tilt), std::cos(tilt), 0.0f), u(std::cos(tilt), -std::sin(tilt), 0.0f), w(0, 0, 1);
-  test::add_quad(s, -2.0f * u - 2.0f * w, 2.0f * u - 2.0f * w, 2.0f * u + 2.0f * w, -2.0f * u + 2.0f * w, n, m);
-  if (occluder) test::add_quad(s, {-0.1f, 1.0f, -0.1f}, {0.1f, 1.0f, -0.1f}, {0.1f, 1.0f, 0.1f}, {-0.1f, 1.0f, 0.1f}, {0, 1, 0}, m);
+  const vec3 n(std::sin(tilt), std::cos(tilt), 0.0f), u(std::cos(tilt), -std::sin(tilt), 0.0f),
+      w(0, 0, 1);
+  test::add_quad(s, -2.0f * u - 2.0f * w, 2.0f * u - 2.0f * w, 2.0f * u + 2.0f * w,
+                 -2.0f * u + 2.0f * w, n, m);
+  if (occluder)
+    test::add_quad(s, {-0.1f, 1.0f, -0.1f}, {0.1f, 1.0f, -0.1f}, {0.1f, 1.0f, 0.1f},
+                   {-0.1f, 1.0f, 0.1f}, {0, 1, 0}, m);
   Light l;
   l.kind = LightKind::Directional;
   l.direction = vec3(0.0f, -1.0f, 0.0f);
   l.color = vec3(0.9f, 1.0f, 0.8f);
-  l.intensity = 2.0f;  // lux
+  l.intensity = 2.0f;         // lux
   l.position = vec3(100.0f);  // a sun's position means nothing
   s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
@@ -144,12 +152,14 @@ TEST(LightKinds, SunOnATiltedPlaneIsLuxTimesCosineInImageDirect) {
     ASSERT_FALSE(maps[0].depth.empty());
     const GBuffer g = render_gbuffer(s, st);
     const Image img = shade_direct(s, g, maps, st);
-    const vec3 expected = kAlbedo / kPi * s.lights[0].color * s.lights[0].intensity * std::cos(tilt);
+    const vec3 expected =
+        kAlbedo / kPi * s.lights[0].color * s.lights[0].intensity * std::cos(tilt);
     int checked = 0;
     for (int y = 0; y < st.height; ++y)
       for (int x = 0; x < st.width; ++x) {
         if (g.coverage.at(x, y, 0) == 0.0f) continue;
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(x, y, c), expected[c], 1e-5f * expected[c]) << x << "," << y;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(img.at(x, y, c), expected[c], 1e-5f * expected[c]) << x << "," << y;
         ++checked;
       }
     EXPECT_GT(checked, 1000) << tilt;
@@ -168,7 +178,8 @@ TEST(LightKinds, SunMapCoversTheVolumeAndCastsAParallelShadow) {
   const auto maps = render_shadow_maps(s, st);
   // Every corner of the volume lands inside the map (NDC within [-1, 1] on all axes).
   for (int c = 0; c < 8; ++c) {
-    const vec3 corner = s.volume.to_world(vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1)));
+    const vec3 corner =
+        s.volume.to_world(vec3(float(c & 1), float((c >> 1) & 1), float((c >> 2) & 1)));
     const vec4 clip = maps[0].view_proj * vec4(corner, 1.0f);
     EXPECT_FLOAT_EQ(clip.w, 1.0f);
     for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(clip[a]), 1.0f + 1e-5f) << c << " " << a;
@@ -185,7 +196,8 @@ TEST(LightKinds, SunMapCoversTheVolumeAndCastsAParallelShadow) {
         EXPECT_EQ(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
         ++shadowed;
       }
-      if (std::abs(p.x - 0.5f) > 0.2f || std::abs(p.z) > 0.2f) EXPECT_GT(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
+      if (std::abs(p.x - 0.5f) > 0.2f || std::abs(p.z) > 0.2f)
+        EXPECT_GT(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
     }
   EXPECT_GT(shadowed, 0);
 }
