@@ -14,6 +14,7 @@
 #include "io/atomic_file.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
+#include "scene_warnings.h"
 
 namespace vct::app {
 
@@ -30,7 +31,7 @@ struct BenchFlags {
 void run(const BenchFlags& f) {
   const Settings settings = resolve_settings(f.common);
   check_memory_budget(settings);
-  const Scene scene = load_scene(f.scene, f.common.scene_load);
+  const Scene scene = load_scene_and_warn(f.scene, f.common.scene_load);
   BenchOptions o = f.bench;
   o.gl = !f.no_gl;
   o.pt = !f.no_pt;

@@ -89,8 +89,10 @@ json summary(const Scene& s) {
   }
   const Camera& c = s.camera;
   j["camera"] = {{"from_file", c.from_file}, {"position", vec_json(c.position)}, {"forward", vec_json(c.forward)},
-                 {"up", vec_json(c.up)},     {"yfov", c.yfov},                  {"znear", c.znear},
-                 {"zfar", c.zfar}};
+                 {"up", vec_json(c.up)},     {"znear", c.znear},                {"zfar", c.zfar},
+                 {"type", c.orthographic ? "orthographic" : "perspective"}};
+  if (c.orthographic) j["camera"]["ymag"] = c.ymag;
+  else j["camera"]["yfov"] = c.yfov;
   j["lights"] = json::array();
   for (const Light& l : s.lights) {
     json lj = {{"name", l.name},
@@ -195,8 +197,10 @@ void print_text(const Scene& s) {
                wrap_name(t.wrap_t), t.mag_filter == Filter::Nearest ? "nearest" : "linear");
   }
   const Camera& c = s.camera;
-  fmt::print("camera ({}): position {} forward {} up {} yfov {:.4g} deg near {:.4g} far {:.4g}\n",
-             c.from_file ? "from file" : "default framing", v3(c.position), v3(c.forward), v3(c.up), deg(c.yfov), c.znear,
+  const std::string lens = c.orthographic ? fmt::format("orthographic ymag {:.4g}", c.ymag)
+                                         : fmt::format("yfov {:.4g} deg", deg(c.yfov));
+  fmt::print("camera ({}): position {} forward {} up {} {} near {:.4g} far {:.4g}\n",
+             c.from_file ? "from file" : "default framing", v3(c.position), v3(c.forward), v3(c.up), lens, c.znear,
              c.zfar);
   fmt::print("lights: {}\n", s.lights.size());
   for (const Light& l : s.lights) fmt::print("  {}\n", light_line(l));

@@ -18,6 +18,7 @@
 #include "io/run_dir.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
+#include "scene_warnings.h"
 #include "stages/dumps.h"
 #include "stages/explain.h"
 #include "stages/pipeline.h"
@@ -161,6 +162,7 @@ nlohmann::json scene_summary(const Scene& scene) {
           {"materials", scene.materials.size()},
           {"lights", scene.lights.size()},
           {"emitters", scene.emitters.size()},
+          {"warnings", scene.stats.warnings},
           {"volume", {{"origin", {scene.volume.origin.x, scene.volume.origin.y, scene.volume.origin.z}},
                       {"size", scene.volume.size}}}};
 }
@@ -195,7 +197,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
                                         "x" + std::to_string(settings.vct.height) + " image");
     }
   }
-  const Scene scene = load_scene(scene_path, common.scene_load);
+  const Scene scene = load_scene_and_warn(scene_path, common.scene_load);
   if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
   // Locked before rendering, so a second process writing the same --out is refused at once.
   RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);

@@ -23,6 +23,7 @@
 #include "stages/explain.h"
 #include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
+#include "scene_warnings.h"
 #include "validate_run.h"
 #include "verdict_summary.h"
 
@@ -131,7 +132,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
 int run(const ValidateOptions& o) {
   PhaseTimes phases;
   const Settings s = resolve(o.common);
-  const Scene scene = phases.time("load scene", [&] { return load_scene(o.scene, o.common.scene_load); });
+  const Scene scene = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load); });
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets, GPU-vs-CPU comparison, bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 6 + (o.no_report ? 0 : 1));
@@ -142,8 +143,10 @@ int run(const ValidateOptions& o) {
   }
   RunDir run(out, RunRole::Run);  // locked; INCOMPLETE until finish()
   run.json()["command"] = "validate";
-  run.json()["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()},
-                         {"lights", scene.lights.size()}};
+  run.json()["scene"] = {{"source", scene.source},
+                         {"triangles", scene.triangle_count()},
+                         {"lights", scene.lights.size()},
+                         {"warnings", scene.stats.warnings}};
   run.json()["settings"] = s;
   run.json()["environment"] = environment_info();
   // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).

@@ -10,6 +10,7 @@
 #include "stages/stage_registry.h"
 #include "core/error.h"
 #include "scene/gltf_loader.h"
+#include "scene_warnings.h"
 
 namespace vct::app {
 
@@ -92,7 +93,7 @@ IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string
                                     const std::string& config,
                                     const SceneLoadOptions& scene_load) {
   IsolatedInputs in;
-  in.scene = load_scene(scene_arg == kBuiltinSceneName ? std::string() : scene_arg, scene_load);
+  in.scene = load_scene_and_warn(scene_arg == kBuiltinSceneName ? std::string() : scene_arg, scene_load);
   in.settings = settings_of_test_set(test, config);
   in.frame = cmp::frame_from_stage_set(test, in.scene, in.settings);
   return in;

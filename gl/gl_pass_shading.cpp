@@ -28,9 +28,16 @@ GLuint framebuffer(const std::vector<GLuint>& colour, GLuint depth, bool clear =
   return fbo;
 }
 
+// gl/shaders/camera.glsl's uniforms.
+void set_camera_uniforms(const Camera& c, const Program& p) {
+  p.set("u_camera_position", c.position);
+  p.set("u_camera_forward", glm::normalize(c.forward));
+  p.set("u_camera_orthographic", c.orthographic ? 1 : 0);
+}
+
 void bind_gbuffer(const GlFrame& f, const Program& p) {
   for (GLuint i = 0; i < 6; ++i) glBindTextureUnit(12 + i, f.gbuffer[i]);
-  p.set("u_camera_position", f.scene.camera.position);
+  set_camera_uniforms(f.scene.camera, p);
   p.set("u_volume_origin", f.scene.volume.origin);
   p.set("u_volume_size", f.scene.volume.size);
 }
@@ -95,7 +102,7 @@ void particle_pass(GlFrame& f) {
   prog.use();
   const mat4 view = f.scene.camera.view();
   prog.set("u_view_proj", f.scene.camera.projection(float(f.s.width) / float(f.s.height)) * view);
-  prog.set("u_camera_position", f.scene.camera.position);
+  set_camera_uniforms(f.scene.camera, prog);
   set_setting_uniforms(prog, f.s);
   glBindVertexArray(f.empty_vao);
   for (size_t e = 0; e < f.scene.emitters.size(); ++e) {

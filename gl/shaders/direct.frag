@@ -29,7 +29,7 @@ void main() {
   o_soft_shadow = vec4(1.0f);  // as the CPU: 1 where nothing is covered, else the mean over lights
   if (!g.covered) return;
   float vis_sum = 0.0f;
-  vec3 v = normalize(u_camera_position - g.position);
+  vec3 v = to_eye(g.position);
   vec3 sum = vec3(0.0f);
   for (int i = 0; i < u_light_count; ++i) {
     vec3 l = light_vector(i, g.position);

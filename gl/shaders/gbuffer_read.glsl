@@ -5,7 +5,7 @@ layout(binding = 14) uniform sampler2D u_g_albedo;
 layout(binding = 15) uniform sampler2D u_g_material;
 layout(binding = 16) uniform sampler2D u_g_specular_color;
 layout(binding = 17) uniform sampler2D u_g_emission;
-uniform vec3 u_camera_position;
+#include "camera.glsl"
 uniform vec3 u_volume_origin;
 uniform float u_volume_size;
 

@@ -26,7 +26,7 @@ void main() {
   o_final = vec4(0.0f);
   if (!g.covered) return;
   vec3 origin = to_volume(g.position);
-  vec3 v = normalize(u_camera_position - g.position);
+  vec3 v = to_eye(g.position);
   vec3 diffuse = vec3(0.0f);
   if (u_diffuse_cones != 0) {
     // The hash takes the pixel's row counted from the top, as the CPU's images do.

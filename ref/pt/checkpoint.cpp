@@ -114,6 +114,7 @@ uint64_t hash_scene(const Scene& s) {
   h.pod(c.yfov);
   h.pod(c.znear);
   h.pod(c.zfar);
+  if (c.orthographic) h.pod(c.ymag);  // perspective hashes stay as before, so their checkpoints resume
   return h.value();
 }
 

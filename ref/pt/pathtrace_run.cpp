@@ -92,6 +92,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
   j["settings"] = settings;
   j["environment"] = environment_info();
   j["scene"] = scene.source;
+  j["scene_warnings"] = scene.stats.warnings;
   const double rays = double(result.rays.total());
   j["pathtrace"] = {{"spp", result.spp},
                     {"requested_spp", ps.spp},

@@ -59,6 +59,53 @@ View view_of(const Context& ctx, const tinygltf::Accessor& a) {
   return v;
 }
 
+uint32_t unsigned_at(const unsigned char* p, int size) {
+  if (size == 1) return *p;
+  if (size == 2) {
+    uint16_t s;
+    std::memcpy(&s, p, 2);
+    return s;
+  }
+  uint32_t x;
+  std::memcpy(&x, p, 4);
+  return x;
+}
+
+const unsigned char* view_bytes(const Context& ctx, int view, int offset) {
+  const auto& bv = ctx.model.bufferViews[static_cast<size_t>(view)];
+  return ctx.model.buffers[static_cast<size_t>(bv.buffer)].data.data() + bv.byteOffset + size_t(offset);
+}
+
+}  // namespace
+
+std::vector<uint32_t> read_sparse_indices(const Context& ctx, const tinygltf::Accessor& a) {
+  const auto& idx = a.sparse.indices;
+  const int size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(idx.componentType));
+  const unsigned char* p = view_bytes(ctx, idx.bufferView, idx.byteOffset);
+  std::vector<uint32_t> out(size_t(a.sparse.count));
+  for (size_t k = 0; k < out.size(); ++k) out[k] = unsigned_at(p + k * size_t(size), size);
+  return out;
+}
+
+namespace {
+
+// glTF 2.0 §3.6.2.3: element indices[k] of the dense (or all-zero) data is replaced by values[k];
+// the values are tightly packed elements of the accessor's own type. Ranges and the index order were
+// checked by validate_model.
+template <typename T, typename Convert>
+void apply_sparse(const Context& ctx, const tinygltf::Accessor& a, int comps, int comp_size, std::vector<T>& out,
+                  Convert convert) {
+  if (!a.sparse.isSparse) return;
+  const std::vector<uint32_t> indices = read_sparse_indices(ctx, a);
+  const unsigned char* values = view_bytes(ctx, a.sparse.values.bufferView, a.sparse.values.byteOffset);
+  const size_t elem = size_t(comps) * size_t(comp_size);
+  for (size_t k = 0; k < indices.size(); ++k) {
+    for (int c = 0; c < comps; ++c) {
+      out[size_t(indices[k]) * size_t(comps) + size_t(c)] = convert(values + k * elem + size_t(c * comp_size), k);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<float> read_floats(const Context& ctx, int index, int components, const std::string& what) {
@@ -70,17 +117,22 @@ std::vector<float> read_floats(const Context& ctx, int index, int components, co
   }
   if (a.componentType == TINYGLTF_COMPONENT_TYPE_DOUBLE) fail(ctx, what + ": double components are not glTF 2.0");
   std::vector<float> out(a.count * size_t(components), 0.0f);
-  if (!v.base) return out;
-  for (size_t i = 0; i < a.count; ++i) {
-    for (int c = 0; c < components; ++c) {
-      const float f = component(v.base + i * v.stride + size_t(c * v.comp_size), a.componentType, a.normalized);
-      if (!std::isfinite(f)) {
-        fail(ctx, what + " (accessor " + std::to_string(index) + ") element " + std::to_string(i) +
-                      " is not a finite number (NaN or Inf)");
+  const auto finite = [&](const unsigned char* p, size_t element) {
+    const float f = component(p, a.componentType, a.normalized);
+    if (!std::isfinite(f)) {
+      fail(ctx, what + " (accessor " + std::to_string(index) + ") element " + std::to_string(element) +
+                    " is not a finite number (NaN or Inf)");
+    }
+    return f;
+  };
+  if (v.base) {
+    for (size_t i = 0; i < a.count; ++i) {
+      for (int c = 0; c < components; ++c) {
+        out[i * size_t(components) + size_t(c)] = finite(v.base + i * v.stride + size_t(c * v.comp_size), i);
       }
-      out[i * size_t(components) + size_t(c)] = f;
     }
   }
+  apply_sparse(ctx, a, components, v.comp_size, out, finite);
   return out;
 }
 
@@ -92,21 +144,10 @@ std::vector<uint32_t> read_indices(const Context& ctx, int index, const std::str
                        a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
   if (v.comps != 1 || !ok_type) fail(ctx, what + " (accessor " + std::to_string(index) + ") must be unsigned integer SCALAR");
   std::vector<uint32_t> out(a.count, 0u);
-  if (!v.base) return out;
-  for (size_t i = 0; i < a.count; ++i) {
-    const unsigned char* p = v.base + i * v.stride;
-    uint32_t x = 0;
-    if (v.comp_size == 1) {
-      x = *p;
-    } else if (v.comp_size == 2) {
-      uint16_t s;
-      std::memcpy(&s, p, 2);
-      x = s;
-    } else {
-      std::memcpy(&x, p, 4);
-    }
-    out[i] = x;
+  if (v.base) {
+    for (size_t i = 0; i < a.count; ++i) out[i] = unsigned_at(v.base + i * v.stride, v.comp_size);
   }
+  apply_sparse(ctx, a, 1, v.comp_size, out, [&](const unsigned char* p, size_t) { return unsigned_at(p, v.comp_size); });
   return out;
 }
 

@@ -1,6 +1,9 @@
 #include "scene/gltf_file_access.h"
 
+#include <algorithm>
 #include <cctype>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 
@@ -120,12 +123,28 @@ std::string FileAccess::unjoin_absolute(const std::string& joined) const {
 }
 
 void FileAccess::check_uri(const std::string& file, const std::string& uri, const std::string& where) const {
-  if (allow_outside_) return;
-  const std::string why = uri_refusal(uri, dir_);
-  if (why.empty()) return;
-  throw InputError(file, where + " uri '" + printable(uri) + "' is refused: " + why + " (" + printable(dir_.string()) +
-                             "); scenes read only files inside their own folder unless --allow-outside-scene-dir "
-                             "is given");
+  const std::string why = allow_outside_ ? "" : uri_refusal(uri, dir_);
+  if (!why.empty()) {
+    throw InputError(file, where + " uri '" + printable(uri) + "' is refused: " + why + " (" +
+                               printable(dir_.string()) +
+                               "); scenes read only files inside their own folder unless --allow-outside-scene-dir "
+                               "is given");
+  }
+  if (is_data_uri(uri) || starts_with_nocase(uri, "file:")) return;
+  // tinygltf's own message is a bare "File not found"; name the paths it would have read: the
+  // scene's folder, then the working directory (its FindFile order).
+  const fs::path path(decode_uri_as_tinygltf(uri));
+  std::vector<std::string> searched;
+  for (const fs::path& folder : {fs::path(base_.empty() ? "." : base_), fs::path(".")}) {
+    const fs::path candidate = path.is_absolute() ? path : fs::absolute(folder / path).lexically_normal();
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return;
+    const std::string shown = printable(candidate.string());
+    if (std::find(searched.begin(), searched.end(), shown) == searched.end()) searched.push_back(shown);
+  }
+  std::string list = searched[0];
+  for (size_t i = 1; i < searched.size(); ++i) list += ", then " + searched[i];
+  throw InputError(file, where + " uri '" + printable(uri) + "': file not found (searched " + list + ")");
 }
 
 std::string FileAccess::refusal(const std::string& path) const {

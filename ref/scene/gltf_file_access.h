@@ -20,8 +20,9 @@ class FileAccess {
   /// `allow_outside`: --allow-outside-scene-dir, every check passes.
   FileAccess(const std::string& scene_dir, bool allow_outside);
 
-  /// Throws InputError(file, ...) naming `uri` when the policy refuses it; `where` is its JSON
-  /// path ("images[2]"). Data URIs always pass: they read no file.
+  /// Throws InputError(file, ...) naming `uri` when the policy refuses it, or when the file it names
+  /// does not exist (the message gives the path searched); `where` is its JSON path ("images[2]").
+  /// Data URIs always pass: they read no file.
   void check_uri(const std::string& file, const std::string& uri, const std::string& where) const;
 
   /// Why the file at `path` (as tinygltf built it) may not be opened; "" when it may.

@@ -30,11 +30,24 @@ const std::vector<std::string>& supported_extensions();
 void validate_model(const Context& ctx);
 
 /// Reads accessor `index` as floats, `components` per element (VEC2 = 2 ...); normalized
-/// integer types are converted as glTF defines. Throws on NaN/Inf (`what` names the attribute).
+/// integer types are converted as glTF defines, sparse substitutions applied. Throws on NaN/Inf
+/// (`what` names the attribute).
 std::vector<float> read_floats(const Context& ctx, int index, int components, const std::string& what);
 
-/// Reads an index accessor (UNSIGNED_BYTE/SHORT/INT).
+/// The substituted element indices of a sparse accessor (glTF 2.0 §3.6.2.3), unchecked.
+std::vector<uint32_t> read_sparse_indices(const Context& ctx, const tinygltf::Accessor& a);
+
+/// Reads an index accessor (UNSIGNED_BYTE/SHORT/INT), sparse substitutions applied.
 std::vector<uint32_t> read_indices(const Context& ctx, int index, const std::string& what);
+
+/// The default morph weights of `node` showing `mesh`: the node's, else the mesh's (gltf_morph.cpp).
+std::vector<float> morph_weights(const Context& ctx, int node, int mesh);
+
+/// Adds Σ weights[t] · target[t][attribute] to `values` (`components` floats per vertex, the
+/// target's data read as the attribute's own type: POSITION/NORMAL VEC3, TANGENT VEC3 per the spec).
+void add_morph_displacements(const Context& ctx, const tinygltf::Primitive& prim, const std::vector<float>& weights,
+                             const std::string& attribute, int components, std::vector<float>& values,
+                             const std::string& owner);
 
 /// Materials and textures, converted once. Adds warnings for unsupported features.
 void convert_textures(const Context& ctx, Scene& scene);

@@ -157,6 +157,16 @@ std::string check_glb(const std::string& b, const std::string& name) {
   return b.substr(20, size_t(json_len));
 }
 
+// A scene without any light renders black in every engine; say so rather than exit 0 in silence.
+void warn_if_unlit(Scene& scene) {
+  const bool emissive = std::any_of(scene.triangle_material.begin(), scene.triangle_material.end(),
+                                    [&](uint32_t m) { return scene.materials[m].is_emissive(); });
+  if (scene.lights.empty() && scene.emitters.empty() && !emissive) {
+    scene.stats.warnings.push_back("the scene has no light (no punctual light, no emissive surface, no particles): "
+                                   "every image will be black");
+  }
+}
+
 Scene convert(const tinygltf::Model& model, const std::string& name, std::vector<std::string> warnings) {
   const gltf::Context ctx{model, name};
   gltf::validate_model(ctx);
@@ -168,6 +178,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
   gltf::convert_materials(ctx, scene);
   gltf::convert_nodes(ctx, scene);
   if (scene.triangles.empty()) gltf::fail(ctx, "the scene contains no triangles to render");
+  warn_if_unlit(scene);
   if (scene.materials.empty()) {
     Material d;
     d.name = "default";

@@ -62,11 +62,12 @@ bool degenerate(const vec3& a, const vec3& b, const vec3& c) {
 }
 
 std::vector<vec2> read_uv(const Context& ctx, const tinygltf::Primitive& p, const char* name, size_t count,
-                          const std::string& owner) {
+                          const std::vector<float>& weights, const std::string& owner) {
   auto it = p.attributes.find(name);
   if (it == p.attributes.end()) return {};
-  const std::vector<float> f = read_floats(ctx, it->second, 2, owner + " " + name);
+  std::vector<float> f = read_floats(ctx, it->second, 2, owner + " " + name);
   if (f.size() != count * 2) fail(ctx, owner + " " + name + " count differs from POSITION count");
+  add_morph_displacements(ctx, p, weights, name, 2, f, owner);
   std::vector<vec2> out(count);
   for (size_t i = 0; i < count; ++i) out[i] = vec2(f[2 * i], f[2 * i + 1]);
   return out;
@@ -143,7 +144,8 @@ class Flattener {
     if (n.mesh >= 0) {
       if (n.skin >= 0) warn("node " + std::to_string(index) + ": skinning is ignored (bind pose is rendered)");
       const auto& mesh = ctx_.model.meshes[size_t(n.mesh)];
-      for (size_t p = 0; p < mesh.primitives.size(); ++p) add_primitive(n.mesh, int(p), world);
+      const std::vector<float> weights = morph_weights(ctx_, index, n.mesh);
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) add_primitive(n.mesh, int(p), world, weights);
     }
     if (n.camera >= 0 && !camera_found_) {
       scene_.camera = make_camera(ctx_, n.camera, world);
@@ -159,13 +161,28 @@ class Flattener {
 
   void warn(const std::string& w) { scene_.stats.warnings.push_back(w); }
 
-  void add_primitive(int mesh_index, int prim_index, const mat4& world) {
+  // A morph target's TANGENT is a VEC3 displacement of the VEC4 tangent's xyz (glTF 2.0 §3.7.2.2):
+  // handedness (w) is not morphed.
+  void add_tangent_displacements(const tinygltf::Primitive& prim, const std::vector<float>& weights,
+                                 std::vector<float>& tf, const std::string& owner) {
+    std::vector<float> xyz(tf.size() / 4 * 3);
+    for (size_t i = 0; i < xyz.size() / 3; ++i)
+      for (int c = 0; c < 3; ++c) xyz[3 * i + size_t(c)] = tf[4 * i + size_t(c)];
+    add_morph_displacements(ctx_, prim, weights, "TANGENT", 3, xyz, owner);
+    for (size_t i = 0; i < xyz.size() / 3; ++i)
+      for (int c = 0; c < 3; ++c) tf[4 * i + size_t(c)] = xyz[3 * i + size_t(c)];
+  }
+
+  void add_primitive(int mesh_index, int prim_index, const mat4& world, const std::vector<float>& weights) {
     const auto& prim = ctx_.model.meshes[size_t(mesh_index)].primitives[size_t(prim_index)];
     const std::string owner = "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(prim_index);
     auto pos_it = prim.attributes.find("POSITION");
     if (pos_it == prim.attributes.end()) fail(ctx_, owner + " has no POSITION attribute");
-    if (!prim.targets.empty()) warn(owner + ": morph targets are ignored");
-    const std::vector<float> pf = read_floats(ctx_, pos_it->second, 3, owner + " POSITION");
+    if (prim.attributes.count("COLOR_0")) {
+      warn(owner + ": COLOR_0 (vertex colours) is not rendered; the base colour is not multiplied by it");
+    }
+    std::vector<float> pf = read_floats(ctx_, pos_it->second, 3, owner + " POSITION");
+    add_morph_displacements(ctx_, prim, weights, "POSITION", 3, pf, owner);
     const size_t count = pf.size() / 3;
 
     std::vector<uint32_t> idx;
@@ -197,8 +214,9 @@ class Flattener {
     for (size_t i = 0; i < count; ++i) m.pos[i] = vec3(world * vec4(pf[3 * i], pf[3 * i + 1], pf[3 * i + 2], 1.0f));
     bool have_normals = false;
     if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-      const std::vector<float> nf = read_floats(ctx_, it->second, 3, owner + " NORMAL");
+      std::vector<float> nf = read_floats(ctx_, it->second, 3, owner + " NORMAL");
       if (nf.size() != pf.size()) fail(ctx_, owner + " NORMAL count differs from POSITION count");
+      add_morph_displacements(ctx_, prim, weights, "NORMAL", 3, nf, owner);
       m.nrm.resize(count);
       have_normals = true;
       for (size_t i = 0; i < count && have_normals; ++i) {
@@ -213,8 +231,9 @@ class Flattener {
       }
     }
     if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end() && have_normals) {
-      const std::vector<float> tf = read_floats(ctx_, it->second, 4, owner + " TANGENT");
+      std::vector<float> tf = read_floats(ctx_, it->second, 4, owner + " TANGENT");
       if (tf.size() != count * 4) fail(ctx_, owner + " TANGENT count differs from POSITION count");
+      add_tangent_displacements(prim, weights, tf, owner);
       m.tan.resize(count);
       for (size_t i = 0; i < count; ++i) {
         const vec3 t = linear * vec3(tf[4 * i], tf[4 * i + 1], tf[4 * i + 2]);
@@ -222,8 +241,8 @@ class Flattener {
         m.tan[i] = orthogonalize_tangent(m.nrm[i], vec4(t, w));
       }
     }
-    m.uv0 = read_uv(ctx_, prim, "TEXCOORD_0", count, owner);
-    m.uv1 = read_uv(ctx_, prim, "TEXCOORD_1", count, owner);
+    m.uv0 = read_uv(ctx_, prim, "TEXCOORD_0", count, weights, owner);
+    m.uv1 = read_uv(ctx_, prim, "TEXCOORD_1", count, weights, owner);
     if (m.uv1.empty() && uses_uv1(prim)) warn(owner + ": its material samples TEXCOORD_1, which it lacks (reads (0, 0))");
     if (det < 0.0f) {
       for (uvec3& t : m.tris) std::swap(t.y, t.z);

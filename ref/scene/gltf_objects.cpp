@@ -52,18 +52,33 @@ struct ExtrasReader {
 Camera make_camera(const Context& ctx, int camera, const mat4& world) {
   const auto& c = ctx.model.cameras[static_cast<size_t>(camera)];
   const std::string owner = "camera " + std::to_string(camera);
-  if (c.type != "perspective") fail(ctx, owner + " is " + c.type + "; only perspective cameras are supported");
-  const auto& p = c.perspective;
-  if (!(p.yfov > 0.0 && p.yfov < 3.14159265358979) || !(p.znear > 0.0) || !std::isfinite(p.zfar) || (p.zfar != 0.0 && p.zfar <= p.znear)) {
-    fail(ctx, owner + " has an invalid yfov/znear/zfar");
-  }
   Camera out;
+  if (c.type == "orthographic") {
+    // glTF 2.0 §3.10.3: xmag/ymag are half the view's width/height; zfar is required and finite.
+    const auto& o = c.orthographic;
+    if (!(o.ymag > 0.0) || !std::isfinite(o.ymag) || !(o.xmag > 0.0) || !std::isfinite(o.xmag) ||
+        !(o.znear >= 0.0) || !std::isfinite(o.zfar) || !(o.zfar > o.znear)) {
+      fail(ctx, owner + " (orthographic) needs xmag > 0, ymag > 0 (a mirrored view is not supported) and 0 <= znear < zfar, all finite");
+    }
+    out.orthographic = true;
+    out.ymag = float(o.ymag);
+    out.znear = float(o.znear);
+    out.zfar = float(o.zfar);
+  } else if (c.type == "perspective") {
+    const auto& p = c.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < 3.14159265358979) || !(p.znear > 0.0) || !std::isfinite(p.zfar) ||
+        (p.zfar != 0.0 && p.zfar <= p.znear)) {
+      fail(ctx, owner + " has an invalid yfov/znear/zfar");
+    }
+    out.yfov = float(p.yfov);
+    out.znear = float(p.znear);
+    out.zfar = float(p.zfar);  // 0 (infinite) is replaced by the loader once bounds are known
+  } else {
+    fail(ctx, owner + " has type '" + c.type + "'; glTF defines perspective and orthographic");
+  }
   out.position = transform_point(world, vec3(0.0f));
   out.forward = transform_dir(world, vec3(0.0f, 0.0f, -1.0f));
   out.up = transform_dir(world, vec3(0.0f, 1.0f, 0.0f));
-  out.yfov = float(p.yfov);
-  out.znear = float(p.znear);
-  out.zfar = float(p.zfar);  // 0 (infinite) is replaced by the loader once bounds are known
   out.from_file = true;
   return out;
 }

@@ -38,6 +38,40 @@ void check_buffer_views(const Context& ctx) {
   }
 }
 
+// glTF 2.0 §3.6.2.3: `count` substitutions, indices (unsigned, strictly increasing, each < the
+// accessor's count) and values tightly packed in their own buffer views. The index order is checked
+// here too, so read_floats can apply the substitutions without re-checking.
+void check_sparse(const Context& ctx, const tinygltf::Accessor& a, const std::string& owner, uint64_t elem) {
+  const auto& m = ctx.model;
+  const auto& sp = a.sparse;
+  const std::string what = owner + " sparse";
+  if (sp.count <= 0 || uint64_t(sp.count) > a.count) {
+    fail(ctx, what + " count " + std::to_string(sp.count) + " must be 1.." + std::to_string(a.count));
+  }
+  const int index_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(sp.indices.componentType));
+  const bool index_type_ok = sp.indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             sp.indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+                             sp.indices.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  if (!index_type_ok) fail(ctx, what + " indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  const auto fits = [&](int view, int offset, uint64_t bytes, const char* part) {
+    check_ref(ctx, view, m.bufferViews.size(), what + " " + part, "bufferView", false);
+    const uint64_t len = m.bufferViews[static_cast<size_t>(view)].byteLength;
+    if (offset < 0 || uint64_t(offset) > len || bytes > len - uint64_t(offset)) {
+      fail(ctx, what + " " + part + " need " + std::to_string(bytes) + " bytes at offset " + std::to_string(offset) +
+                    " of bufferView " + std::to_string(view) + ", which has " + std::to_string(len));
+    }
+  };
+  fits(sp.indices.bufferView, sp.indices.byteOffset, uint64_t(sp.count) * uint64_t(index_size), "indices");
+  fits(sp.values.bufferView, sp.values.byteOffset, uint64_t(sp.count) * elem, "values");
+  const std::vector<uint32_t> indices = read_sparse_indices(ctx, a);
+  for (size_t k = 0; k < indices.size(); ++k) {
+    if (indices[k] >= a.count || (k > 0 && indices[k] <= indices[k - 1])) {
+      fail(ctx, what + " index " + std::to_string(k) + " (" + std::to_string(indices[k]) +
+                    ") is out of range or not strictly increasing");
+    }
+  }
+}
+
 void check_accessors(const Context& ctx) {
   const auto& m = ctx.model;
   for (size_t i = 0; i < m.accessors.size(); ++i) {
@@ -46,8 +80,8 @@ void check_accessors(const Context& ctx) {
     const int comp_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
     const int comps = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
     if (comp_size <= 0 || comps <= 0) fail(ctx, owner + " has an invalid componentType or type");
-    if (a.sparse.isSparse) fail(ctx, owner + " is sparse; sparse accessors are not supported");
     if (a.count == 0) fail(ctx, owner + " has count 0");
+    if (a.sparse.isSparse) check_sparse(ctx, a, owner, uint64_t(comp_size) * uint64_t(comps));
     if (a.bufferView == -1) {  // all zeros, as glTF defines; but no allocation bomb
       if (a.count > (1u << 24)) fail(ctx, owner + " has no bufferView and an implausible count " + std::to_string(a.count));
       continue;

@@ -24,7 +24,14 @@ const char* light_kind_name(LightKind kind) {
 
 mat4 Camera::view() const { return glm::lookAt(position, position + forward, up); }
 
-mat4 Camera::projection(float aspect) const { return glm::perspective(yfov, aspect, znear, zfar); }
+mat4 Camera::projection(float aspect) const {
+  if (orthographic) return glm::ortho(-ymag * aspect, ymag * aspect, -ymag, ymag, znear, zfar);
+  return glm::perspective(yfov, aspect, znear, zfar);
+}
+
+vec3 Camera::to_eye(const vec3& p) const {
+  return orthographic ? -glm::normalize(forward) : glm::normalize(position - p);
+}
 
 VoxelVolume fit_volume(const Bounds3& bounds) {
   VoxelVolume v;

@@ -86,16 +86,23 @@ struct Light {
 /// "spot", "point", "directional" (the names glTF's KHR_lights_punctual uses).
 const char* light_kind_name(LightKind kind);
 
+/// A glTF camera. Perspective (yfov) or orthographic (ymag: half the view's height in metres; the
+/// width follows the image's aspect ratio, docs/scenes.md "Cameras").
 struct Camera {
   vec3 position{0.0f};
   vec3 forward{0.0f, 0.0f, -1.0f};
   vec3 up{0.0f, 1.0f, 0.0f};
   float yfov = 0.8f;  // radians
+  bool orthographic = false;
+  float ymag = 1.0f;  // orthographic only
   float znear = 0.01f;
   float zfar = 100.0f;
   bool from_file = false;
   mat4 view() const;
   mat4 projection(float aspect) const;  // GL clip space, depth in [-1,1]
+  /// Unit vector from world point `p` towards the eye: to the camera position in perspective, the
+  /// reverse of the view direction in an orthographic view (every view ray is parallel).
+  vec3 to_eye(const vec3& p) const;
 };
 
 /// Fire emitter from a node's extras.vct_particles (schema: docs/scenes.md).

@@ -26,7 +26,7 @@ void composite_frame(const Scene& scene, const GBuffer& g, FrameImages& im) {
       if (g.coverage.at(x, y, 0) > 0.0f) {
         const vec3 p = g.position.rgb(x, y);
         const vec3 n = g.normal.rgb(x, y);
-        const vec3 v = glm::normalize(scene.camera.position - p);
+        const vec3 v = scene.camera.to_eye(p);
         const sh::SurfacePbr s = sh::surface_pbr(g.albedo.rgb(x, y), g.material.at(x, y, 0), g.material.at(x, y, 1),
                                                  g.material.at(x, y, 2), g.specular_color.rgb(x, y));
         // n.v: the cosine of the specular cone's axis too (reflect keeps the angle to n), and

@@ -48,7 +48,6 @@ Image shade_direct(const Scene& scene, const GBuffer& g, const std::vector<Shado
                    const VctSettings& settings) {
   Image out(g.position.width, g.position.height, 3);
   out.channel_names = {"R", "G", "B"};
-  const vec3 eye = scene.camera.position;
   parallel_rows(out.height, [&](int y) {
     for (int x = 0; x < out.width; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
@@ -60,7 +59,7 @@ Image shade_direct(const Scene& scene, const GBuffer& g, const std::vector<Shado
       m.specular_factor = g.material.at(x, y, 2);
       m.specular_color = g.specular_color.rgb(x, y);
       m.shading_normal = g.normal.rgb(x, y);
-      const vec3 v = glm::normalize(eye - p);
+      const vec3 v = scene.camera.to_eye(p);
       out.set_rgb(x, y, direct_radiance(scene, maps, settings, p, m.shading_normal, v, m));
     }
   });

@@ -4,7 +4,7 @@
 
 namespace vct {
 
-vec3 view_vector(const Scene& scene, const vec3& p) { return glm::normalize(scene.camera.position - p); }
+vec3 view_vector(const Scene& scene, const vec3& p) { return scene.camera.to_eye(p); }
 
 IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s) {
   const int w = g.coverage.width, h = g.coverage.height;

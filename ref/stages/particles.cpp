@@ -47,7 +47,7 @@ ScreenParticle project(const sh::ParticleState& p, const Camera& cam, const mat4
   sp.center = vec3(p.position_radius);
   sp.radius = p.position_radius.w;
   sp.color = vec3(p.color_age);
-  sp.plane_normal = glm::normalize(sp.center - cam.position);
+  sp.plane_normal = -cam.to_eye(sp.center);
   sp.x0 = 0.0f, sp.x1 = float(w), sp.y0 = 0.0f, sp.y1 = float(h);
   float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
   for (int c = 0; c < 8; ++c) {
@@ -79,16 +79,20 @@ Image render_particles(const Scene& scene, const GBuffer& g, const VctSettings& 
     for (int x = 0; x < w; ++x) {
       const float px = float(x) + 0.5f, py = float(y) + 0.5f;
       // Pixel-centre ray through the far plane point (GL NDC: y up, so row 0 = +1).
-      const vec4 far_h = inv_view_proj * vec4(2.0f * px / float(w) - 1.0f, 1.0f - 2.0f * py / float(h), 1.0f, 1.0f);
-      const vec3 dir = glm::normalize(vec3(far_h) / far_h.w - cam.position);
+      const vec2 ndc(2.0f * px / float(w) - 1.0f, 1.0f - 2.0f * py / float(h));
+      const vec4 far_h = inv_view_proj * vec4(ndc, 1.0f, 1.0f);
+      // Orthographic views start each ray on the near plane; perspective ones at the eye.
+      const vec4 near_h = inv_view_proj * vec4(ndc, -1.0f, 1.0f);
+      const vec3 origin = cam.orthographic ? vec3(near_h) / near_h.w : cam.position;
+      const vec3 dir = glm::normalize(vec3(far_h) / far_h.w - origin);
       const float surface_depth = g.coverage.at(x, y, 0) > 0.0f ? g.depth.at(x, y, 0) : 1.0f;
       vec3 sum(0.0f);
       for (const ScreenParticle& sp : screen) {
         if (px < sp.x0 || px > sp.x1 || py < sp.y0 || py > sp.y1) continue;
         const float denom = glm::dot(dir, sp.plane_normal);
         if (denom <= 1e-6f) continue;
-        const float t = glm::dot(sp.center - cam.position, sp.plane_normal) / denom;
-        const vec3 hit = cam.position + t * dir;
+        const float t = glm::dot(sp.center - origin, sp.plane_normal) / denom;
+        const vec3 hit = origin + t * dir;
         const float profile = sh::particle_profile(glm::length(hit - sp.center), sp.radius);
         if (profile <= 0.0f) continue;
         const vec4 clip = view_proj * vec4(hit, 1.0f);

@@ -46,7 +46,7 @@ Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& m
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
       const vec3 p = g.position.rgb(x, y);
       const SurfaceMaterial m = gbuffer_material(g, x, y);
-      const vec3 v = glm::normalize(scene.camera.position - p);
+      const vec3 v = scene.camera.to_eye(p);
       vec3 sum(0.0f);
       float vis_sum = 0.0f;
       for (const Light& light : scene.lights) {

@@ -143,10 +143,22 @@ def bias_headline(run_json):
                 head, E(sides[0]), "".join(rows), extra))
 
 
+def scene_warnings_line(run_json):
+    """The loader's warnings (run.json scene.warnings, docs/scenes.md): what the engines could not
+    render as the file asks. Empty when there are none; the first one in full, the count of the rest."""
+    scene = run_json.get("scene")
+    warnings = scene.get("warnings", []) if isinstance(scene, dict) else []
+    if not warnings:
+        return ""
+    more = " (+%d more in run.json scene.warnings)" % (len(warnings) - 1) if len(warnings) > 1 else ""
+    return "<div class='card small' id='glance-warnings'><b>Scene warning%s:</b> %s%s</div>" % (
+        "s" if len(warnings) > 1 else "", E(warnings[0]), E(more))
+
+
 def glance(page, verdicts):
     """verdicts: run.json["verdicts"] (or compare.json's), None when there are none."""
     j = page.run.json
     cls, sentence = verdict_sentence(verdicts)
     return ("<section id='glance'><p id='verdict-sentence' class='sentence s-%s'>%s</p>"
             "<div class='glance-grid'><div class='glance-main'>%s%s</div><div class='glance-side'>%s</div></div></section>" % (
-                cls, E(sentence), final_strip(page), bias_headline(j), focus_card(page, verdicts)))
+                cls, E(sentence), final_strip(page), bias_headline(j), focus_card(page, verdicts) + scene_warnings_line(j)))

@@ -29,6 +29,19 @@ std::string doc_file(const char* name, const std::function<void(GltfDoc&)>& edit
   return test::write_file(std::string(name) + ".gltf", d.text());
 }
 
+// Gives accessor 0 (POSITION) two sparse substitutions at element indices i0, i1 (uint16, view 3)
+// with values (0, 0, 0) and (1, 0, 0) (view 4).
+void add_sparse(GltfDoc& d, uint16_t i0, uint16_t i1) {
+  const size_t at = d.bin.size();
+  test::append<uint16_t>(d.bin, {i0, i1});
+  test::append<float>(d.bin, {0, 0, 0, 1, 0, 0});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 4}});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at + 4}, {"byteLength", 24}});
+  d.j["accessors"][0]["sparse"] = {{"count", 2},
+                                   {"indices", {{"bufferView", 3}, {"componentType", 5123}}},
+                                   {"values", {{"bufferView", 4}}}};
+}
+
 std::string glb_file(const char* name, const std::function<void(std::string&)>& edit) {
   std::string bytes = quad_doc().glb();
   edit(bytes);
@@ -60,7 +73,7 @@ const std::vector<BadCase>& bad_cases() {
        [] { return glb_file("glb_json_chunk_length", [](std::string& b) { put_u32(b, 12, 1u << 20); }); }},
       {"glb_short_header", "shorter than its 12-byte header",
        [] { return test::write_file("glb_short_header.glb", "glTF\x02"); }},
-      {"missing_buffer", "missing.bin",
+      {"missing_buffer", "buffers[0] uri 'missing.bin': file not found (searched /",
        [] {
          return doc_file("missing_buffer", [](GltfDoc& d) { d.j["buffers"][0] = {{"uri", "missing.bin"}, {"byteLength", 92}}; });
        }},
@@ -82,6 +95,26 @@ const std::vector<BadCase>& bad_cases() {
        [] { return doc_file("accessor_out_of_range", [](GltfDoc& d) { d.j["accessors"][0]["count"] = 10; }); }},
       {"index_out_of_range", "index out of range",
        [] { return doc_file("index_out_of_range", [](GltfDoc& d) { d.bin[80 + 4] = 9; }); }},
+      // Sparse accessors (glTF 2.0 §3.6.2.3): substitutions must stay inside their views and the
+      // accessor, indices strictly increasing.
+      {"sparse_index_out_of_range", "accessor 0 sparse index 0 (4) is out of range or not strictly increasing",
+       [] { return doc_file("sparse_index_out_of_range", [](GltfDoc& d) { add_sparse(d, 4, 5); }); }},
+      {"sparse_indices_not_increasing", "sparse index 1 (1) is out of range or not strictly increasing",
+       [] { return doc_file("sparse_indices_not_increasing", [](GltfDoc& d) { add_sparse(d, 1, 1); }); }},
+      {"sparse_values_out_of_view", "accessor 0 sparse values need 24 bytes at offset 8",
+       [] {
+         return doc_file("sparse_values_out_of_view", [](GltfDoc& d) {
+           add_sparse(d, 0, 1);
+           d.j["accessors"][0]["sparse"]["values"]["byteOffset"] = 8;
+         });
+       }},
+      {"sparse_count_too_large", "accessor 0 sparse count 5 must be 1..4",
+       [] {
+         return doc_file("sparse_count_too_large", [](GltfDoc& d) {
+           add_sparse(d, 0, 1);
+           d.j["accessors"][0]["sparse"]["count"] = 5;
+         });
+       }},
       {"dangling_buffer_view", "refers to bufferView 7",
        [] { return doc_file("dangling_buffer_view", [](GltfDoc& d) { d.j["accessors"][1]["bufferView"] = 7; }); }},
       {"dangling_mesh", "refers to mesh 5",

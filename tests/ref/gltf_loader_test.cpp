@@ -329,7 +329,7 @@ TEST(GltfLoader, LinePrimitivesAreSkippedWithAWarning) {
   EXPECT_EQ(s.triangle_count(), 2u);
   EXPECT_EQ(s.stats.non_triangle_primitives_skipped, 1);
   ASSERT_FALSE(s.stats.warnings.empty());
-  EXPECT_NE(s.stats.warnings.back().find("skipped"), std::string::npos);
+  EXPECT_NE(s.stats.warnings.front().find("skipped"), std::string::npos);
 }
 
 TEST(GltfLoader, TriangleStripAndFanAreTriangulated) {
@@ -374,6 +374,101 @@ TEST(GltfLoader, ExternalBufferAndImageResolveNextToTheFile) {
   d.j["buffers"][0] = {{"uri", "quad.bin"}, {"byteLength", d.bin.size()}};
   const std::string path = test::write_file("external.gltf", d.text());
   EXPECT_EQ(load_gltf_file(path).triangle_count(), 2u);
+}
+
+// glTF 2.0 §3.6.2.3: a sparse accessor is its bufferView's data (or zeros) with `count` elements
+// replaced. Here vertex 2 of the quad, (1, 1, 0), becomes (1, 1, 2), and an accessor without a
+// bufferView starts from zeros.
+TEST(GltfLoader, SparseAccessorsSubstituteTheirElements) {
+  auto d = quad_doc();
+  const size_t at = d.bin.size();
+  test::append<uint8_t>(d.bin, {2, 0, 0, 0});  // one UNSIGNED_BYTE index, padded to 4
+  test::append<float>(d.bin, {1, 1, 2});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 1}});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at + 4}, {"byteLength", 12}});
+  d.j["accessors"][0]["sparse"] = {{"count", 1},
+                                   {"indices", {{"bufferView", 3}, {"componentType", 5121}}},
+                                   {"values", {{"bufferView", 4}}}};
+  d.j["accessors"][0]["max"] = {1, 1, 2};
+  const Scene s = load(d);
+  EXPECT_FLOAT_EQ(s.bounds.hi.z, 2.0f);
+  int raised = 0;
+  for (const vec3& p : s.positions) raised += p == vec3(1, 1, 2) ? 1 : 0;
+  EXPECT_EQ(raised, 2);  // vertex 2 is in both triangles; flat normals unweld it into two copies
+
+  auto z = quad_doc();  // TEXCOORD_0 without a bufferView: zeros, then one substitution
+  const size_t at2 = z.bin.size();
+  test::append<uint8_t>(z.bin, {3, 0, 0, 0});
+  test::append<float>(z.bin, {0.25f, 0.75f});
+  z.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at2}, {"byteLength", 1}});
+  z.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at2 + 4}, {"byteLength", 8}});
+  z.j["accessors"][1].erase("bufferView");
+  z.j["accessors"][1]["sparse"] = {{"count", 1},
+                                   {"indices", {{"bufferView", 3}, {"componentType", 5121}}},
+                                   {"values", {{"bufferView", 4}}}};
+  const Scene t = load(z);
+  for (size_t v = 0; v < t.positions.size(); ++v) {
+    const vec2 want = t.positions[v] == vec3(0, 1, 0) ? vec2(0.25f, 0.75f) : vec2(0.0f);
+    EXPECT_EQ(t.uv0[v], want) << "vertex " << v;
+  }
+}
+
+// glTF 2.0 §3.7.2.2: a still frame shows base + sum of weight * target; the node's weights win
+// over the mesh's. Target 0 lifts vertex 2 by (0, 0, 1), target 1 moves vertex 0 by (-1, 0, 0).
+TEST(GltfLoader, MorphTargetsAreAppliedAtTheirDefaultWeights) {
+  auto d = quad_doc();
+  const size_t at = d.bin.size();
+  test::append<float>(d.bin, {0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0});
+  test::append<float>(d.bin, {-1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 96}});
+  d.j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+  d.j["accessors"].push_back(
+      {{"bufferView", 3}, {"byteOffset", 48}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+  d.j["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", 3}}, {{"POSITION", 4}}};
+  d.j["meshes"][0]["weights"] = {0.5, 0.0};
+  const Scene mesh_weights = load(d);
+  EXPECT_FLOAT_EQ(mesh_weights.bounds.hi.z, 0.5f);
+  EXPECT_FLOAT_EQ(mesh_weights.bounds.lo.x, 0.0f);
+
+  d.j["nodes"][0]["weights"] = {1.0, 0.25};
+  const Scene node_weights = load(d);
+  EXPECT_FLOAT_EQ(node_weights.bounds.hi.z, 1.0f);
+  EXPECT_FLOAT_EQ(node_weights.bounds.lo.x, -0.25f);
+
+  d.j["nodes"][0]["weights"] = {1.0, 0.25, 1.0};  // more weights than targets
+  EXPECT_THROW(load(d), InputError);
+}
+
+// glTF 2.0 §3.10.3: ymag is half the view's height; the width follows the image (docs/scenes.md).
+TEST(GltfLoader, OrthographicCameraProjectsParallel) {
+  auto d = quad_doc();
+  d.j["cameras"] = {{{"type", "orthographic"}, {"orthographic", {{"xmag", 2.0}, {"ymag", 1.0}, {"znear", 0.5}, {"zfar", 10}}}}};
+  d.j["nodes"].push_back({{"camera", 0}, {"translation", {0.5, 0.5, 3}}});
+  d.j["scenes"][0]["nodes"] = {0, 1};
+  const Scene s = load(d);
+  ASSERT_TRUE(s.camera.orthographic);
+  EXPECT_FLOAT_EQ(s.camera.ymag, 1.0f);
+  const mat4 vp = s.camera.projection(2.0f) * s.camera.view();
+  // A point 1 above the camera's axis is at the top of clip space, 2 to its right at the right edge,
+  // whatever its depth.
+  for (float z : {0.0f, -5.0f}) {
+    const vec4 top = vp * vec4(0.5f, 1.5f, z, 1.0f), right = vp * vec4(2.5f, 0.5f, z, 1.0f);
+    EXPECT_NEAR(top.y / top.w, 1.0f, 1e-6f);
+    EXPECT_NEAR(right.x / right.w, 1.0f, 1e-6f);
+  }
+  expect_vec(s.camera.to_eye(vec3(7, -3, 0)), vec3(0, 0, 1));  // every point sees the eye along +z
+
+  d.j["cameras"][0]["orthographic"]["ymag"] = -1.0;
+  EXPECT_THROW(load(d), InputError);
+}
+
+TEST(GltfLoader, ASceneWithoutAnyLightIsWarnedAbout) {
+  const Scene s = load(quad_doc());  // a white quad, no light, no emission
+  ASSERT_EQ(s.stats.warnings.size(), 1u);
+  EXPECT_NE(s.stats.warnings[0].find("the scene has no light"), std::string::npos);
+  auto lit = quad_doc();
+  lit.j["materials"][0]["emissiveFactor"] = {1, 1, 1};
+  EXPECT_TRUE(load(lit).stats.warnings.empty());
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "report"))
 
-from vct_report.glance import focus_stage, verdict_sentence  # noqa: E402
+from vct_report.glance import focus_stage, scene_warnings_line, verdict_sentence  # noqa: E402
 from vct_report.registry import Registry  # noqa: E402
 
 
@@ -60,3 +60,12 @@ def test_the_registry_answers_for_family_members():
         assert False
     except ValueError as e:
         assert "image.final" in str(e)
+
+
+def test_scene_warnings_show_the_first_in_full_and_count_the_rest():
+    assert scene_warnings_line({"scene": {"source": "a.gltf", "warnings": []}}) == ""
+    assert scene_warnings_line({"scene": "a.gltf"}) == ""  # a path tracer run.json names the file only
+    one = scene_warnings_line({"scene": {"warnings": ["mesh 0 primitive 1 has mode 1 (points or lines); skipped"]}})
+    assert "id='glance-warnings'" in one and "Scene warning:" in one and "mode 1 (points or lines)" in one
+    two = scene_warnings_line({"scene": {"warnings": ["a <b>", "c"]}})
+    assert "Scene warnings:" in two and "a &lt;b&gt;" in two and "+1 more" in two

@@ -1,0 +1,15 @@
+// What the loader could not render as the file asks (skipped primitives, ignored skins or
+// extensions, a scene without light): every command that renders says it on stderr and keeps it
+// in run.json ("scene"/"warnings"), and the report shows it on its first screen (docs/scenes.md).
+#pragma once
+
+#include <string>
+
+#include "scene/gltf_loader.h"
+
+namespace vct::app {
+
+/// load_scene, then one stderr line per load warning: "vct: warning: FILE: what".
+Scene load_scene_and_warn(const std::string& path_or_empty, const SceneLoadOptions& options);
+
+}  // namespace vct::app
