@@ -19,6 +19,7 @@
 #include "io/run_dir.h"
 #include "pt/ray_throughput.h"
 #include "stages/pipeline.h"
+#include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
@@ -161,7 +162,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   j["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()}};
   j["settings"] = s;
   j["repeat"] = o.repeat;
-  j["memory"]["predicted"] = format_bytes(estimate_memory(s).total());
+  j["memory"]["predicted"] = format_bytes(estimate_memory(s, shadow_map_layers(scene)).total());
   j["ref"] = ref_times(scene, s, o.repeat);
   std::string note, renderer;
   j["gl"] = o.gl ? gl_times(scene, s, o.repeat, note, renderer) : nlohmann::json(nullptr);

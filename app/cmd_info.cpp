@@ -1,6 +1,6 @@
 // vct info [SCENE] [--json]: everything the loader made of a glTF file (no SCENE = the built-in
 // Cornell box): geometry counts, what was dropped or skipped and why, bounds and the voxel
-// volume, materials, textures, camera, spot lights and particle emitters.
+// volume, materials, textures, camera, lights and particle emitters.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -113,16 +113,20 @@ json summary(const Scene& s) {
                  {"type", c.orthographic ? "orthographic" : "perspective"}};
   if (c.orthographic) j["camera"]["ymag"] = c.ymag;
   else j["camera"]["yfov"] = c.yfov;
-  j["spot_lights"] = json::array();
-  for (const SpotLight& l : s.spot_lights) {
-    j["spot_lights"].push_back({{"name", l.name},
-                                {"position", vec_json(l.position)},
-                                {"direction", vec_json(l.direction)},
-                                {"color", vec_json(l.color)},
-                                {"intensity_cd", l.intensity},
-                                {"inner_cone_angle", l.inner_cone_angle},
-                                {"outer_cone_angle", l.outer_cone_angle},
-                                {"range", l.range}});
+  j["lights"] = json::array();
+  for (const Light& l : s.lights) {
+    json lj = {{"name", l.name},
+               {"kind", light_kind_name(l.kind)},
+               {"position", vec_json(l.position)},
+               {"direction", vec_json(l.direction)},
+               {"color", vec_json(l.color)},
+               {l.is_directional() ? "intensity_lux" : "intensity_cd", l.intensity}};
+    if (l.is_spot()) {
+      lj["inner_cone_angle"] = l.inner_cone_angle;
+      lj["outer_cone_angle"] = l.outer_cone_angle;
+    }
+    if (!l.is_directional()) lj["range"] = l.range;
+    j["lights"].push_back(lj);
   }
   j["particle_emitters"] = json::array();
   for (const ParticleEmitter& e : s.emitters) {
@@ -155,6 +159,25 @@ std::string tex(const Scene& s, const TextureRef& r) {
 }
 
 float deg(float radians) { return radians * 180.0f / kPi; }
+
+// One line per light: what each kind's glTF parameters mean (lux for a sun, candela otherwise).
+std::string light_line(const Light& l) {
+  const std::string range = l.range > 0.0f ? fmt::format(", range {:.4g}", l.range) : "";
+  switch (l.kind) {
+    case LightKind::Directional:
+      return fmt::format("'{}' directional: direction {} colour {} intensity {:.4g} lux", l.name, v3(l.direction),
+                         v3(l.color), l.intensity);
+    case LightKind::Point:
+      return fmt::format("'{}' point: position {} colour {} intensity {:.4g} cd{}", l.name, v3(l.position), v3(l.color),
+                         l.intensity, range);
+    case LightKind::Spot:
+    default:
+      return fmt::format("'{}' spot: position {} direction {} colour {} intensity {:.4g} cd, cone inner {:.4g} outer "
+                         "{:.4g} deg{}",
+                         l.name, v3(l.position), v3(l.direction), v3(l.color), l.intensity, deg(l.inner_cone_angle),
+                         deg(l.outer_cone_angle), range);
+  }
+}
 
 void print_text(const Scene& s) {
   const int grid = VctSettings{}.grid;
@@ -201,12 +224,8 @@ void print_text(const Scene& s) {
   fmt::print("camera ({}): position {} forward {} up {} {} near {:.4g} far {:.4g}\n",
              c.from_file ? "from file" : "default framing", v3(c.position), v3(c.forward), v3(c.up), lens, c.znear,
              c.zfar);
-  fmt::print("spot lights: {}\n", s.spot_lights.size());
-  for (const SpotLight& l : s.spot_lights) {
-    fmt::print("  '{}': position {} direction {} colour {} intensity {:.4g} cd, cone inner {:.4g} outer {:.4g} deg{}\n",
-               l.name, v3(l.position), v3(l.direction), v3(l.color), l.intensity, deg(l.inner_cone_angle),
-               deg(l.outer_cone_angle), l.range > 0.0f ? fmt::format(", range {:.4g}", l.range) : "");
-  }
+  fmt::print("lights: {}\n", s.lights.size());
+  for (const Light& l : s.lights) fmt::print("  {}\n", light_line(l));
   fmt::print("particle emitters: {}\n", s.emitters.size());
   for (const ParticleEmitter& e : s.emitters) {
     fmt::print("  '{}': origin {} count {} lifetime {:.3g} s, spawn half-extent {}, velocity {}..{}, "

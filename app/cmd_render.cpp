@@ -22,6 +22,7 @@
 #include "stages/dumps.h"
 #include "stages/explain.h"
 #include "stages/pipeline.h"
+#include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_pipeline.h"
@@ -159,7 +160,7 @@ nlohmann::json scene_summary(const Scene& scene) {
           {"triangles", scene.triangle_count()},
           {"vertices", scene.positions.size()},
           {"materials", scene.materials.size()},
-          {"spot_lights", scene.spot_lights.size()},
+          {"lights", scene.lights.size()},
           {"emitters", scene.emitters.size()},
           {"warnings", scene.stats.warnings},
           {"volume", {{"origin", {scene.volume.origin.x, scene.volume.origin.y, scene.volume.origin.z}},
@@ -226,7 +227,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     write_explain(run, scene, frame, settings.vct, *explain);
   }
   // Predicted up front (validate_settings refuses what cannot fit) beside what the run used.
-  const MemoryEstimate predicted = estimate_memory(settings);
+  const MemoryEstimate predicted = estimate_memory(settings, shadow_map_layers(scene));
   run.json()["memory"] = {{"predicted_bytes", predicted.total()},
                           {"predicted_voxel_bytes", predicted.voxels},
                           {"predicted", format_bytes(predicted.total())},

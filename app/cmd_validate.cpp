@@ -145,7 +145,7 @@ int run(const ValidateOptions& o) {
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source},
                          {"triangles", scene.triangle_count()},
-                         {"lights", scene.spot_lights.size()},
+                         {"lights", scene.lights.size()},
                          {"warnings", scene.stats.warnings}};
   run.json()["settings"] = s;
   run.json()["environment"] = environment_info();

@@ -65,7 +65,7 @@ Image readable_shadows(const Scene& scene, const GBuffer& g, const VoxelMips& mi
     for (int x = 0; x < g.coverage.width; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
       float sum = 0.0f;
-      for (const SpotLight& l : scene.spot_lights) sum += trace_shadow_cone(mips, scene.volume, s, g.position.rgb(x, y), l.position);
+      for (const Light& l : scene.lights) sum += trace_shadow_cone(mips, scene.volume, s, g.position.rgb(x, y), l);
       vis.at(x, y, 0) = sum;
     }
   });

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     scene = test::stage_room();
   }
   std::printf("scene %s: %zu triangles, %zu spot lights, %d threads\n", scene.source.c_str(), scene.triangle_count(),
-              scene.spot_lights.size(), thread_count());
+              scene.lights.size(), thread_count());
 
   VctSettings st;  // defaults: 512x512, shadow map 2048^2
   std::vector<Row> rows;

@@ -53,11 +53,11 @@ int main(int argc, char** argv) {
     }
   }
   const Scene scene = load_scene("");
-  if (scene.spot_lights.empty()) {
+  if (scene.lights.empty()) {
     std::printf("the built-in scene has no spot light\n");
     return 0;
   }
-  const mat4 vp = spot_light_view_proj(scene.spot_lights[0], scene.bounds);
+  const mat4 vp = spot_light_view_proj(scene.lights[0], scene.bounds);
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, vp, size, size);
   std::printf("scene %s: %zu triangles (%zu after clipping), shadow map %d^2, %lld covered centres (%.2f per texel), "
               "best of %d\n",

@@ -3,6 +3,7 @@
 // frame, maps it back (metamorphic_map.h) and judges it against the base frame with the stage
 // comparison's own tolerance models (docs/compare.md): the two frames differ only by the rounding
 // of positions, which is inside every freedom those models allow.
+#include <algorithm>
 #include <cstdio>
 
 #include "compare/metamorphic.h"
@@ -71,9 +72,13 @@ TurnScene turn_scene(const MetamorphicContext& c, int axis) {
     t.key += (t.key.empty() ? "" : "_") + key;
     t.what += (t.what.empty() ? "" : ", ") + what;
   };
-  if (axis != 2 && !c.scene.spot_lights.empty()) {
-    t.scene.spot_lights.clear();
-    also("unlit", "no spot lights");
+  // Spot and directional shadow maps take their up from world +z (shadow_map.cpp, light_up), so
+  // they turn with the scene about z only; a point light's cube faces are fixed to the world axes.
+  std::vector<Light>& lights = t.scene.lights;
+  const auto fixed = [axis](const Light& l) { return l.is_point() || axis != 2; };
+  if (std::any_of(lights.begin(), lights.end(), fixed)) {
+    lights.erase(std::remove_if(lights.begin(), lights.end(), fixed), lights.end());
+    also("unlit", axis != 2 ? "no lights" : "no point lights");
   }
   if (c.settings.vct.voxelizer == Voxelizer::GpuEmulation && c.settings.vct.msaa_samples != 1) {
     t.settings.vct.msaa_samples = 1;

@@ -699,7 +699,8 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
     }
     if (rs.images.count(stage)) {
       // A shadow map is its own depth: the camera's depth says nothing about its edges.
-      const bool light_space = ref && ref->row->index == StageIndex::Light;
+      const bool light_space =
+          ref && (ref->row->index == StageIndex::Light || ref->row->index == StageIndex::CubeFace);
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
                                                light_space ? nullptr : depth_hint, opt, slack));
     } else if (model == ToleranceModel::Mip) {

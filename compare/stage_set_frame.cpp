@@ -124,16 +124,37 @@ void check_input_images(const StageSet& set, const VctSettings& s, FrameResult& 
   }
 }
 
+// Shadow maps name their light: shadow_map.N must be a spot or directional light of the scene,
+// shadow_map_cube.(N x 6 + face) a point light's (the GL and ref dumps hold one or the other).
+void check_light_maps(const StageSet& set, const Scene& scene) {
+  size_t maps = 0;
+  for (const auto& [name, img] : set.images) {
+    const auto ref = find_stage(name);
+    if (!ref || (ref->row->index != StageIndex::Light && ref->row->index != StageIndex::CubeFace)) continue;
+    const bool cube = ref->row->index == StageIndex::CubeFace;
+    const size_t light = size_t(cube ? ref->index / 6 : ref->index);
+    const bool fits = light < scene.lights.size() && scene.lights[light].is_point() == cube;
+    if (!fits)
+      throw InputError(manifest_of(set), "stage '" + name + "' needs " + (cube ? "a point" : "a spot or directional") +
+                                             " light " + std::to_string(light) + " but " + scene.source + " has " +
+                                             std::to_string(scene.lights.size()) + " light(s)" +
+                                             (light < scene.lights.size()
+                                                  ? std::string(", that one ") + light_kind_name(scene.lights[light].kind)
+                                                  : std::string()) +
+                                             ": wrong --scene?");
+    if (!cube || ref->index % 6 == 0) ++maps;
+  }
+  // With maps at all, every light has its own (a set from a scene with more lights is refused too).
+  if (maps > 0 && maps != scene.lights.size())
+    throw InputError(manifest_of(set), std::to_string(maps) + " lights' shadow maps but " + scene.source + " has " +
+                                           std::to_string(scene.lights.size()) + " light(s): wrong --scene?");
+}
+
 // A wrong --scene would re-trace from the wrong camera and lights and fail every cone stage for
 // no fault of the test; say so instead. Positions must land on their own pixel (within 1 px:
 // float error and sub-pixel jitter stay far below) for all but 1 % of the covered pixels.
 void check_scene_matches(const StageSet& set, const Scene& scene, const GBuffer& g) {
-  const StageRow& shadow_row = stage_row(stage_names::kShadowMap);
-  size_t shadow_maps = 0;
-  while (set.images.count(stage_name(shadow_row, int(shadow_maps)))) ++shadow_maps;
-  if (shadow_maps > 0 && shadow_maps != scene.spot_lights.size())
-    throw InputError(manifest_of(set), std::to_string(shadow_maps) + " shadow maps but " + scene.source + " has " +
-                                           std::to_string(scene.spot_lights.size()) + " spot light(s): wrong --scene?");
+  check_light_maps(set, scene);
   const int w = g.coverage.width, h = g.coverage.height;
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
   size_t covered = 0, off = 0;

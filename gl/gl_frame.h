@@ -28,8 +28,10 @@ struct GlFrame {
   bool has_fault(const char* name) const { return fault == name; }
   int samples = 1;  // MSAA samples actually used for voxelization
 
-  std::vector<mat4> light_view_proj;
-  GLuint shadow_maps = 0;         // DEPTH_COMPONENT32F 2D array, one layer per light
+  // One layer per spot or directional light, six per point light (cube faces in GL's order).
+  std::vector<mat4> layer_view_proj;
+  std::vector<int> light_layer;   // light i's first layer
+  GLuint shadow_maps = 0;         // DEPTH_COMPONENT32F 2D array of those layers
   std::array<GLuint, 6> gbuffer{};  // position(+coverage), normal, albedo, material, specular, emission
   GLuint gbuffer_depth = 0;
   GLuint gbuffer_fbo = 0;
@@ -50,7 +52,9 @@ struct GlFrame {
 };
 
 // The passes, in frame order.
-mat4 light_view_proj(const Scene& scene, const SpotLight& light);
+/// The shadow layers' world -> clip matrices, light by light (the CPU's definitions, shared by
+/// call: both backends render from the same matrices), and each light's first layer.
+std::vector<mat4> shadow_layer_view_proj(const Scene& scene, std::vector<int>* light_layer);
 void shadow_pass(GlFrame& f);
 void gbuffer_pass(GlFrame& f);
 void upload_diffuse_cone_block(GlFrame& f);  // the cone set's shared block, before any cone pass

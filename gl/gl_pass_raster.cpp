@@ -10,10 +10,9 @@ namespace vct::gl {
 
 void shadow_pass(GlFrame& f) {
   const int size = f.s.shadow_map_size;
-  const int lights = std::min<int>(int(f.scene.spot_lights.size()), kMaxLights);
-  f.shadow_maps = make_texture_2d_array(GL_DEPTH_COMPONENT32F, size, size, std::max(lights, 1));
-  for (int i = 0; i < lights; ++i) f.light_view_proj.push_back(light_view_proj(f.scene, f.scene.spot_lights[size_t(i)]));
-  f.light_view_proj.resize(size_t(kMaxLights), mat4(1.0f));
+  f.layer_view_proj = shadow_layer_view_proj(f.scene, &f.light_layer);  // at most kMaxLights (render_gl_frame)
+  const int layers = int(f.layer_view_proj.size());
+  f.shadow_maps = make_texture_2d_array(GL_DEPTH_COMPONENT32F, size, size, std::max(layers, 1));
   const Program prog = f.programs.build({"scene.vert", "depth_only.frag"});
   ScopedTimer timer(f.timers, "shadow_maps");
   GLuint fbo = 0;
@@ -25,12 +24,12 @@ void shadow_pass(GlFrame& f) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   prog.use();
-  for (int i = 0; i < lights; ++i) {
+  for (int i = 0; i < layers; ++i) {
     glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, f.shadow_maps, 0, i);
     glNamedFramebufferDrawBuffer(fbo, GL_NONE);
     const float one = 1.0f;
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
-    prog.set("u_view_proj", f.light_view_proj[size_t(i)]);
+    prog.set("u_view_proj", f.layer_view_proj[size_t(i)]);
     f.geo.draw_depth_only(prog);
   }
   check_gl("shadow pass");

@@ -59,7 +59,7 @@ void direct_pass(GlFrame& f) {
   ScopedTimer timer(f.timers, "direct");
   framebuffer({f.direct, f.soft_shadow}, 0);
   prog.use();
-  f.geo.set_lights(prog, f.s, f.light_view_proj);
+  f.geo.set_lights(prog, f.s, f.layer_view_proj, f.light_layer);
   glBindTextureUnit(4, f.shadow_maps);
   bind_voxels(f, prog, f.radiance, f.aniso);
   bind_gbuffer(f, prog);

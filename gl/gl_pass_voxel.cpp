@@ -86,7 +86,7 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
   if (f.samples > 1) glEnable(GL_MULTISAMPLE);
   prog.use();
   set_volume(f, prog);
-  f.geo.set_lights(prog, f.s, f.light_view_proj);
+  f.geo.set_lights(prog, f.s, f.layer_view_proj, f.light_layer);
   glBindTextureUnit(4, f.shadow_maps);
   prog.set("u_bounce", bounce);
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);

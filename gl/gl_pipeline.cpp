@@ -10,13 +10,25 @@
 #include "gl_faults.h"
 #include "gl_frame.h"
 #include "gl_program.h"
+#include "stages/cube_map.h"
 #include "stages/shadow_map.h"
 
 namespace vct::gl {
 
-mat4 light_view_proj(const Scene& scene, const SpotLight& light) {
-  // The CPU's definition, shared by call: both backends render from the same matrix.
-  return spot_light_view_proj(light, scene.bounds);
+std::vector<mat4> shadow_layer_view_proj(const Scene& scene, std::vector<int>* light_layer) {
+  std::vector<mat4> layers;
+  for (const Light& light : scene.lights) {
+    light_layer->push_back(int(layers.size()));
+    if (light.is_point()) {
+      const vec2 range = light_depth_range(light, scene.bounds);
+      for (int face = 0; face < 6; ++face) layers.push_back(cube_face_view_proj(face, light.position, range.x, range.y));
+    } else if (light.is_directional()) {
+      layers.push_back(directional_light_view_proj(light, scene.volume));
+    } else {
+      layers.push_back(spot_light_view_proj(light, scene.bounds));
+    }
+  }
+  return layers;
 }
 
 namespace {
@@ -39,9 +51,9 @@ BackendFacts frame_facts(const GlContext& context, const VctSettings& s, const s
 }  // namespace
 
 FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings, const GlOptions& options) {
-  if (scene.spot_lights.size() > size_t(kMaxLights))
-    throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " spot lights, the scene has " +
-                                       std::to_string(scene.spot_lights.size()));
+  if (scene.lights.size() > size_t(kMaxLights))
+    throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " lights, the scene has " +
+                                       std::to_string(scene.lights.size()));
   check_gl_fault(options.fault, "--gl-fault");
   FrameResult result;
   result.backend = "gl";

@@ -33,11 +33,19 @@ static Volume read_voxels(const GlFrame& f, GLuint tex, int level, int n) {
 void read_back(GlFrame& f) {
   FrameResult& r = f.out;
   const int w = f.s.width, h = f.s.height, n = f.s.grid;
-  const int lights = std::min<int>(int(f.scene.spot_lights.size()), kMaxLights);
-  for (int i = 0; i < lights; ++i) {
+  const int map_size = f.s.shadow_map_size;
+  for (size_t i = 0; i < f.light_layer.size(); ++i) {
     ShadowMap sm;
-    sm.depth = read_depth(f.shadow_maps, f.s.shadow_map_size, f.s.shadow_map_size, i);
-    sm.view_proj = f.light_view_proj[size_t(i)];
+    const int layer = f.light_layer[i];
+    if (f.scene.lights[i].is_point()) {
+      for (int face = 0; face < 6; ++face) {
+        sm.cube[size_t(face)] = read_depth(f.shadow_maps, map_size, map_size, layer + face);
+        sm.cube_view_proj[size_t(face)] = f.layer_view_proj[size_t(layer + face)];
+      }
+    } else {
+      sm.depth = read_depth(f.shadow_maps, map_size, map_size, layer);
+      sm.view_proj = f.layer_view_proj[size_t(layer)];
+    }
     r.shadow_maps.push_back(std::move(sm));
   }
   GBuffer& g = r.gbuffer;

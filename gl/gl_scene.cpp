@@ -188,14 +188,16 @@ void GlScene::draw_depth_only(const Program& p) {
   check_gl("depth draw");
 }
 
-void GlScene::set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& view_proj) const {
-  const int count = std::min<int>(int(scene_.spot_lights.size()), kMaxLights);
+void GlScene::set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& layer_view_proj,
+                         const std::vector<int>& light_layer) const {
+  const int count = std::min<int>(int(scene_.lights.size()), kMaxLights);
   p.set("u_light_count", count);
   p.set("u_light_model", s.light_model == LightModel::Seed ? 1 : 0);
   set_setting_uniforms(p, s);
   for (int i = 0; i < count; ++i) {
-    const SpotLight& l = scene_.spot_lights[size_t(i)];
+    const Light& l = scene_.lights[size_t(i)];
     const std::string idx = "[" + std::to_string(i) + "]";
+    p.set(("u_light_kind" + idx).c_str(), int(l.kind));
     p.set(("u_light_position" + idx).c_str(), l.position);
     p.set(("u_light_direction" + idx).c_str(), l.direction);
     p.set(("u_light_color" + idx).c_str(), l.color);
@@ -203,8 +205,10 @@ void GlScene::set_lights(const Program& p, const VctSettings& s, const std::vect
     p.set(("u_light_cos_inner" + idx).c_str(), std::cos(l.inner_cone_angle));
     p.set(("u_light_cos_outer" + idx).c_str(), std::cos(l.outer_cone_angle));
     p.set(("u_light_range" + idx).c_str(), l.range);
-    p.set(("u_light_view_proj" + idx).c_str(), view_proj[size_t(i)]);
+    p.set(("u_light_layer" + idx).c_str(), light_layer[size_t(i)]);
   }
+  for (size_t l = 0; l < layer_view_proj.size(); ++l)
+    p.set(("u_shadow_view_proj[" + std::to_string(l) + "]").c_str(), layer_view_proj[l]);
 }
 
 }  // namespace vct::gl

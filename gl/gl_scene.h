@@ -29,7 +29,8 @@ class GlScene {
   /// texture bound on `p`.
   void draw_depth_only(const Program& p);
   /// Spot-light uniforms (lights.glsl) for `p`; `view_proj` one per light.
-  void set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& view_proj) const;
+  void set_lights(const Program& p, const VctSettings& s, const std::vector<mat4>& layer_view_proj,
+                  const std::vector<int>& light_layer) const;
   const Scene& scene() const { return scene_; }
 
  private:
@@ -45,7 +46,7 @@ class GlScene {
   bool alpha_tested_ = false;  // some material has alphaMode MASK or BLEND
 };
 
-/// Maximum spot lights the shaders take (lights.glsl's MAX_LIGHTS).
+/// Maximum lights (of any kind) the shaders take (lights.glsl's MAX_LIGHTS).
 constexpr int kMaxLights = 8;
 
 }  // namespace vct::gl

@@ -4,7 +4,8 @@
     python3 scenes/generate_scenes.py          # rewrites every scene below
     python3 scenes/generate_scenes.py --check  # exits 1 if a committed file differs
 
-Units are metres, +Y up, lights in glTF units (candela for spot lights); see docs/scenes.md.
+Units are metres, +Y up, lights in glTF units (candela for spot and point lights, lux for a
+directional light); see docs/scenes.md.
 All buffers are embedded as base64 data URIs so each .gltf is one self-contained file (the
 built-in scene is compiled into the binary); demo_room.gltf references its PNG textures in
 scenes/textures/ to exercise external images. Output is deterministic (no randomness, fixed
@@ -451,6 +452,24 @@ class Gltf:
         return self.node(name, translation=list(position), rotation=rotation,
                          extensions={"KHR_lights_punctual": {"light": len(ext["lights"]) - 1}})
 
+    def _light(self, name, light, position, rotation):
+        ext = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})
+        ext["lights"].append(light)
+        self.extensions.add("KHR_lights_punctual")
+        return self.node(name, translation=list(position), rotation=rotation,
+                         extensions={"KHR_lights_punctual": {"light": len(ext["lights"]) - 1}})
+
+    def point(self, name, position, intensity, color=(1.0, 1.0, 1.0), light_range=None):
+        light = {"name": name, "type": "point", "color": list(color), "intensity": intensity}
+        if light_range:
+            light["range"] = light_range
+        return self._light(name, light, position, None)
+
+    def sun(self, name, direction, lux, color=(1.0, 1.0, 1.0)):
+        """A directional light shining along `direction` (its node's -Z), intensity in lux."""
+        light = {"name": name, "type": "directional", "color": list(color), "intensity": lux}
+        return self._light(name, light, [0.0, 0.0, 0.0], look_rotation([0, 0, 0], direction))
+
     def write(self, filename):
         doc = self.doc
         doc["buffers"] = [{"byteLength": len(self.blob),
@@ -721,9 +740,52 @@ def tiled_floor():
     return [g.write("tiled_floor.gltf")] + [(name, data) for name, data in files.items()]
 
 
+def sun_room():
+    """A 5 x 3.8 x 5 m room lit by a high sun through a 1.2 x 1.2 m skylight and by two point lamps
+    (one with a range), with a low platform across the room in the sun patch: every light kind but
+    the spot, shadows from the sun's orthographic map and from both cubes.
+
+    Placed so that no surface shows shadow acne under the constant depth bias at validate's 1024^2
+    maps (docs/pipeline.md, "Shadow maps": a plane at distance h from a point light is acne-free
+    when h > 3 near / (S bias) = 1.47 m here; every plane a lamp sees is >= 1.55 m from it, and the
+    sun's 81 degree elevation keeps the floor's depth change under the bias)."""
+    g = Gltf("room lit by a sun through a skylight and two point lamps")
+    wall = g.material("plaster", (0.75, 0.73, 0.7), lambert=True)
+    floor_mat = g.material("wood_floor", (0.55, 0.4, 0.28), roughness=0.6)
+    platform_mat = g.material("platform", (0.3, 0.45, 0.6), roughness=0.5)
+
+    def quad(name, mat, origin, du, dv, n=6):
+        m = MeshData()
+        m.quad(origin, du, dv, nu=n, nv=n)
+        g.node(name, mesh=g.mesh(name, m, mat))
+
+    # Inward-facing shell: x, z in [-2.5, 2.5], y in [0, 3.8]; a skylight in the ceiling at
+    # x in [0.6, 1.8], z in [-0.6, 0.6].
+    h = 3.8
+    quad("floor", floor_mat, [-2.5, 0, 2.5], [5, 0, 0], [0, 0, -5])
+    quad("back_wall", wall, [-2.5, 0, -2.5], [5, 0, 0], [0, h, 0])
+    quad("front_wall", wall, [2.5, 0, 2.5], [-5, 0, 0], [0, h, 0])
+    quad("left_wall", wall, [-2.5, 0, 2.5], [0, 0, -5], [0, h, 0])
+    quad("right_wall", wall, [2.5, 0, -2.5], [0, 0, 5], [0, h, 0])
+    quad("ceiling_left", wall, [-2.5, h, -2.5], [3.1, 0, 0], [0, 0, 5], n=4)
+    quad("ceiling_right", wall, [1.8, h, -2.5], [0.7, 0, 0], [0, 0, 5], n=2)
+    quad("ceiling_back", wall, [0.6, h, -2.5], [1.2, 0, 0], [0, 0, 1.9], n=2)
+    quad("ceiling_front", wall, [0.6, h, 0.6], [1.2, 0, 0], [0, 0, 1.9], n=2)
+    platform = MeshData()
+    platform.box([0.9, 0.0, -2.4], [1.8, 0.35, 2.4])
+    g.node("platform", mesh=g.mesh("platform", platform, platform_mat))
+
+    g.sun("sun", normalize([-0.15, -1.0, 0.08]), lux=8.0, color=(1.0, 0.95, 0.85))
+    g.point("lamp_back", [-0.7, 1.9, -0.8], intensity=4.0, color=(1.0, 0.8, 0.6))
+    g.point("lamp_front", [-0.7, 1.9, 0.8], intensity=4.0, color=(1.0, 0.85, 0.7), light_range=6.0)
+    g.camera([-2.2, 1.6, 2.2], [0.8, 0.6, -0.8], yfov=1.0)
+    return g.write("sun_room.gltf")
+
+
 def main():
     outputs = []
-    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage, tiled_floor):
+    for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage, tiled_floor,
+                 sun_room):
         result = make()
         outputs += result if isinstance(result, list) else [result]
     check = "--check" in sys.argv

@@ -1,4 +1,4 @@
-// Direct light: Cook–Torrance (vct_shared.h) from every spot light, visibility from the PCF
+// Direct light: Cook–Torrance (vct_shared.h) from every light (spot, point, directional), visibility from the PCF
 // shadow map or (soft shadows) from a cone toward the light through the voxels.
 #include "lights.glsl"
 #include "cone.glsl"
@@ -9,9 +9,14 @@ uniform float u_shadow_aperture;  // radians
 layout(location = 0) out vec4 o_direct;
 layout(location = 1) out vec4 o_soft_shadow;
 
-float cone_visibility(vec3 p, vec3 light_position) {
+// The soft-shadow cone toward light i: up to a spot or point light's position; against a
+// directional light's direction until it leaves the volume (ref/stages/cone_sets.cpp).
+float cone_visibility(int i, vec3 p) {
   vec3 origin = to_volume(p);
-  vec3 to_light = to_volume(light_position) - origin;
+  if (u_light_kind[i] == LIGHT_KIND_DIRECTIONAL) {
+    return 1.0f - trace_cone(origin, -normalize(u_light_direction[i]), u_shadow_aperture, u_cone_max_distance, 0.0f).a;
+  }
+  vec3 to_light = to_volume(u_light_position[i]) - origin;
   float dist = length(to_light);
   if (dist <= 0.0f) return 1.0f;
   return 1.0f - trace_cone(origin, to_light / dist, u_shadow_aperture, min(u_cone_max_distance, dist), 0.0f).a;
@@ -31,7 +36,7 @@ void main() {
     float n_dot_l = dot(g.normal, l);
     float vis;
     if (u_soft_shadows != 0) {
-      vis = cone_visibility(g.position, u_light_position[i]);
+      vis = cone_visibility(i, g.position);
       vis_sum += vis;
     } else {
       vis = shadow_visibility(i, g.position);

@@ -1,4 +1,4 @@
-// Light leaving a voxelized surface point: albedo/pi x spot irradiance x n.l x shadow + emission,
+// Light leaving a voxelized surface point: albedo/pi x each light's irradiance x n.l x shadow + emission,
 // plus (multibounce frames) restitution x albedo x the diffuse cones of the previous frame.
 #include "surface.glsl"
 #include "lights.glsl"

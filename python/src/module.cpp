@@ -151,7 +151,17 @@ void bind_functions(nb::module_& m) {
   nb::class_<Scene>(m, "Scene", "A loaded scene (flat, world space; scene/scene.h).")
       .def_ro("source", &Scene::source)
       .def_prop_ro("triangle_count", [](const Scene& s) { return s.triangle_count(); })
-      .def_prop_ro("spot_light_count", [](const Scene& s) { return s.spot_lights.size(); });
+      .def_prop_ro("light_count", [](const Scene& s) { return s.lights.size(); })
+      .def_prop_ro("light_kinds", [](const Scene& s) {
+        std::vector<std::string> kinds;
+        for (const Light& l : s.lights) kinds.push_back(light_kind_name(l.kind));
+        return kinds;
+      }, "Each light's KHR_lights_punctual type: 'spot', 'point' or 'directional'.")
+      .def_prop_ro("spot_light_count", [](const Scene& s) {
+        size_t n = 0;
+        for (const Light& l : s.lights) n += l.is_spot() ? 1 : 0;
+        return n;
+      });
   m.def("load_scene", [](const std::string& path) { return load_scene(path); }, "path"_a = "",
         "A .gltf/.glb file; '' = the built-in Cornell box.");
   m.def("_default_settings", []() { return settings_text(Settings{}); });

@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/error.h"
@@ -54,10 +55,12 @@ uint64_t voxel_bytes(const VctSettings& v) {
   return bytes;
 }
 
-// Alive from the G-buffer on; the scene's lights are not known, so one shadow map is counted.
-uint64_t image_bytes(const VctSettings& v) {
+// Alive from the G-buffer on; `shadow_layers` square float depth images (1 when the scene's lights
+// are not known yet; a point light's cube counts six).
+uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
-  const uint64_t shadow = uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;  // float depth
+  const uint64_t shadow =
+      uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;
   // G-buffer 21 floats (84 B); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
   // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
   // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
@@ -74,12 +77,12 @@ bool keeps_multibounce_frames(const VctSettings& v) {
   return v.bounces > 1 && frame_bytes * uint64_t(v.bounces - 1) <= 256 * kMiB;
 }
 
-MemoryEstimate estimate_memory(const Settings& s) {
+MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   const VctSettings& v = s.vct;
   MemoryEstimate e;
   e.baseline = kProcessBaseline;
   e.voxels = voxel_bytes(v);
-  e.images = image_bytes(v);
+  e.images = image_bytes(v, shadow_layers);
   // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing (21 B/pixel), freed
   // when the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images.
@@ -109,9 +112,9 @@ std::string format_bytes(uint64_t bytes) {
   return buf;
 }
 
-void check_memory_budget(const Settings& s, uint64_t available) {
+void check_memory_budget(const Settings& s, uint64_t available, int shadow_layers) {
   if (available == 0) return;
-  const MemoryEstimate e = estimate_memory(s);
+  const MemoryEstimate e = estimate_memory(s, shadow_layers);
   if (e.total() <= available) return;
   const VctSettings& v = s.vct;
   throw InputError("", "settings need about " + format_bytes(e.total()) + " (process " + format_bytes(e.baseline) +

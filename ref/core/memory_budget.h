@@ -26,7 +26,9 @@ struct MemoryEstimate {
   }
 };
 
-MemoryEstimate estimate_memory(const Settings& s);
+/// `shadow_layers`: square depth images the lights need (shadow_map_layers(scene): one per spot or
+/// directional light, six per point light); 1 when the scene is not known yet.
+MemoryEstimate estimate_memory(const Settings& s, int shadow_layers = 1);
 
 /// Whether the ref pipeline keeps the base level of every multibounce frame before the last (for
 /// the dumps): only while they total at most 256 MiB. Shared so the estimate counts what is kept.
@@ -37,7 +39,7 @@ uint64_t physical_memory_bytes();
 
 /// Throws InputError saying how much is needed when the estimate exceeds `available` bytes
 /// (default: physical memory). Does nothing if `available` is 0 (unknown).
-void check_memory_budget(const Settings& s, uint64_t available = physical_memory_bytes());
+void check_memory_budget(const Settings& s, uint64_t available = physical_memory_bytes(), int shadow_layers = 1);
 
 /// Peak resident set size of this process so far in bytes (getrusage); 0 if unknown.
 uint64_t peak_rss_bytes();

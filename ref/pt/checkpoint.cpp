@@ -86,7 +86,8 @@ uint64_t hash_scene(const Scene& s) {
     h.pod(int(
         t.min_filter));  // the primary hit's ray-cone lookup reads the mip chain (pt/ray_cone.h)
   }
-  for (const SpotLight& l : s.spot_lights) {
+  for (const Light& l : s.lights) {
+    h.pod(int(l.kind));
     h.pod(l.position);
     h.pod(l.direction);
     h.pod(l.color);

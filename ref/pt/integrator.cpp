@@ -61,9 +61,9 @@ void credit_emission(PathSample& out, const Integrator::Throughput& tp, int dept
   }
 }
 
-/// A spot light's contribution f * E * cos at vertex `depth`: at the first hit it is VCT's
+/// A punctual light's contribution f * E * cos at vertex `depth`: at the first hit it is VCT's
 /// "direct"; lighting the second vertex it is one bounce of light.
-void credit_spot(PathSample& out, const Integrator::Throughput& tp, int depth, const vec3& c) {
+void credit_punctual(PathSample& out, const Integrator::Throughput& tp, int depth, const vec3& c) {
   if (depth == 1) {
     out.aov[kDirect] += c;
     out.aov[kFull] += c;
@@ -101,26 +101,40 @@ Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const Emissive
       particle_layer_(particle_layer && !particle_layer->empty() ? particle_layer : nullptr),
       settings_(s),
       light_model_(s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF),
-      eps_(1e-4f * scene_scale(scene)) {
-  for (const SpotLight& light : scene.spot_lights)
+      eps_(1e-4f * scene_scale(scene)),
+      // Every vertex lies within scene_scale of the origin on each axis: 4x clears the cube's
+      // diagonal (2 sqrt(3) scene_scale) from any point inside it.
+      sun_ray_length_(4.0f * scene_scale(scene)) {
+  for (const Light& light : scene.lights)
     spot_cos_.push_back(vec2(std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle)));
 }
 
-void Integrator::nee_spots(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const {
-  for (size_t i = 0; i < scene_.spot_lights.size(); ++i) {
-    const SpotLight& light = scene_.spot_lights[i];
-    const vec3 to_light = light.position - v.pos;
-    const float dist = glm::length(to_light);
-    if (!(dist > 0.0f)) continue;
-    const vec3 l = to_light / dist;
+void Integrator::nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const {
+  for (size_t i = 0; i < scene_.lights.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    vec3 l, shadow_ray;
+    float dist = std::numeric_limits<float>::infinity();
+    if (light.is_directional()) {
+      // A delta in direction: one shadow ray against the sun's direction, long enough to leave
+      // the scene (sun_ray_length_).
+      l = -glm::normalize(light.direction);
+      shadow_ray = l * sun_ray_length_;
+    } else {
+      // A delta in position (spot, point): the ray ends at the light.
+      const vec3 to_light = light.position - v.pos;
+      dist = glm::length(to_light);
+      if (!(dist > 0.0f)) continue;
+      l = to_light / dist;
+      shadow_ray = light.position - v.p;
+    }
     const BsdfValue f = eval_bsdf(v.bp, l);
     if (f.total() == vec3(0.0f)) continue;
-    const vec3 e = sh::spot_irradiance(light_model_, light.color, light.intensity, dist, glm::dot(light.direction, -l),
-                                       spot_cos_[i].x, spot_cos_[i].y, light.range);
+    const vec3 e = sh::punctual_irradiance(light_model_, int(light.kind), light.color, light.intensity, dist,
+                                           glm::dot(light.direction, -l), spot_cos_[i].x, spot_cos_[i].y, light.range);
     if (e == vec3(0.0f)) continue;
     ++counts.shadow;
-    if (rt_.occluded(v.p, light.position - v.p, 0.0f, 1.0f)) continue;
-    credit_spot(out, tp, v.depth, f.total() * e * glm::dot(v.bp.n, l));
+    if (rt_.occluded(v.p, shadow_ray, 0.0f, 1.0f)) continue;
+    credit_punctual(out, tp, v.depth, f.total() * e * glm::dot(v.bp.n, l));
   }
 }
 
@@ -210,7 +224,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     // lifted off the surface (along ng, the side every accepted direction leaves on).
     const Vertex v{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, hit.triangle, depth};
 
-    nee_spots(v, tp, out, counts);
+    nee_punctual(v, tp, out, counts);
     if (!lights_.empty()) nee_emitters(v, tp, rng, out, counts);
     if (particles_) nee_particles(v, tp, rng, out, counts);
 

@@ -1,4 +1,5 @@
-// One path sample of one pixel: next-event estimation to spot lights (delta lights, no MIS) and
+// One path sample of one pixel: next-event estimation to the punctual lights (spot and point: a
+// delta in position; directional: a delta in direction; no MIS) and
 // to emissive triangles (area sampling, power-heuristic MIS with BSDF sampling), BSDF importance
 // sampling, Russian roulette. Returns the contribution split into the AOVs that mirror the VCT
 // components (docs/pathtracer.md defines each one).
@@ -58,7 +59,7 @@ class Integrator {
 
  private:
   struct Vertex;  // a shading point: BSDF, true position, lifted ray origin, depth
-  void nee_spots(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
+  void nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
   void nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
   void nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
 
@@ -70,7 +71,8 @@ class Integrator {
   PtSettings settings_;
   int light_model_;
   float eps_;  // ray offset, scaled to the scene's size
-  std::vector<vec2> spot_cos_;  // per spot light: cos(inner), cos(outer), computed once
+  float sun_ray_length_;  // a directional light's shadow ray: leaves the scene from any vertex
+  std::vector<vec2> spot_cos_;  // per light: cos(inner), cos(outer), computed once
 };
 
 }  // namespace vct::pt

@@ -102,7 +102,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
                     {"scene_hash", key.scene_hash},
                     {"settings_hash", key.settings_hash},
                     {"emissive_triangles", tracer.emitters().size()},
-                    {"spot_lights", scene.spot_lights.size()},
+                    {"lights", scene.lights.size()},
                     {"particles", tracer.particles().size()},
                     {"particle_time", settings.vct.time},
                     {"rays", {{"primary", result.rays.primary},

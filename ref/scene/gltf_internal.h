@@ -53,14 +53,15 @@ void add_morph_displacements(const Context& ctx, const tinygltf::Primitive& prim
 void convert_textures(const Context& ctx, Scene& scene);
 void convert_materials(const Context& ctx, Scene& scene);
 
-/// Walks the default scene's node trees and appends geometry, camera, spot lights and particle
+/// Walks the default scene's node trees and appends geometry, camera, lights and particle
 /// emitters in world space.
 void convert_nodes(const Context& ctx, Scene& scene);
 
 /// Node-attached objects (gltf_objects.cpp). `world` is the node's world matrix.
 Camera make_camera(const Context& ctx, int camera, const mat4& world);
-SpotLight make_spot_light(const Context& ctx, int light, const mat4& world);
-/// Refuses lights we do not model (point, directional) and checks spot parameters.
+Light make_light(const Context& ctx, int light, const mat4& world);
+/// Checks every light: a KHR_lights_punctual type (spot, point, directional), spot cone angles,
+/// finite non-negative intensity, range and colour.
 void validate_lights(const Context& ctx);
 /// extras.vct_particles of node `node`, if present.
 bool read_particles(const Context& ctx, int node, const mat4& world, ParticleEmitter& out);

@@ -162,7 +162,7 @@ std::string check_glb(const std::string& b, const std::string& name) {
 void warn_if_unlit(Scene& scene) {
   const bool emissive = std::any_of(scene.triangle_material.begin(), scene.triangle_material.end(),
                                     [&](uint32_t m) { return scene.materials[m].is_emissive(); });
-  if (scene.spot_lights.empty() && scene.emitters.empty() && !emissive) {
+  if (scene.lights.empty() && scene.emitters.empty() && !emissive) {
     scene.stats.warnings.push_back("the scene has no light (no punctual light, no emissive surface, no particles): "
                                    "every image will be black");
   }

@@ -1,6 +1,6 @@
 // Walks the node forest of the default scene, flattening every mesh primitive into world-space
 // triangles (TRS or matrix transforms; normals by the inverse transpose; winding flipped under
-// mirroring transforms) and collecting the camera, spot lights and particle emitters.
+// mirroring transforms) and collecting the camera, lights (all three KHR_lights_punctual kinds) and particle emitters.
 #include <algorithm>
 #include <cmath>
 
@@ -153,7 +153,7 @@ class Flattener {
     }
     auto light = n.extensions.find("KHR_lights_punctual");
     if (light != n.extensions.end() && light->second.Has("light")) {
-      scene_.spot_lights.push_back(make_spot_light(ctx_, light->second.Get("light").Get<int>(), world));
+      scene_.lights.push_back(make_light(ctx_, light->second.Get("light").Get<int>(), world));
     }
     ParticleEmitter e;
     if (read_particles(ctx_, index, world, e)) scene_.emitters.push_back(e);

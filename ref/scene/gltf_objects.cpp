@@ -1,4 +1,4 @@
-// Things a glTF node carries besides meshes: the camera, KHR_lights_punctual spot lights, our
+// Things a glTF node carries besides meshes: the camera, KHR_lights_punctual lights (spot, point, directional), our
 // fire particle emitters (extras.vct_particles) and the voxel volume override (extras.vct_volume).
 // Schemas and units: docs/scenes.md.
 #include <cmath>
@@ -87,11 +87,11 @@ void validate_lights(const Context& ctx) {
   for (size_t i = 0; i < ctx.model.lights.size(); ++i) {
     const auto& l = ctx.model.lights[i];
     const std::string owner = "light " + std::to_string(i) + (l.name.empty() ? "" : " '" + l.name + "'");
-    if (l.type != "spot") {
-      fail(ctx, owner + " is a " + l.type + " light; only KHR_lights_punctual spot lights are supported (docs/scenes.md)");
+    if (l.type != "spot" && l.type != "point" && l.type != "directional") {
+      fail(ctx, owner + " has type '" + l.type + "'; KHR_lights_punctual defines spot, point and directional");
     }
     const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
-    if (!(outer > 0.0 && outer <= 0.5 * 3.14159265358979 + 1e-6) || !(inner >= 0.0 && inner < outer)) {
+    if (l.type == "spot" && (!(outer > 0.0 && outer <= 0.5 * 3.14159265358979 + 1e-6) || !(inner >= 0.0 && inner < outer))) {
       fail(ctx, owner + " needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
     }
     if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || !(l.range >= 0.0) || !std::isfinite(l.range)) {
@@ -104,17 +104,21 @@ void validate_lights(const Context& ctx) {
   }
 }
 
-SpotLight make_spot_light(const Context& ctx, int light, const mat4& world) {
+Light make_light(const Context& ctx, int light, const mat4& world) {
   const auto& l = ctx.model.lights[static_cast<size_t>(light)];
-  SpotLight s;
+  Light s;
   s.name = l.name.empty() ? "light_" + std::to_string(light) : l.name;
+  s.kind = l.type == "point" ? LightKind::Point : l.type == "directional" ? LightKind::Directional : LightKind::Spot;
   s.position = transform_point(world, vec3(0.0f));
   s.direction = transform_dir(world, vec3(0.0f, 0.0f, -1.0f));  // KHR_lights_punctual: lights point along -Z
   if (l.color.size() == 3) s.color = vec3(float(l.color[0]), float(l.color[1]), float(l.color[2]));
   s.intensity = float(l.intensity);
-  s.inner_cone_angle = float(l.spot.innerConeAngle);
-  s.outer_cone_angle = float(l.spot.outerConeAngle);
-  s.range = float(l.range);
+  if (s.is_spot()) {
+    s.inner_cone_angle = float(l.spot.innerConeAngle);
+    s.outer_cone_angle = float(l.spot.outerConeAngle);
+  }
+  // KHR_lights_punctual: "range ... only for point and spot lights"; a directional light has none.
+  s.range = s.is_directional() ? 0.0f : float(l.range);
   return s;
 }
 

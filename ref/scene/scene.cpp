@@ -13,6 +13,15 @@ vec2 TextureTransform::apply(const vec2& uv) const {
   return vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y) + offset;
 }
 
+const char* light_kind_name(LightKind kind) {
+  switch (kind) {
+    case LightKind::Point: return "point";
+    case LightKind::Directional: return "directional";
+    case LightKind::Spot:
+    default: return "spot";
+  }
+}
+
 mat4 Camera::view() const { return glm::lookAt(position, position + forward, up); }
 
 mat4 Camera::projection(float aspect) const {

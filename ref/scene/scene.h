@@ -91,18 +91,31 @@ struct Material {
   bool is_emissive() const { return emission() != vec3(0.0f); }
 };
 
-/// KHR_lights_punctual spot light in world space. Intensity in candela (glTF model) or a
-/// unitless scale (seed model); see docs/scenes.md.
-struct SpotLight {
+/// The three KHR_lights_punctual kinds (docs/scenes.md, "Lights"). The values are the shared
+/// LIGHT_KIND_* constants of vct_shared.h, so the GL uniform is the enum itself.
+enum class LightKind { Spot = 0, Point = 1, Directional = 2 };
+
+/// A KHR_lights_punctual light in world space. Intensity: candela for spot and point lights, lux
+/// for a directional light (glTF model), or a unitless scale (seed model); see docs/scenes.md.
+/// A directional light uses only `direction` (its position is where its node sits, kept for
+/// `vct info`); cone angles matter only for a spot light.
+struct Light {
   std::string name;
+  LightKind kind = LightKind::Spot;
   vec3 position{0.0f};
-  vec3 direction{0.0f, 0.0f, -1.0f};  // unit, where the cone points
+  vec3 direction{0.0f, 0.0f, -1.0f};  // unit, where the light points (spot axis, sun direction)
   vec3 color{1.0f};
   float intensity = 1.0f;
   float inner_cone_angle = 0.0f;       // radians
   float outer_cone_angle = 0.7853982f; // radians, <= pi/2
-  float range = 0.0f;                  // 0 = infinite
+  float range = 0.0f;                  // 0 = infinite; ignored for a directional light
+  bool is_spot() const { return kind == LightKind::Spot; }
+  bool is_point() const { return kind == LightKind::Point; }
+  bool is_directional() const { return kind == LightKind::Directional; }
 };
+
+/// "spot", "point", "directional" (the names glTF's KHR_lights_punctual uses).
+const char* light_kind_name(LightKind kind);
 
 /// A glTF camera. Perspective (yfov) or orthographic (ymag: half the view's height in metres; the
 /// width follows the image's aspect ratio, docs/scenes.md "Cameras").
@@ -165,7 +178,7 @@ struct Scene {
 
   std::vector<Material> materials;  // always at least one (the glTF default material)
   std::vector<Texture> textures;
-  std::vector<SpotLight> spot_lights;
+  std::vector<Light> lights;
   std::vector<ParticleEmitter> emitters;
   Camera camera;
   VoxelVolume volume;

@@ -29,7 +29,7 @@ Scene mapped(const Scene& scene, PointFn point, DirFn dir) {
   s.camera.position = point(s.camera.position);
   s.camera.forward = dir(s.camera.forward);
   s.camera.up = dir(s.camera.up);
-  for (SpotLight& l : s.spot_lights) {
+  for (Light& l : s.lights) {
     l.position = point(l.position);
     l.direction = dir(l.direction);
   }
@@ -109,7 +109,7 @@ Scene turned90(const Scene& scene, int axis) {
 Scene light_scaled(const Scene& scene, float factor) {
   Scene s = scene;
   for (Material& m : s.materials) m.emissive_strength *= factor;
-  for (SpotLight& l : s.spot_lights) l.intensity *= factor;
+  for (Light& l : s.lights) l.intensity *= factor;
   for (ParticleEmitter& e : s.emitters) {
     e.color_start *= factor;
     e.color_end *= factor;

@@ -1,5 +1,5 @@
-// Definitions shared by the CPU reference and the GLSL shaders (docs/pipeline.md): the BRDF, the spot
-// falloff of both light models, the cone set, the hash and the parameter block layout.
+// Definitions shared by the CPU reference and the GLSL shaders (docs/pipeline.md): the BRDF, the
+// falloff of the three light kinds in both light models, the cone set, the hash and the parameter block layout.
 // This file compiles as C++17 (with GLM, inside namespace vct::sh) and as GLSL 4.50 (the GL
 // backend prepends "#version 450" and "#define VCT_GLSL 1"). Keep to the common subset:
 // no references or out-parameters, no templates, float literals with an 'f' suffix,
@@ -26,6 +26,10 @@ VCT_CONST float SH_PI = 3.14159265358979323846f;
 VCT_CONST float SH_INV_PI = 0.31830988618379067154f;
 VCT_CONST int LIGHT_MODEL_GLTF = 0;
 VCT_CONST int LIGHT_MODEL_SEED = 1;
+// KHR_lights_punctual kinds (the values of vct::LightKind, so the GL uniform is the enum itself).
+VCT_CONST int LIGHT_KIND_SPOT = 0;
+VCT_CONST int LIGHT_KIND_POINT = 1;
+VCT_CONST int LIGHT_KIND_DIRECTIONAL = 2;
 VCT_CONST int MAX_DIFFUSE_CONES = 16;  // settings.diffuse_cone_count is 1..this
 
 // ---------------------------------------------------------------------------------------------
@@ -146,6 +150,36 @@ VCT_FN vec3 spot_irradiance(int model, vec3 color, float intensity, float dist, 
   }
   return color * intensity * spot_cone_gltf(cos_axis, cos_inner, cos_outer) * range_window(dist, range) /
          max(dist * dist, 1e-8f);
+}
+
+// Point lights (KHR_lights_punctual "point"): glTF: candela, inverse square law and the same
+// recommended range window as the spot; seed: the seed's spot falloff without its cone,
+// intensity / (1 + d).
+VCT_FN vec3 point_irradiance(int model, vec3 color, float intensity, float dist, float range) {
+  if (model == LIGHT_MODEL_SEED) return color * intensity / (1.0f + dist);
+  return color * intensity * range_window(dist, range) / max(dist * dist, 1e-8f);
+}
+
+// Directional lights (KHR_lights_punctual "directional"): intensity in lux is the irradiance on a
+// surface facing the light; no falloff, no range. The seed had no sun: both models use lux.
+VCT_FN vec3 directional_irradiance(vec3 color, float intensity) { return color * intensity; }
+
+// Irradiance of any kind on a surface facing the light (before n.l and shadowing). dist and
+// cos_axis are those of spot_irradiance; a directional light ignores both.
+VCT_FN vec3 punctual_irradiance(int model, int kind, vec3 color, float intensity, float dist, float cos_axis,
+                                float cos_inner, float cos_outer, float range) {
+  if (kind == LIGHT_KIND_DIRECTIONAL) return directional_irradiance(color, intensity);
+  if (kind == LIGHT_KIND_POINT) return point_irradiance(model, color, intensity, dist, range);
+  return spot_irradiance(model, color, intensity, dist, cos_axis, cos_inner, cos_outer, range);
+}
+
+// Unit vector from p toward the light: toward its position for spot and point lights (+z when p is
+// the position itself), against its direction for a directional light (the sun is infinitely far).
+VCT_FN vec3 to_light_direction(int kind, vec3 light_position, vec3 light_direction, vec3 p) {
+  if (kind == LIGHT_KIND_DIRECTIONAL) return -normalize(light_direction);
+  vec3 to_light = light_position - p;
+  float dist = length(to_light);
+  return dist > 0.0f ? to_light / dist : vec3(0.0f, 0.0f, 1.0f);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -103,16 +103,28 @@ vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roug
   return trace(specular_cone(volume_, p, n, v, roughness), base_params_, record);
 }
 
-float ConeFrame::shadow(const vec3& p, const vec3& light_position, std::vector<ConeSample>* record) const {
+Cone ConeFrame::shadow_cone(const vec3& p, const Light& light, float* max_distance) const {
   Cone cone;
   cone.origin = volume_.to_texture(p);
-  const vec3 to_light = volume_.to_texture(light_position) - cone.origin;
-  const float dist = glm::length(to_light);
-  if (dist <= 0.0f) return 1.0f;
-  cone.direction = to_light / dist;
   cone.aperture = shadow_aperture_;
+  *max_distance = base_params_.max_distance;
+  if (light.is_directional()) {
+    // The sun is infinitely far: the cone runs against its direction (a world direction is the
+    // same in texture space, a uniform scale) until the marcher leaves the volume.
+    cone.direction = -glm::normalize(light.direction);
+    return cone;
+  }
+  const vec3 to_light = volume_.to_texture(light.position) - cone.origin;
+  const float dist = glm::length(to_light);
+  cone.direction = dist > 0.0f ? to_light / dist : vec3(0.0f, 0.0f, 1.0f);
+  *max_distance = std::min(*max_distance, dist);  // occluders behind the light don't count
+  return cone;
+}
+
+float ConeFrame::shadow(const vec3& p, const Light& light, std::vector<ConeSample>* record) const {
   MarchParams params = base_params_;
-  params.max_distance = std::min(params.max_distance, dist);  // occluders behind the light don't count
+  const Cone cone = shadow_cone(p, light, &params.max_distance);
+  if (!(params.max_distance > 0.0f)) return 1.0f;
   return 1.0f - trace(cone, params, record).a;
 }
 
@@ -143,8 +155,8 @@ vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const
 }
 
 float trace_shadow_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
-                        const vec3& light_position, std::vector<ConeSample>* record) {
-  return ConeFrame(mips, volume, s, 0.0f, false).shadow(p, light_position, record);
+                        const Light& light, std::vector<ConeSample>* record) {
+  return ConeFrame(mips, volume, s, 0.0f, false).shadow(p, light, record);
 }
 
 }  // namespace vct

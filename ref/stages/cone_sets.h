@@ -52,8 +52,11 @@ class ConeFrame {
   float rotation_for_pixel(int x, int y) const;
   vec4 specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
                 std::vector<ConeSample>* record = nullptr) const;
-  /// 1 - opacity toward light_position (world), marched no further than the light.
-  float shadow(const vec3& p, const vec3& light_position, std::vector<ConeSample>* record = nullptr) const;
+  /// 1 - opacity toward the light, marched no further than a spot or point light's position; a
+  /// directional light's cone goes against its direction until it leaves the volume.
+  float shadow(const vec3& p, const Light& light, std::vector<ConeSample>* record = nullptr) const;
+  /// The soft-shadow cone from p toward the light (texture space) and how far it may march.
+  Cone shadow_cone(const vec3& p, const Light& light, float* max_distance) const;
 
   int diffuse_count() const { return count_; }
 
@@ -88,9 +91,9 @@ Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, cons
 vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                          const vec3& n, const vec3& v, float roughness, std::vector<ConeSample>* record = nullptr);
 
-/// Soft-shadow visibility 1 - opacity of a cone from p toward light_position (world), aperture
-/// settings.soft_shadow_aperture_deg, marched no further than the light.
+/// Soft-shadow visibility 1 - opacity of a cone from p toward the light, aperture
+/// settings.soft_shadow_aperture_deg, marched no further than the light (ConeFrame::shadow).
 float trace_shadow_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
-                        const vec3& light_position, std::vector<ConeSample>* record = nullptr);
+                        const Light& light, std::vector<ConeSample>* record = nullptr);
 
 }  // namespace vct

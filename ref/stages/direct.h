@@ -1,4 +1,4 @@
-// Direct lighting from the spot lights: Cook–Torrance and the spot falloff from the shared header
+// Direct lighting from the punctual lights: Cook–Torrance and each kind's falloff from the shared header
 // (vct::sh), visibility from the PCF shadow maps.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace vct {
 
-/// Radiance leaving `p` toward `view_dir` (unit, from p toward the viewer) from all spot lights:
+/// Radiance leaving `p` toward `view_dir` (unit, from p toward the viewer) from all lights:
 /// sum over lights of f(l, v) * E(light) * max(n.l, 0) * shadow_visibility.
 vec3 direct_radiance(const Scene& scene, const std::vector<ShadowMap>& maps, const VctSettings& settings, const vec3& p,
                      const vec3& n, const vec3& view_dir, const SurfaceMaterial& m);

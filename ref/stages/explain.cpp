@@ -10,6 +10,8 @@
 #include "shared/vct_shared.h"
 #include "stages/cone_sets.h"
 #include "stages/indirect_pass.h"
+#include "stages/light_sample.h"
+#include "stages/shadow_map.h"
 
 namespace vct {
 
@@ -63,16 +65,36 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
   spec.result = trace_specular_cone(f.mips, scene.volume, s, p, n, view_vector(scene, p), g.material.at(x, y, 1),
                                     &spec.samples);
   cones.push_back(std::move(spec));
-  for (size_t li = 0; li < scene.spot_lights.size(); ++li) {
+  for (size_t li = 0; li < scene.lights.size(); ++li) {
     TracedCone sc{"shadow", int(li), Cone{}, 1.0f, vec4(0.0f), {}};
-    const float vis = trace_shadow_cone(f.mips, scene.volume, s, p, scene.spot_lights[li].position, &sc.samples);
-    sc.cone.origin = scene.volume.to_texture(p);
-    sc.cone.direction = glm::normalize(scene.volume.to_texture(scene.spot_lights[li].position) - sc.cone.origin);
-    sc.cone.aperture = s.soft_shadow_aperture_deg * kPi / 180.0f;
+    const ConeFrame frame(f.mips, scene.volume, s, 0.0f, false);
+    const float vis = frame.shadow(p, scene.lights[li], &sc.samples);
+    float max_distance = 0.0f;
+    sc.cone = frame.shadow_cone(p, scene.lights[li], &max_distance);
     sc.result = vec4(vec3(0.0f), 1.0f - vis);
     cones.push_back(std::move(sc));
   }
   return cones;
+}
+
+// Each light as this pixel sees it: kind, direction, irradiance, n.l and the shadow map's PCF
+// visibility (the shadow cone's is among the cones), so a dark pixel says which light and why.
+json lights_json(const Scene& scene, const FrameResult& f, const VctSettings& s, const vec3& p, const vec3& n) {
+  json arr = json::array();
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    const LightSample ls = sample_light(light, s.light_model, p);
+    const float pcf = i < f.shadow_maps.size() ? light_visibility(f.shadow_maps[i], light, p, s) : 1.0f;
+    arr.push_back({{"light", i},
+                   {"name", light.name},
+                   {"kind", light_kind_name(light.kind)},
+                   {"to_light", vec_json(ls.l)},
+                   {"distance", light.is_directional() ? json(nullptr) : json(ls.distance)},
+                   {"irradiance", vec_json(ls.irradiance)},
+                   {"n_dot_l", glm::dot(n, ls.l)},
+                   {"shadow_map_visibility", pcf}});
+  }
+  return arr;
 }
 
 // --- The picture: one z/y/x slice of the base level through the surface point. ---
@@ -202,6 +224,7 @@ PixelExplanation explain_pixel(const Scene& scene, const FrameResult& f, const V
     if (!img->empty()) comps[name] = vec_json(img->rgb(x, y));
   }
   j["components"] = comps;
+  j["lights"] = lights_json(scene, f, s, p, n);
   const std::vector<TracedCone> cones = trace_all(scene, f, s, x, y);
   json arr = json::array();
   for (const TracedCone& c : cones) arr.push_back(cone_json(c));

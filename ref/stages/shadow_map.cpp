@@ -2,55 +2,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "stages/cube_map.h"
 #include "stages/depth_raster.h"
 
 namespace vct {
 
-mat4 spot_light_view_proj(const SpotLight& light, const Bounds3& scene_bounds) {
-  const vec3 dir = glm::normalize(light.direction);
-  // The seed's up choice: +z unless nearly parallel (|cos| >= 0.99), then +x.
-  vec3 up = std::abs(glm::dot(dir, vec3(0.0f, 0.0f, 1.0f))) < 0.99f ? vec3(0.0f, 0.0f, 1.0f) : vec3(1.0f, 0.0f, 0.0f);
-  up = glm::normalize(glm::cross(up, dir));
-  const mat4 view = glm::lookAt(light.position, light.position + dir, up);
-  float far_plane = 1.0f;
-  if (!scene_bounds.empty()) {
-    float d = 0.0f;
-    for (int c = 0; c < 8; ++c) {
-      const vec3 corner((c & 1) ? scene_bounds.hi.x : scene_bounds.lo.x, (c & 2) ? scene_bounds.hi.y : scene_bounds.lo.y,
-                        (c & 4) ? scene_bounds.hi.z : scene_bounds.lo.z);
-      d = std::max(d, glm::length(corner - light.position));
-    }
-    far_plane = std::max(d * 1.01f, 1e-3f);
-  }
-  const float near_plane = far_plane / 20.0f;
-  const float fov = std::clamp(2.0f * light.outer_cone_angle, glm::radians(1.0f), glm::radians(170.0f));
-  return glm::perspective(fov, 1.0f, near_plane, far_plane) * view;
+namespace {
+
+// The seed's up choice: +z unless nearly parallel to the light's direction (|cos| >= 0.99), then +x.
+vec3 light_up(const vec3& dir) {
+  const vec3 up = std::abs(glm::dot(dir, vec3(0.0f, 0.0f, 1.0f))) < 0.99f ? vec3(0.0f, 0.0f, 1.0f) : vec3(1.0f, 0.0f, 0.0f);
+  return glm::normalize(glm::cross(up, dir));
 }
 
-std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings) {
-  std::vector<ShadowMap> maps;
-  const int size = settings.shadow_map_size;
-  for (const SpotLight& light : scene.spot_lights) {
-    ShadowMap m;
-    m.view_proj = spot_light_view_proj(light, scene.bounds);
-    m.depth.width = m.depth.height = size;
-    m.depth.channels = 1;
-    m.depth.channel_names = {"Z"};
-    // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
-    m.depth.data = render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene);
-    maps.push_back(std::move(m));
-  }
-  return maps;
+vec3 box_corner(const vec3& lo, const vec3& hi, int c) {
+  return vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
 }
 
-float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSettings& settings) {
-  const vec4 c = map.view_proj * vec4(world_pos, 1.0f);
-  if (c.w <= 0.0f) return 1.0f;
-  const vec3 ndc = vec3(c) / c.w;
-  if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || std::abs(ndc.z) > 1.0f) return 1.0f;
+Image depth_image(int size, std::vector<float> data) {
+  Image img;
+  img.width = img.height = size;
+  img.channels = 1;
+  img.channel_names = {"Z"};
+  img.data = std::move(data);
+  return img;
+}
+
+// PCF over one 2D depth image: the taps and the test of shadow_visibility (header).
+float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
   const float z = ndc.z * 0.5f + 0.5f;
-  const int w = map.depth.width, h = map.depth.height;
+  const int w = depth.width, h = depth.height;
   // Texel coordinates with y up (GL texture space); the image stores row 0 = top.
   const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
   const int k = std::max(1, settings.pcf_kernel);
@@ -60,10 +43,127 @@ float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSe
     for (int i = 0; i < k; ++i) {
       const int tx = std::clamp(int(std::floor(u + float(i) - half)), 0, w - 1);
       const int ty = std::clamp(int(std::floor(v + float(j) - half)), 0, h - 1);
-      if (z <= map.depth.at(tx, h - 1 - ty, 0) + settings.shadow_bias) ++lit;
+      if (z <= depth.at(tx, h - 1 - ty, 0) + settings.shadow_bias) ++lit;
     }
   }
   return float(lit) / float(k * k);
+}
+
+}  // namespace
+
+mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds) {
+  const vec3 dir = glm::normalize(light.direction);
+  const mat4 view = glm::lookAt(light.position, light.position + dir, light_up(dir));
+  const vec2 range = light_depth_range(light, scene_bounds);  // near = far / 20
+  const float fov = std::clamp(2.0f * light.outer_cone_angle, glm::radians(1.0f), glm::radians(170.0f));
+  return glm::perspective(fov, 1.0f, range.x, range.y) * view;
+}
+
+
+mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume) {
+  const vec3 dir = glm::normalize(light.direction);
+  const vec3 center = volume.to_world(vec3(0.5f));
+  // From one edge length behind the centre: outside the cube (its half diagonal is 0.87 of it).
+  const mat4 view = glm::lookAt(center - dir * volume.size, center, light_up(dir));
+  vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (int c = 0; c < 8; ++c) {
+    const vec3 v = vec3(view * vec4(box_corner(volume.origin, volume.origin + vec3(volume.size), c), 1.0f));
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  // View space looks down -z: near = -(largest z), far = -(smallest z).
+  return glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z) * view;
+}
+
+vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds) {
+  float far_plane = 1.0f;
+  if (!scene_bounds.empty()) {
+    float d = 0.0f;
+    for (int c = 0; c < 8; ++c) d = std::max(d, glm::length(box_corner(scene_bounds.lo, scene_bounds.hi, c) - light.position));
+    far_plane = std::max(d * 1.01f, 1e-3f);
+  }
+  return vec2(far_plane / 20.0f, far_plane);
+}
+
+std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings) {
+  std::vector<ShadowMap> maps;
+  const int size = settings.shadow_map_size;
+  for (const Light& light : scene.lights) {
+    ShadowMap m;
+    if (light.is_point()) {
+      const vec2 range = light_depth_range(light, scene.bounds);
+      for (int f = 0; f < 6; ++f) {
+        m.cube_view_proj[size_t(f)] = cube_face_view_proj(f, light.position, range.x, range.y);
+        m.cube[size_t(f)] =
+            depth_image(size, render_depth(scene.positions, scene.triangles, m.cube_view_proj[size_t(f)], size, size, &scene));
+      }
+    } else {
+      m.view_proj = light.is_directional() ? directional_light_view_proj(light, scene.volume)
+                                           : spot_light_view_proj(light, scene.bounds);
+      // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
+      m.depth =
+          depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene));
+    }
+    maps.push_back(std::move(m));
+  }
+  return maps;
+}
+
+int shadow_map_layers(const Scene& scene) {
+  int layers = 0;
+  for (const Light& light : scene.lights) layers += light.is_point() ? 6 : 1;
+  return layers;
+}
+
+float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSettings& settings) {
+  const vec4 c = map.view_proj * vec4(world_pos, 1.0f);
+  if (c.w <= 0.0f) return 1.0f;
+  const vec3 ndc = vec3(c) / c.w;
+  if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || std::abs(ndc.z) > 1.0f) return 1.0f;
+  return pcf_2d(map.depth, ndc, settings);
+}
+
+float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, const vec3& world_pos,
+                             const VctSettings& settings) {
+  const vec3 r = world_pos - light_position;
+  if (r == vec3(0.0f)) return 1.0f;
+  const int size = map.cube[0].width;
+  const int home = cube_face(r);
+  const vec2 st = cube_face_st(home, r);
+  const float u = st.x * float(size), v = st.y * float(size);
+  const int k = std::max(1, settings.pcf_kernel);
+  const float half = 0.5f * float(k - 1);
+  int lit = 0;
+  for (int j = 0; j < k; ++j) {
+    for (int i = 0; i < k; ++i) {
+      int face = home;
+      int tx = int(std::floor(u + float(i) - half)), ty = int(std::floor(v + float(j) - half));
+      if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
+        // Past the edge: the direction through this virtual texel's centre picks the face and
+        // texel it reads (GL's own selection, so a tap lands where a cube lookup would).
+        const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
+        face = cube_face(d);
+        const vec2 nst = cube_face_st(face, d);
+        tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
+        ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
+      }
+      // The point's depth in the face this tap reads; outside that face's depth range it is lit.
+      const vec4 c = map.cube_view_proj[size_t(face)] * vec4(world_pos, 1.0f);
+      const float z = c.z / c.w * 0.5f + 0.5f;
+      if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) {
+        ++lit;
+        continue;
+      }
+      const Image& img = map.cube[size_t(face)];
+      if (z <= img.at(tx, size - 1 - ty, 0) + settings.shadow_bias) ++lit;
+    }
+  }
+  return float(lit) / float(k * k);
+}
+
+float light_visibility(const ShadowMap& map, const Light& light, const vec3& world_pos, const VctSettings& settings) {
+  if (light.is_point()) return map.is_cube() ? cube_shadow_visibility(map, light.position, world_pos, settings) : 1.0f;
+  return map.depth.empty() ? 1.0f : shadow_visibility(map, world_pos, settings);
 }
 
 }  // namespace vct

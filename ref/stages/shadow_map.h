@@ -1,6 +1,8 @@
-// Spot-light shadow maps: depth rendered from each spot light with the depth-only path of the
-// software rasterizer (stages/depth_raster.h), and the PCF lookup used by direct lighting and
-// light injection (docs/pipeline.md, "Shadow maps").
+// Shadow maps of the three light kinds: depth rendered from each light with the depth-only path of
+// the software rasterizer (stages/depth_raster.h) -- a perspective map per spot, an orthographic
+// map fitted to the voxel volume per directional light, a cube of six 90 degree faces per point
+// light -- and the PCF lookup used by direct lighting and light injection (docs/pipeline.md,
+// "Shadow maps").
 #pragma once
 
 #include <vector>
@@ -16,15 +18,42 @@ namespace vct {
 /// rule), and a square perspective whose full field of view is twice the outer cone angle
 /// (clamped to [1, 170] degrees). far = distance to the farthest corner of `scene_bounds` (x1.01),
 /// near = far / 20 (keeps the constant NDC depth bias meaningful; see docs).
-mat4 spot_light_view_proj(const SpotLight& light, const Bounds3& scene_bounds);
+mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds);
 
-/// One depth map per spot light (settings.shadow_map_size squared, GL_LESS, cleared to 1).
+/// World -> light clip space for a directional light: the view looks along the light's direction
+/// (the spot's up rule) from outside the voxel volume, and an orthographic box is fitted to the
+/// volume's 8 corners projected into that view (x, y and depth), so every point of the volume is
+/// inside the map and depth spans exactly the volume along the light.
+mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume);
+
+/// Near and far planes of a spot light and of a point light's cube faces (far = distance to the
+/// farthest corner of `scene_bounds` x1.01, near = far / 20).
+vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds);
+
+/// One entry per light, in the scene's order (settings.shadow_map_size squared per map or face,
+/// GL_LESS, cleared to 1): `depth` for spot and directional lights, six `cube` faces for point
+/// lights.
 std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings);
+
+/// How many square depth images the scene's lights need (one per spot or directional light, six
+/// per point light): what the memory estimate and the GL texture array count.
+int shadow_map_layers(const Scene& scene);
 
 /// PCF visibility in [0,1] (1 = lit) of a world point for one light: settings.pcf_kernel^2 taps at
 /// texel offsets (i - (k-1)/2), nearest texel, clamp to edge; a tap is lit when the point's
 /// window depth <= stored depth + settings.shadow_bias. Points outside the light's frustum are lit
-/// (the spot falloff is zero there anyway).
+/// (the spot falloff is zero there anyway). Cube maps: cube_shadow_visibility.
 float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSettings& settings);
+
+/// A point light's PCF over its cube: the taps are the k x k texels around the point on the face
+/// its direction selects (cube_map.h); a tap past that face's edge takes the direction through
+/// its (virtual) texel centre and reads the texel that direction selects on the neighbouring face.
+/// Each tap compares the point's window depth in the face it reads (+ settings.shadow_bias).
+float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, const vec3& world_pos,
+                             const VctSettings& settings);
+
+/// The visibility of `light` at a world point through its map: the cube's for a point light,
+/// else the 2D map's.
+float light_visibility(const ShadowMap& map, const Light& light, const vec3& world_pos, const VctSettings& settings);
 
 }  // namespace vct

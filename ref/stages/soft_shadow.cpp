@@ -5,22 +5,18 @@
 #include "core/parallel.h"
 #include "shared/vct_shared.h"
 #include "stages/cone_sets.h"
+#include "stages/light_sample.h"
 
 namespace vct {
 
-vec3 spot_light_radiance(const SpotLight& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
-                         const SurfaceMaterial& m) {
-  vec3 l = light.position - p;
-  const float dist = glm::length(l);
-  if (dist <= 0.0f) return vec3(0.0f);
-  l /= dist;
-  const float n_dot_l = glm::dot(n, l);
+vec3 light_radiance(const Light& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
+                    const SurfaceMaterial& m) {
+  const LightSample ls = sample_light(light, s.light_model, p);
+  if (!(ls.distance > 0.0f)) return vec3(0.0f);
+  const float n_dot_l = glm::dot(n, ls.l);
   if (n_dot_l <= 0.0f) return vec3(0.0f);
-  const int model = s.light_model == LightModel::Seed ? sh::LIGHT_MODEL_SEED : sh::LIGHT_MODEL_GLTF;
-  const vec3 e = sh::spot_irradiance(model, light.color, light.intensity, dist, glm::dot(-l, glm::normalize(light.direction)),
-                                     std::cos(light.inner_cone_angle), std::cos(light.outer_cone_angle), light.range);
   const sh::SurfacePbr pbr = sh::surface_pbr(m.albedo, m.metallic, m.roughness, m.specular_factor, m.specular_color);
-  return sh::cook_torrance(pbr, n, v, l) * e * n_dot_l;
+  return sh::cook_torrance(pbr, n, v, ls.l) * ls.irradiance * n_dot_l;
 }
 
 SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y) {
@@ -53,13 +49,13 @@ Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& m
       const vec3 v = scene.camera.to_eye(p);
       vec3 sum(0.0f);
       float vis_sum = 0.0f;
-      for (const SpotLight& light : scene.spot_lights) {
-        const float vis = cones.shadow(p, light.position);
+      for (const Light& light : scene.lights) {
+        const float vis = cones.shadow(p, light);
         vis_sum += vis;
-        sum += vis * spot_light_radiance(light, s, p, m.shading_normal, v, m);
+        sum += vis * light_radiance(light, s, p, m.shading_normal, v, m);
       }
       out.set_rgb(x, y, sum);
-      if (visibility && !scene.spot_lights.empty()) visibility->at(x, y, 0) = vis_sum / float(scene.spot_lights.size());
+      if (visibility && !scene.lights.empty()) visibility->at(x, y, 0) = vis_sum / float(scene.lights.size());
     }
   });
   return out;

@@ -1,5 +1,5 @@
 // Cone-traced soft shadows (docs/pipeline.md, "Soft shadows"): with settings.soft_shadows the
-// direct light of each spot light is weighted by 1 - the opacity a cone toward the light gathers,
+// direct light of each light is weighted by 1 - the opacity a cone toward the light gathers,
 // instead of the shadow map's PCF visibility.
 #pragma once
 
@@ -11,9 +11,9 @@
 
 namespace vct {
 
-/// Unshadowed radiance reflected toward v from one spot light (BRDF x irradiance x n.l), from the
+/// Unshadowed radiance reflected toward v from one light of any kind (BRDF x irradiance x n.l), from the
 /// shared definitions in vct_shared.h.
-vec3 spot_light_radiance(const SpotLight& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
+vec3 light_radiance(const Light& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
                          const SurfaceMaterial& m);
 
 /// The material of a G-buffer pixel, as the BRDF sees it.

@@ -23,6 +23,16 @@ Image* shadow_map(FrameResult& f, int i, bool grow) {
   }
   return &f.shadow_maps[size_t(i)].depth;
 }
+// Member light * 6 + face of a point light's cube; spot and directional lights hold empty faces.
+Image* cube_face(FrameResult& f, int i, bool grow) {
+  if (i < 0) return nullptr;
+  const size_t light = size_t(i / 6);
+  if (light >= f.shadow_maps.size()) {
+    if (!grow) return nullptr;
+    f.shadow_maps.resize(light + 1);
+  }
+  return &f.shadow_maps[light].cube[size_t(i % 6)];
+}
 Volume* conservative(FrameResult& f, int, bool) { return &f.conservative_occupancy; }
 Volume* holes(FrameResult& f, int, bool) { return &f.holes; }
 // iso[0] is the base level itself (voxel.radiance); the family starts at level 1.
@@ -60,7 +70,9 @@ const std::vector<StageRow> kRows = {
   //  what it holds, docs/pipeline.md section, reference source, GL source, report walkthrough step (one
   //  anisotropic direction stands for all six there)
   {st::kShadowMap,             "shadow_map_{}",                 K::Image,  X::Light,    R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     shadow_map,                                        nullptr,
-   "the spot light's D32F depth map", "Shadow maps", "ref/stages/shadow_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
+   "a spot (perspective) or directional (orthographic) light's D32F depth map", "Shadow maps", "ref/stages/shadow_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
+  {st::kShadowMapCube,         "shadow_map_cube_{}",            K::Image,  X::CubeFace, R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     cube_face,                                         nullptr,
+   "one face of a point light's D32F cube (member light x 6 + face, GL's face order +x -x +y -y +z -z)", "Shadow maps", "ref/stages/shadow_map.cpp, ref/stages/cube_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
   {st::kGbufferCoverage,       "gbuffer_coverage",              K::Image,  X::None,     R::Judged,    P::Unit,     T::Coverage,       false, C::Always,            1, "",                     gbuffer<&GBuffer::coverage>,                       nullptr,
    "the camera G-buffer's coverage per pixel centre", "G-buffer and direct light", "ref/stages/gbuffer.cpp, ref/stages/raster.cpp", "gl/gl_pass_raster.cpp (gbuffer_pass), gl/shaders/gbuffer.frag", "gbuffer"},
   {st::kGbufferDepth,          "gbuffer_depth",                 K::Image,  X::None,     R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     gbuffer<&GBuffer::depth>,                          nullptr,
@@ -183,7 +195,10 @@ std::string stage_name(const StageRow& row, int index) {
 std::string dump_stem(const StageRow& row, int index) {
   std::string s = row.dump_stem;
   const size_t at = s.find("{}");
-  if (at != std::string::npos) s.replace(at, 2, std::to_string(index));
+  const std::string member = row.index == StageIndex::CubeFace
+                                 ? std::to_string(index / 6) + "_" + kCubeFaceNames[size_t(index % 6)]
+                                 : std::to_string(index);
+  if (at != std::string::npos) s.replace(at, 2, member);
   return s;
 }
 

@@ -3,7 +3,8 @@
 // stage_set*.cpp), the comparison's order and tolerance models, and the report (validate writes
 // the table into run.json; `vct stages --json` prints it). Adding a stage is one row here plus its computation (docs/CONVENTIONS.md).
 //
-// Families are numbered: "shadow_map.<light>", "mip.iso.<level>", "mip.<dir>.<level>" (level >= 1).
+// Families are numbered: "shadow_map.<light>", "shadow_map_cube.<light x 6 + face>", "mip.iso.<level>",
+// "mip.<dir>.<level>" (level >= 1).
 // Row order is the pipeline order: the first failing stage in this order is the one to blame.
 #pragma once
 
@@ -19,6 +20,7 @@ namespace vct {
 /// the prefix of their members: stage_name(stage_row(kMipIso), 2) is "mip.iso.2".
 namespace stage_names {
 inline constexpr char kShadowMap[] = "shadow_map";
+inline constexpr char kShadowMapCube[] = "shadow_map_cube";
 inline constexpr char kGbufferCoverage[] = "gbuffer.coverage";
 inline constexpr char kGbufferDepth[] = "gbuffer.depth";
 inline constexpr char kGbufferPosition[] = "gbuffer.position";
@@ -56,8 +58,9 @@ inline constexpr char kImageFinal[] = "image.final";
 
 enum class StageKind { Image, Volume };
 
-/// How a family's members are numbered (None: a single stage).
-enum class StageIndex { None, Light, MipLevel };
+/// How a family's members are numbered (None: a single stage). CubeFace: light x 6 + face, the
+/// faces in GL's order (kCubeFaceNames); dump stems spell the member "<light>_<face>".
+enum class StageIndex { None, Light, MipLevel, CubeFace };
 
 /// Judged: compared on its own. Auxiliary: a reference input that other stages' verdicts use
 /// (fragment counts, CAS intervals, texture slack). Derived: made by the judge from other stages.
@@ -155,7 +158,8 @@ const StageRow& stage_row(const std::string& name);
 
 /// Canonical name of a family member ("shadow_map", 2 -> "shadow_map.2") or the single name.
 std::string stage_name(const StageRow& row, int index = 0);
-/// Dump file stem of a member ("voxels_radiance_L{}", 3 -> "voxels_radiance_L3").
+/// Dump file stem of a member ("voxels_radiance_L{}", 3 -> "voxels_radiance_L3"; a cube face
+/// names its light and face: "shadow_map_cube_{}", 7 -> "shadow_map_cube_1_negx").
 std::string dump_stem(const StageRow& row, int index = 0);
 
 /// The mip chain row of an anisotropic direction (AnisoDir), or the isotropic chain for -1.

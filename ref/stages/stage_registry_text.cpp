@@ -15,6 +15,7 @@ const char* index_name(StageIndex i) {
     case StageIndex::None: return nullptr;
     case StageIndex::Light: return "light";
     case StageIndex::MipLevel: return "mip_level";
+    case StageIndex::CubeFace: return "cube_face";
   }
   return nullptr;
 }
@@ -64,6 +65,7 @@ std::string display_name(const StageRow& row) {
     case StageIndex::None: return row.name;
     case StageIndex::Light: return std::string(row.name) + ".<light>";
     case StageIndex::MipLevel: return std::string(row.name) + ".<level>";
+    case StageIndex::CubeFace: return std::string(row.name) + ".<light x 6 + face>";
   }
   return row.name;
 }
@@ -71,7 +73,10 @@ std::string display_name(const StageRow& row) {
 std::string display_stem(const StageRow& row) {
   std::string s = row.dump_stem;
   const size_t at = s.find("{}");
-  if (at != std::string::npos) s.replace(at, 2, row.index == StageIndex::Light ? "<light>" : "<level>");
+  const char* member = row.index == StageIndex::Light      ? "<light>"
+                       : row.index == StageIndex::CubeFace ? "<light>_<face>"
+                                                           : "<level>";
+  if (at != std::string::npos) s.replace(at, 2, member);
   return s;
 }
 

@@ -17,11 +17,18 @@
 
 namespace vct {
 
-/// One spot light's depth map. depth: 1 channel, GL window depth in [0,1] (depth range 0..1,
-/// cleared to 1), row 0 = top = +y of the light's NDC.
+/// Cube faces in GL's order (GL 4.5 Table 8.19: TEXTURE_CUBE_MAP_POSITIVE_X ... NEGATIVE_Z).
+constexpr std::array<const char*, 6> kCubeFaceNames = {"posx", "negx", "posy", "negy", "posz", "negz"};
+
+/// One light's depth map(s), GL window depth in [0,1] (depth range 0..1, cleared to 1), 1 channel,
+/// row 0 = top = +y of the light's NDC. Spot (perspective) and directional (orthographic) lights
+/// fill `depth`; a point light fills the six `cube` faces instead (docs/pipeline.md, "Shadow maps").
 struct ShadowMap {
   Image depth;
   mat4 view_proj{1.0f};  // world -> light clip space
+  std::array<Image, 6> cube;         // point lights: face f sees along its Table 8.19 major axis
+  std::array<mat4, 6> cube_view_proj{};  // world -> face clip space (90 degree perspective)
+  bool is_cube() const { return !cube[0].empty(); }
 };
 
 /// Camera G-buffer, one value per pixel centre, row 0 = top. Pixels no triangle covers have
@@ -69,7 +76,7 @@ struct VoxelMips {
 /// The final frame and its components (all linear radiance, 3 channels, row 0 = top).
 /// final = direct + kd*albedo*indirect_diffuse + F*indirect_specular + emission (+ particles).
 struct FrameImages {
-  Image direct;            // Cook–Torrance from spot lights with shadow-map (or cone) visibility
+  Image direct;            // Cook–Torrance from the lights with shadow-map (or cone) visibility
   Image indirect_diffuse;  // cosine-weighted mean incident radiance from the diffuse cones
   Image indirect_specular; // incident radiance from the specular cone
   Image diffuse_term;      // kd * albedo * indirect_diffuse (what final adds)

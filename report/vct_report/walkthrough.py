@@ -3,17 +3,18 @@ settings that drive it (keys as in run.json["settings"]["vct"]). Which stages ea
 the stage registry's walkthrough_step column (report/vct_report/registry.py), not a list here."""
 
 STAGES = [
-    ("shadow", "Shadow map", "Each spot light renders the scene's depth from its own point of view into a D32F depth map "
-     "(perspective, square). Later, a surface point is lit if its depth seen from the light is not "
+    ("shadow", "Shadow map", "Each light renders the scene's depth from its own point of view into D32F depth maps: "
+     "a spot one perspective square map, a directional light one orthographic map fitted to the voxel volume, "
+     "a point light a cube of six 90-degree faces (shadow_map_cube.<light x 6 + face>). Later, a surface point is lit if its depth seen from the light is not "
      "behind the stored depth plus a constant bias; PCF averages a k x k block of such tests for soft edges.",
      ["shadow_map_size", "pcf_kernel", "shadow_bias"], "shadow_maps"),
     ("gbuffer", "G-buffer", "The camera pass rasterizes the scene once and stores, per pixel centre, everything shading needs: "
      "world position, shading normal (after normal mapping), base colour, metallic/roughness/specular, "
      "emission, depth and coverage. All later screen-space stages read only these images.",
      ["width", "height"], "gbuffer"),
-    ("direct", "Direct light", "Cook-Torrance (GGX, Schlick, Smith) from every spot light, with the shadow-map visibility (or the "
+    ("direct", "Direct light", "Cook-Torrance (GGX, Schlick, Smith) from every light, with the shadow-map visibility (or the "
      "cone-traced visibility when soft shadows are on). The light model decides the falloff: glTF "
-     "(candela, inverse square) or the seed's smoothstep x 1/(1+d).",
+     "(candela, inverse square; a directional light's lux has no falloff) or the seed's smoothstep x 1/(1+d).",
      ["light_model", "pcf_kernel", "shadow_bias", "soft_shadows"], "direct"),
     ("voxelize", "Voxelization", "Every triangle is projected along its dominant axis and rasterized into an N^3 grid; each covered "
      "sample becomes a fragment in one voxel. The CPU reference also computes the exact conservative set "

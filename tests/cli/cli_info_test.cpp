@@ -63,7 +63,8 @@ TEST(CliInfo, PrintsEveryCommittedScene) {
   const std::pair<const char*, const char*> expected[] = {
       {"cornell_box.gltf", "triangles: 2382"},   {"demo_room.gltf", "particle emitters: 2"},
       {"furnace_sphere.gltf", "triangles: 3968"}, {"plane_spot.gltf", "intensity 10 cd"},
-      {"tiny_triangles.gltf", "triangles: 45002"}, {"thin_wall.gltf", "triangles: 24"}};
+      {"tiny_triangles.gltf", "triangles: 45002"}, {"thin_wall.gltf", "triangles: 24"},
+      {"sun_room.gltf", "'sun' directional: direction"}, {"sun_room.gltf", "'lamp_front' point: position"}};
   for (const auto& [file, text] : expected) {
     const Result r = vct("info " + scene(file));
     ASSERT_EQ(r.exit_code, 0) << file << ": " << r.err;

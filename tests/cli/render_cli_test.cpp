@@ -63,6 +63,12 @@ TEST(RenderCli, BuiltinSceneWritesTheRunDirectory) {
   EXPECT_GE(ex["cones"].size(), 6u);  // 5 diffuse + specular + one shadow cone per light
   EXPECT_EQ(ex["cones"][0]["kind"], "diffuse");
   EXPECT_FALSE(ex["cones"][0]["samples"].empty());
+  // Each light as the pixel sees it (the Cornell box: its ceiling spot).
+  ASSERT_EQ(ex["lights"].size(), 1u);
+  EXPECT_EQ(ex["lights"][0]["kind"], "spot");
+  const double vis = ex["lights"][0]["shadow_map_visibility"].get<double>();
+  EXPECT_GE(vis, 0.0);
+  EXPECT_LE(vis, 1.0);
 }
 
 TEST(RenderCli, ConeCountAndTiltReachDumpsAndExplain) {

@@ -88,6 +88,33 @@ TEST(StageSetFrame, MissingOrMisSizedInputsAreInputErrors) {
   EXPECT_THROW(frame_from_stage_set(full, moved, s.vct), InputError);
 }
 
+// Shadow maps name their light: a point light's cube faces rebuild against a scene whose light N
+// is a point light, and the same set is refused (wrong --scene) when light N is a spot or when the
+// scene has another number of lights.
+TEST(StageSetFrame, ShadowMapsMustMatchTheScenesLightKinds) {
+  Scene scene = load_scene("");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  Light lamp;
+  lamp.kind = LightKind::Point;
+  lamp.position = vec3(0.3f, 1.5f, 0.2f);
+  lamp.intensity = 2.0f;
+  scene.lights.push_back(lamp);
+  const Settings s = small(false, false);
+  const StageSet set = stage_set_from_frame(render_ref_frame(scene, s), s.vct);
+  EXPECT_EQ(set.images.count("shadow_map.0"), 1u);
+  EXPECT_EQ(set.images.count("shadow_map.1"), 0u);
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(set.images.count("shadow_map_cube." + std::to_string(6 + f)), 1u) << f;
+  const FrameResult rebuilt = frame_from_stage_set(set, scene, s.vct);
+  ASSERT_EQ(rebuilt.shadow_maps.size(), 2u);
+  EXPECT_TRUE(rebuilt.shadow_maps[1].is_cube());
+  Scene spots = scene;
+  spots.lights[1].kind = LightKind::Spot;
+  EXPECT_THROW(frame_from_stage_set(set, spots, s.vct), InputError);
+  Scene one = scene;
+  one.lights.pop_back();
+  EXPECT_THROW(frame_from_stage_set(set, one, s.vct), InputError);
+}
+
 // An input of the wrong kind is missing, not an empty slot whose pixels are indexed, and an info
 // list that is not all numbers is kept as text (info is free-form).
 TEST(StageSetFrame, InputsOfTheWrongKindAreMissingAndInfoStaysFreeForm) {

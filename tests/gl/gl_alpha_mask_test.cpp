@@ -66,11 +66,11 @@ const FrameResult& foliage_reference() {
 TEST(GlAlphaMask, HalfMaskedCardShowsOnlyItsRightHalf) {
   VCT_REQUIRE_GL();
   Scene scene = vct::test::half_masked_card(true);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.3f, 0.2f, 3.0f);
   l.direction = vec3(0.0f, 0.0f, -1.0f);
   l.outer_cone_angle = 0.6f;
-  scene.spot_lights.push_back(l);
+  scene.lights.push_back(l);
   Settings s = small_settings(16, 48);
   s.vct.shadow_map_size = 64;
   const FrameResult gl = render_gl_frame(*ctx, scene, s);

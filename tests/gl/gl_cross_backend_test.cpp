@@ -72,7 +72,7 @@ void print(const char* what, const Stats& s) {
 const Scene& emission_only_box() {
   static const Scene scene = [] {
     Scene s = cornell_box();
-    s.spot_lights.clear();
+    s.lights.clear();
     for (Material& m : s.materials)
       if (!m.is_emissive()) m.emissive_factor = vec3(m.base_color_factor) * 0.37f;
     return s;
@@ -267,7 +267,7 @@ std::pair<double, double> cas_inside(const Scene& scene, float slack) {
   }
   EXPECT_GT(compared, 1000u);
   std::printf("[gl vs ref] CAS RGBA8 voxels (%s): %zu of %zu inside the CPU interval, %zu within %.3g of it\n",
-              scene.spot_lights.empty() ? "emission only" : "lit", inside, compared, inside_slack, double(slack));
+              scene.lights.empty() ? "emission only" : "lit", inside, compared, inside_slack, double(slack));
   return {double(inside) / double(compared), double(inside_slack) / double(compared)};
 }
 

@@ -43,7 +43,7 @@ TEST(GlScenes, EverySceneRenders) {
     EXPECT_TRUE(finite_non_negative(r.images.final_image));
     EXPECT_TRUE(finite_non_negative(r.images.direct));
     EXPECT_TRUE(finite_non_negative(r.images.indirect_diffuse));
-    EXPECT_EQ(r.shadow_maps.size(), scene.spot_lights.size());
+    EXPECT_EQ(r.shadow_maps.size(), scene.lights.size());
     EXPECT_GT(std::stoll(r.info.at("covered_voxels")), 0);
   }
 }

@@ -526,6 +526,122 @@ ElementCase spot_irradiance_case() {
   return c;
 }
 
+// directional_irradiance: color * lux, 1 u per side.
+ElementCase directional_irradiance_case() {
+  ElementCase c{"directional_irradiance", "f", 1, "", nullptr, {}};
+  for (float lux : {0.0f, 1e-3f, 1.0f, 8.0f, 1e5f}) c.inputs.push_back(words(vec4(1.0f, 0.9f, 0.3f, lux)));
+  c.glsl = "vec4 a = fin(0u);\nput(0u, vec4(directional_irradiance(a.xyz, a.w), 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]);
+    const vec3 e = sh::directional_irradiance(vec3(a), a.w);
+    return std::vector<ExpectedSlot>{within(vec4(e, 0), glm::dvec4(kU * 2.0 * glm::abs(glm::dvec3(e)), 0))};
+  };
+  return c;
+}
+
+// point_irradiance. Seed: color*I 1 u, 1 + d 1 u, division: GL 7 u, C++ 3 u = 10 u relative.
+// glTF: color*I, *window 2 u, d*d 1 u, division: GL 8 u, C++ 4 u = 12 u relative, plus the window's
+// absolute bound times color*I/d^2.
+glm::dvec3 point_irradiance_bound(int model, const vec3& color, float intensity, float d, float range,
+                                  const vec3& e) {
+  if (model == sh::LIGHT_MODEL_SEED) return kU * 10.0 * glm::abs(glm::dvec3(e));
+  const double rest = double(intensity) / std::max(double(d) * double(d), 1e-8);
+  glm::dvec3 b;
+  for (int i = 0; i < 3; ++i)
+    b[i] = kU * (6.0 + kGlDiv + kCpuDiv) * std::abs(double(e[i])) + double(color[i]) * rest * range_window_bound(d, range);
+  return b;
+}
+
+ElementCase point_irradiance_case() {
+  ElementCase c{"point_irradiance", "ff", 1, "", nullptr, {}};
+  for (int model : {sh::LIGHT_MODEL_GLTF, sh::LIGHT_MODEL_SEED})
+    for (float d : {0.0f, 1e-5f, 0.5f, 3.0f, 9.9f, 10.0f, 30.0f})
+      for (float range : {0.0f, 10.0f})
+        c.inputs.insert(c.inputs.end(), {words(vec4(1.0f, 0.9f, 0.3f, 40.0f)),
+                                         uvec4(uint32_t(model), words(vec4(d)).x, words(vec4(range)).x, 0u)});
+  c.in_kinds = "fu";
+  c.glsl =
+      "vec4 a = fin(0u); uvec4 m = uin(1u);\n"
+      "put(0u, vec4(point_irradiance(int(m.x), a.xyz, a.w, uintBitsToFloat(m.y), uintBitsToFloat(m.z)), 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]);
+    const int model = int(in[1].x);
+    const float d = as_float(in[1].y), range = as_float(in[1].z);
+    const vec3 e = sh::point_irradiance(model, vec3(a), a.w, d, range);
+    return std::vector<ExpectedSlot>{within(vec4(e, 0), glm::dvec4(point_irradiance_bound(model, vec3(a), a.w, d, range, e), 0))};
+  };
+  return c;
+}
+
+// punctual_irradiance: the dispatch on the kind; each branch's bound (the spot's as in
+// spot_irradiance_case, glTF model with a soft cone).
+ElementCase punctual_irradiance_case() {
+  ElementCase c{"punctual_irradiance", "ff", 1, "", nullptr, {}};
+  for (int kind : {sh::LIGHT_KIND_SPOT, sh::LIGHT_KIND_POINT, sh::LIGHT_KIND_DIRECTIONAL})
+    for (float ca : {0.0f, 0.85f, 0.95f})
+      for (float d : {0.5f, 3.0f})
+        c.inputs.insert(c.inputs.end(), {words(vec4(1.0f, 0.9f, 0.3f, 40.0f)), words(vec4(d, ca, 0.9f, 0.8f)),
+                                         uvec4(uint32_t(kind), words(vec4(10.0f)).x, 0u, 0u)});
+  c.in_kinds = "ffu";
+  c.glsl =
+      "vec4 a = fin(0u), b = fin(1u); uvec4 m = uin(2u);\n"
+      "put(0u, vec4(punctual_irradiance(LIGHT_MODEL_GLTF, int(m.x), a.xyz, a.w, b.x, b.y, b.z, b.w, "
+      "uintBitsToFloat(m.y)), 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]), b = floats(in[1]);
+    const int kind = int(in[2].x);
+    const float range = as_float(in[2].y);
+    const vec3 e = sh::punctual_irradiance(sh::LIGHT_MODEL_GLTF, kind, vec3(a), a.w, b.x, b.y, b.z, b.w, range);
+    glm::dvec3 bound;
+    if (kind == sh::LIGHT_KIND_DIRECTIONAL) {
+      bound = kU * 2.0 * glm::abs(glm::dvec3(e));
+    } else if (kind == sh::LIGHT_KIND_POINT) {
+      bound = point_irradiance_bound(sh::LIGHT_MODEL_GLTF, vec3(a), a.w, b.x, range, e);
+    } else {
+      const double rest = double(a.w) * double(sh::spot_cone_gltf(b.y, b.z, b.w)) / std::max(double(b.x) * double(b.x), 1e-8);
+      for (int i = 0; i < 3; ++i)
+        bound[i] = kU * (kSpotConeU + 6.0 + 2.0 + kGlDiv + kCpuDiv) * std::abs(double(e[i])) +
+                   double(a[i]) * rest * range_window_bound(b.x, range);
+    }
+    return std::vector<ExpectedSlot>{within(vec4(e, 0), glm::dvec4(bound, 0))};
+  };
+  return c;
+}
+
+// to_light_direction. Directional: -normalize(direction), kNormalizeNorm in norm (16 u per unit
+// component). Positional: the difference p_l - p has absolute error 1 u (|p_l| + |p|) per component
+// and side; length = sqrt(dot) (dot 3 u, GL sqrt = 1/inversesqrt: 4 + 5 u; C++ 1 u, halved through
+// the root) and the division (GL 5 u, C++ 1 u) are relative to the unit result: per component
+// 2 u (|p_l| + |p|)_i / dist + (1.5 + 9 + 5) + (1.5 + 1 + 1) u. p = p_l gives (0, 0, 1) on both.
+ElementCase to_light_direction_case() {
+  ElementCase c{"to_light_direction", "ff", 1, "", nullptr, {}};
+  const std::vector<vec3> points = {{0, 0, 0}, {1, 2, 3}, {-3.5f, 0.25f, 7}, {1e-3f, 0, 0}, {100, -50, 20}};
+  for (int kind : {sh::LIGHT_KIND_POINT, sh::LIGHT_KIND_DIRECTIONAL})
+    for (const vec3& lp : points)
+      for (const vec3& p : points)
+        c.inputs.insert(c.inputs.end(), {words(vec4(lp, float(kind))), words(vec4(p, 0.0f))});
+  c.glsl =
+      "vec4 a = fin(0u), b = fin(1u);\n"
+      "put(0u, vec4(to_light_direction(int(a.w), a.xyz, normalize(vec3(0.3f, -1.0f, 0.2f)), b.xyz), 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]), b = floats(in[1]);
+    const int kind = int(a.w);
+    const vec3 dir = glm::normalize(vec3(0.3f, -1.0f, 0.2f));
+    const vec3 l = sh::to_light_direction(kind, vec3(a), dir, vec3(b));
+    glm::dvec4 bound(0.0);
+    if (kind == sh::LIGHT_KIND_DIRECTIONAL) {
+      // The GL side normalizes the direction twice (the argument, then inside): 2 x the norm bound.
+      bound = glm::dvec4(glm::dvec3(2.0 * kNormalizeNorm * kU), 0.0);
+    } else if (vec3(a) != vec3(b)) {
+      const double dist = glm::length(glm::dvec3(vec3(a)) - glm::dvec3(vec3(b)));
+      for (int i = 0; i < 3; ++i)
+        bound[i] = kU * (2.0 * (std::abs(double(a[i])) + std::abs(double(b[i]))) / dist + 15.5 + 3.5);
+    }
+    return std::vector<ExpectedSlot>{within(vec4(l, 0), bound)};
+  };
+  return c;
+}
+
 // Cone blocks as stages/cone_sets.h builds them: the seed set (5 cones, 45 degrees), 1 cone,
 // 9 at 60 degrees and the largest set; the weights are arbitrary distinct values.
 std::vector<sh::DiffuseConeBlock> cone_blocks() {
@@ -824,6 +940,10 @@ std::vector<ElementCase> all_cases() {
           spot_cone_case(),
           range_window_case(),
           spot_irradiance_case(),
+          directional_irradiance_case(),
+          point_irradiance_case(),
+          punctual_irradiance_case(),
+          to_light_direction_case(),
           cone_direction_case(),
           cone_block_case(),
           aperture_case(),
@@ -851,7 +971,7 @@ TEST(SharedHeaderElement, EverySharedFunctionHasACase) {
     EXPECT_TRUE(std::regex_search(called, std::regex("\\b" + name + "\\s*\\(")))
         << name << " (ref/shared/) has no element case";
   }
-  EXPECT_GE(functions, 28u);  // the regex still finds the declarations (28 today)
+  EXPECT_GE(functions, 32u);  // the regex still finds the declarations (32 today)
 }
 
 TEST(SharedHeaderElement, EveryFunctionMatchesTheCppBuildWithinItsGlslBound) {

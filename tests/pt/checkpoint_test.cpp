@@ -87,7 +87,7 @@ TEST(Checkpoint, IncompatibleCheckpointStartsAfresh) {
   EXPECT_EQ(other.resumed_from, 0u);
   EXPECT_NE(other.checkpoint_note.find("settings"), std::string::npos);
   Scene moved = scene;
-  moved.spot_lights[0].intensity *= 2.0f;
+  moved.lights[0].intensity *= 2.0f;
   const PathtraceRunResult other_scene = run(moved, settings_with(3, 2), a.str());
   EXPECT_EQ(other_scene.resumed_from, 0u);
   EXPECT_NE(other_scene.checkpoint_note.find("scene"), std::string::npos);

@@ -18,13 +18,13 @@ Scene bent_plane(const vec3& light_pos, const vec3& light_dir, const vec3& norma
   const uint32_t m = test::add_material(s, test::lambertian(vec3(0.8f)));
   test::add_quad(s, vec3(-1, 0, -1), vec3(0, 0, 2), vec3(2, 0, 0), m);  // y = 0, winding +y
   for (vec3& n : s.normals) n = glm::normalize(normal);
-  SpotLight l;
+  Light l;
   l.position = light_pos;
   l.direction = glm::normalize(light_dir);
   l.intensity = 10.0f;
   l.outer_cone_angle = 1.5f;
   l.inner_cone_angle = 1.4f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.camera = test::look_at(vec3(0.0f, 2.0f, 0.5f), vec3(0.0f), vec3(0, 0, -1), 1.0f);
   test::finish(s);
   return s;

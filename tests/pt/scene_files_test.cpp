@@ -49,8 +49,8 @@ TEST(SceneFiles, PlaneSpotDirectClosedForm) {
   const std::string path = scene_path("plane_spot.gltf");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
   const Scene scene = load_gltf_file(path);
-  ASSERT_EQ(scene.spot_lights.size(), 1u);
-  const SpotLight& l = scene.spot_lights[0];
+  ASSERT_EQ(scene.lights.size(), 1u);
+  const Light& l = scene.lights[0];
   const vec3 albedo(scene.materials[0].base_color_factor);
   const float plane_y = scene.bounds.lo.y;
   ASSERT_NEAR(scene.bounds.hi.y, plane_y, 1e-6f);  // a horizontal plane

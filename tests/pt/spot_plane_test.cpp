@@ -21,7 +21,7 @@ constexpr int kSize = 40;
 
 struct Setup {
   Scene scene;
-  SpotLight light;
+  Light light;
   vec3 blocker_corner{-0.9f, 1.2f, -0.5f}, blocker_u{0.5f, 0.0f, 0.0f}, blocker_v{0.0f, 0.0f, 0.4f};
 };
 
@@ -38,7 +38,7 @@ Setup make_setup(const Material& floor) {
   s.light.inner_cone_angle = 0.35f;
   s.light.outer_cone_angle = 0.6f;
   s.light.range = 6.0f;
-  s.scene.spot_lights.push_back(s.light);
+  s.scene.lights.push_back(s.light);
   s.scene.camera = test::look_at(vec3(0.0f, 3.0f, 0.0f), vec3(0.0f), vec3(0, 0, -1), 1.1f);
   test::finish(s.scene);
   return s;
@@ -70,7 +70,7 @@ int crosses_blocker(const Setup& s, const vec3& p, const vec3& q) {
   return -1;
 }
 
-vec3 expected_irradiance(const SpotLight& l, LightModel model, const vec3& p) {
+vec3 expected_irradiance(const Light& l, LightModel model, const vec3& p) {
   const vec3 to_p = p - l.position;
   const float d = glm::length(to_p);
   const float cos_axis = glm::dot(l.direction, to_p / d);
@@ -141,11 +141,11 @@ TEST(SpotPlane, AlonePlaneHasNoIndirectLight) {
   Scene scene;
   const uint32_t m = test::add_material(scene, test::lambertian(vec3(0.8f)));
   test::add_quad(scene, vec3(-10, 0, -10), vec3(0, 0, 20), vec3(20, 0, 0), m);
-  SpotLight l;
+  Light l;
   l.position = vec3(0, 2, 0);
   l.direction = vec3(0, -1, 0);
   l.intensity = 3.0f;
-  scene.spot_lights.push_back(l);
+  scene.lights.push_back(l);
   scene.camera = test::look_at(vec3(0.5f, 3.0f, 0.5f), vec3(0.0f), vec3(0, 0, -1), 1.0f);
   test::finish(scene);
   PtSettings ps;

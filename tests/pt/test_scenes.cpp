@@ -127,13 +127,13 @@ Scene demo_room() {
   add_quad(s, vec3(0.2f, 0.6f, -0.6f), vec3(0, 0, 0.5f), vec3(0.5f, 0, 0), metal);  // block top, +y
   add_quad(s, vec3(0.2f, 0.0f, -0.1f), vec3(0.5f, 0, 0), vec3(0, 0.6f, 0), metal);   // block front, +z
   add_icosphere(s, vec3(-0.4f, 0.35f, 0.1f), 0.35f, 2, false, glossy);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.6f, 1.8f, 0.6f);
   l.direction = glm::normalize(vec3(-0.6f, -1.0f, -0.5f));
   l.intensity = 4.0f;
   l.inner_cone_angle = 0.3f;
   l.outer_cone_angle = 0.6f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.camera = look_at(vec3(0.0f, 1.0f, 0.95f), vec3(0.0f, 1.5f, -1.0f), vec3(0, 1, 0), 1.2f);
   finish(s);
   return s;

@@ -38,6 +38,8 @@ def test_scene_is_the_builtin_cornell_box(scene):
     assert scene.source == "builtin:cornell_box"
     assert scene.triangle_count == 2382  # docs/pipeline.md, "Measured"
     assert scene.spot_light_count == 1
+    assert scene.light_count == 1
+    assert scene.light_kinds == ["spot"]
 
 
 def test_shapes_follow_the_settings(ref):

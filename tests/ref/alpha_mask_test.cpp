@@ -81,11 +81,11 @@ float depth_to_world_z(const mat4& view_proj, int width, int height, float wx, f
 
 TEST(AlphaMask, ShadowMapDepthSeesOnlyTheRightHalf) {
   Scene s = half_masked_card(true);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.3f, 0.2f, 3.0f);
   l.direction = vec3(0.0f, 0.0f, -1.0f);
   l.outer_cone_angle = 0.6f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   VctSettings st;
   st.shadow_map_size = 64;
   const ShadowMap m = render_shadow_maps(s, st).at(0);

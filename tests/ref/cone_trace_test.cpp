@@ -80,7 +80,11 @@ TEST(ConeTrace, EmptyVolumeGivesZeroIndirect) {
   const DiffuseConeSet set = trace_diffuse_cones(m, vol, s, vec3(0.5f), vec3(0.0f, 1.0f, 0.0f), 0.3f);
   EXPECT_EQ(set.radiance, vec3(0.0f));
   EXPECT_EQ(trace_specular_cone(m, vol, s, vec3(0.5f), vec3(0, 1, 0), glm::normalize(vec3(1, 1, 0)), 0.2f), vec4(0.0f));
-  EXPECT_FLOAT_EQ(trace_shadow_cone(m, vol, s, vec3(0.2f), vec3(0.8f)), 1.0f);
+  Light light;
+  light.position = vec3(0.8f);
+  EXPECT_FLOAT_EQ(trace_shadow_cone(m, vol, s, vec3(0.2f), light), 1.0f);
+  light.kind = LightKind::Directional;
+  EXPECT_FLOAT_EQ(trace_shadow_cone(m, vol, s, vec3(0.2f), light), 1.0f);
 
   // Through the whole image pass as well.
   GBuffer g;

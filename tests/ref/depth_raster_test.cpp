@@ -143,8 +143,8 @@ TEST(DepthRaster, RandomClippedTrianglesMatchTheVisibilityBuffer) {
 TEST(DepthRaster, CommittedScenesShadowMapsMatchTheVisibilityBuffer) {
   for (const std::string name : {"", "thin_wall.gltf", "tiny_triangles.gltf"}) {
     const Scene s = name.empty() ? load_scene("") : load_gltf_file(std::string(VCT_SOURCE_DIR) + "/scenes/" + name);
-    ASSERT_FALSE(s.spot_lights.empty()) << name;
-    for (const SpotLight& light : s.spot_lights)
+    ASSERT_FALSE(s.lights.empty()) << name;
+    for (const Light& light : s.lights)
       for (int size : {96, 200}) {
         const mat4 vp = spot_light_view_proj(light, s.bounds);
         EXPECT_GT(expect_same_depth(s.positions, s.triangles, vp, size, size), size * size / 4) << name << " " << size;
@@ -157,7 +157,7 @@ TEST(DepthRaster, ShadowMapsUseTheDepthPath) {
   VctSettings st;
   st.shadow_map_size = 128;
   const std::vector<ShadowMap> maps = render_shadow_maps(s, st);
-  ASSERT_EQ(maps.size(), s.spot_lights.size());
+  ASSERT_EQ(maps.size(), s.lights.size());
   for (const ShadowMap& m : maps) {
     EXPECT_EQ(m.depth.width, 128);
     EXPECT_EQ(m.depth.height, 128);

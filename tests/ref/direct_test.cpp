@@ -22,13 +22,13 @@ Scene lambert_plane(bool occluder) {
   s.materials[m].specular_factor = 0.0f;  // F = 0: a pure Lambertian surface
   test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
   if (occluder) test::add_quad(s, {0.3f, 0.5f, -0.1f}, {0.5f, 0.5f, -0.1f}, {0.5f, 0.5f, 0.1f}, {0.3f, 0.5f, 0.1f}, {0, 1, 0}, m);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.0f, 1.0f, 0.0f);
   l.direction = vec3(0.0f, -1.0f, 0.0f);
   l.intensity = kIntensity;
   l.inner_cone_angle = kInner;
   l.outer_cone_angle = kOuter;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
   s.camera.position = vec3(0.0f, 3.0f, 0.001f);
   s.camera.forward = vec3(0.0f, -1.0f, 0.0f);

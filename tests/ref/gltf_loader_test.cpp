@@ -209,8 +209,8 @@ TEST(GltfLoader, SpotLightTakesPositionAndMinusZFromItsNode) {
                           {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   d.j["scenes"][0]["nodes"].push_back(1);
   const Scene s = load(d);
-  ASSERT_EQ(s.spot_lights.size(), 1u);
-  const SpotLight& l = s.spot_lights[0];
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& l = s.lights[0];
   expect_vec(l.position, vec3(0, 3, 0));
   expect_vec(l.direction, vec3(0, -1, 0));
   EXPECT_EQ(l.intensity, 12.5f);
@@ -219,16 +219,40 @@ TEST(GltfLoader, SpotLightTakesPositionAndMinusZFromItsNode) {
   EXPECT_FLOAT_EQ(l.outer_cone_angle, 0.6f);
 }
 
-TEST(GltfLoader, PointAndDirectionalLightsAreRefused) {
-  for (const char* type : {"point", "directional"}) {
-    auto d = quad_doc();
-    d.j["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", type}}}}}}};
-    try {
-      (void)load(d);
-      FAIL() << type;
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(std::string("is a ") + type + " light"), std::string::npos) << e.what();
-    }
+TEST(GltfLoader, PointAndDirectionalLightsLoadWithTheirKind) {
+  auto d = quad_doc();
+  const float h = std::sqrt(0.5f);
+  d.j["extensions"] = {{"KHR_lights_punctual",
+                        {{"lights", {{{"name", "lamp"}, {"type", "point"}, {"intensity", 7.0}, {"range", 4.0}},
+                                     {{"name", "sun"}, {"type", "directional"}, {"intensity", 3.0}, {"color", {1, 0.9, 0.8}}}}}}}};
+  d.j["nodes"].push_back({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  d.j["nodes"].push_back({{"translation", {5, 5, 5}}, {"rotation", {-h, 0, 0, h}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  d.j["scenes"][0]["nodes"].push_back(1);
+  d.j["scenes"][0]["nodes"].push_back(2);
+  const Scene s = load(d);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].kind, LightKind::Point);
+  EXPECT_EQ(s.lights[0].name, "lamp");
+  expect_vec(s.lights[0].position, vec3(1, 2, 3));
+  EXPECT_EQ(s.lights[0].intensity, 7.0f);
+  EXPECT_EQ(s.lights[0].range, 4.0f);
+  EXPECT_EQ(s.lights[1].kind, LightKind::Directional);
+  expect_vec(s.lights[1].direction, vec3(0, -1, 0));  // the node's -Z turned straight down
+  EXPECT_EQ(s.lights[1].intensity, 3.0f);
+  EXPECT_EQ(s.lights[1].color, vec3(1.0f, 0.9f, 0.8f));
+  EXPECT_EQ(s.lights[1].range, 0.0f);
+  EXPECT_STREQ(light_kind_name(s.lights[1].kind), "directional");
+}
+
+TEST(GltfLoader, UnknownLightTypeIsRefused) {
+  auto d = quad_doc();
+  d.j["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "area"}}}}}}};
+  try {
+    (void)load(d);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has type 'area'"), std::string::npos) << e.what();
   }
 }
 

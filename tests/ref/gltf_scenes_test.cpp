@@ -56,8 +56,8 @@ TEST(Scenes, CornellBoxIsTheBuiltInDefault) {
   EXPECT_EQ(lambertian, 4);  // white, red, green walls + the panel
   EXPECT_EQ(emissive, 1);
   EXPECT_EQ(metals, 1);
-  ASSERT_EQ(file.spot_lights.size(), 1u);
-  EXPECT_NEAR(file.spot_lights[0].direction.y, -1.0f, 1e-6f);
+  ASSERT_EQ(file.lights.size(), 1u);
+  EXPECT_NEAR(file.lights[0].direction.y, -1.0f, 1e-6f);
   EXPECT_EQ(file.bounds.lo, vec3(-1, 0, -1));
   EXPECT_EQ(file.bounds.hi, vec3(1, 2, 1));
 }
@@ -68,7 +68,7 @@ TEST(Scenes, DemoRoomHasTexturesParticlesAndATwoChannelNormalMap) {
   EXPECT_EQ(s.triangle_count(), 4104u);
   EXPECT_EQ(s.textures.size(), 3u);
   EXPECT_EQ(s.emitters.size(), 2u);
-  EXPECT_EQ(s.spot_lights.size(), 1u);
+  EXPECT_EQ(s.lights.size(), 1u);
   int two_channel = 0, normal_mapped = 0;
   for (const Material& m : s.materials) {
     two_channel += m.normal_two_channel;
@@ -87,7 +87,7 @@ TEST(Scenes, FurnaceSphereFacesItsCentre) {
   EXPECT_EQ(s.materials[0].base_color_factor, vec4(0.5f, 0.5f, 0.5f, 1.0f));
   EXPECT_EQ(s.materials[0].emission(), vec3(1.0f));
   EXPECT_EQ(s.materials[0].specular_factor, 0.0f);
-  EXPECT_TRUE(s.spot_lights.empty());
+  EXPECT_TRUE(s.lights.empty());
   EXPECT_EQ(s.camera.position, vec3(0.0f));
   for (size_t t = 0; t < s.triangle_count(); ++t) {
     const uvec3 i = s.triangles[t];
@@ -100,8 +100,8 @@ TEST(Scenes, PlaneSpotIsLambertianUnderADownwardSpot) {
   const Scene s = load_committed("plane_spot.gltf");
   expect_clean(s);
   EXPECT_EQ(s.triangle_count(), 512u);
-  ASSERT_EQ(s.spot_lights.size(), 1u);
-  const SpotLight& l = s.spot_lights[0];
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& l = s.lights[0];
   EXPECT_NEAR(glm::length(l.position - vec3(0, 2, 0)), 0.0f, 1e-6f);
   EXPECT_NEAR(glm::length(l.direction - vec3(0, -1, 0)), 0.0f, 1e-6f);
   EXPECT_EQ(l.intensity, 10.0f);
@@ -128,10 +128,29 @@ TEST(Scenes, ThinWallIsThinnerThanAVoxel) {
   const Scene s = load_committed("thin_wall.gltf");
   expect_clean(s);
   EXPECT_EQ(s.triangle_count(), 24u);
-  ASSERT_EQ(s.spot_lights.size(), 1u);
-  EXPECT_LT(s.spot_lights[0].position.x, 0.0f);  // lit room at x < 0
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_LT(s.lights[0].position.x, 0.0f);  // lit room at x < 0
   EXPECT_GT(s.camera.position.x, 0.0f);          // camera in the dark room
   EXPECT_LT(0.02f, s.volume.size / 64.0f / 3.0f);  // the 2 cm wall: under a third of a voxel at 64^3
+}
+
+TEST(Scenes, SunRoomHasASunAndTwoPointLamps) {
+  const Scene s = load_committed("sun_room.gltf");
+  expect_clean(s);
+  EXPECT_EQ(s.triangle_count(), 428u);
+  ASSERT_EQ(s.lights.size(), 3u);
+  // The file's order: the sun, then the lamps (the second with range 6).
+  EXPECT_EQ(s.lights[0].kind, LightKind::Directional);
+  EXPECT_NEAR(glm::dot(s.lights[0].direction, glm::normalize(vec3(-0.15f, -1.0f, 0.08f))), 1.0f, 1e-6f);
+  EXPECT_EQ(s.lights[0].intensity, 8.0f);  // lux
+  EXPECT_EQ(s.lights[0].range, 0.0f);
+  for (size_t i : {1u, 2u}) {
+    EXPECT_EQ(s.lights[i].kind, LightKind::Point);
+    EXPECT_EQ(s.lights[i].intensity, 4.0f);  // candela
+    EXPECT_EQ(s.lights[i].position.y, 1.9f);
+  }
+  EXPECT_EQ(s.lights[1].range, 0.0f);
+  EXPECT_EQ(s.lights[2].range, 6.0f);
 }
 
 }  // namespace

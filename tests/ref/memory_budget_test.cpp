@@ -59,6 +59,18 @@ TEST(MemoryBudget, ConeImagesFollowTheConeCount) {
   EXPECT_EQ(estimate_memory(s).images, uint64_t(s.vct.shadow_map_size) * s.vct.shadow_map_size * 4 + 100ull * 180);
 }
 
+// Each light's shadow maps count: one square float map per spot or directional light, six per
+// point light (shadow_map_layers); without a scene, one.
+TEST(MemoryBudget, ShadowMapsFollowTheLights) {
+  Settings s;
+  s.vct.shadow_map_size = 512;
+  const uint64_t one = estimate_memory(s).images;
+  EXPECT_EQ(estimate_memory(s, 1).images, one);
+  // A sun and two point lamps (sun_room): 1 + 6 + 6 maps.
+  EXPECT_EQ(estimate_memory(s, 13).images - one, 12ull * 512 * 512 * 4);
+  EXPECT_EQ(estimate_memory(s, 0).images, one - 512ull * 512 * 4);
+}
+
 // Multibounce keeps two mip pyramids (or two grids) and, while small, every earlier frame.
 TEST(MemoryBudget, MultibounceAnisotropicHandCount) {
   Settings s;

@@ -13,12 +13,12 @@ namespace {
 
 Scene lit_box() {
   Scene s = test::closed_box(vec3(0.7f, 0.6f, 0.5f), vec3(0.0f));
-  SpotLight l;
+  Light l;
   l.position = vec3(0.5f, 0.9f, 0.5f);
   l.direction = vec3(0.0f, -1.0f, 0.0f);
   l.intensity = 2.0f;
   l.outer_cone_angle = 1.0f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   ParticleEmitter e;
   e.origin = vec3(0.5f, 0.2f, 0.5f);
   e.count = 16;

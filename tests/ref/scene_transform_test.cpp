@@ -99,9 +99,9 @@ TEST(SceneTransform, TurnsMirrorVoxelCoordinatesExactly) {
       EXPECT_EQ(t.normals[i], turn90(s.normals[i], a));
     }
     EXPECT_EQ(t.camera.forward, turn90(s.camera.forward, a));
-    ASSERT_EQ(t.spot_lights.size(), s.spot_lights.size());
-    for (size_t l = 0; l < s.spot_lights.size(); ++l)
-      EXPECT_EQ(t.spot_lights[l].direction, turn90(s.spot_lights[l].direction, a));
+    ASSERT_EQ(t.lights.size(), s.lights.size());
+    for (size_t l = 0; l < s.lights.size(); ++l)
+      EXPECT_EQ(t.lights[l].direction, turn90(s.lights[l].direction, a));
     // Four turns give the scene back bit for bit.
     const Scene four = turned90(turned90(turned90(t, a), a), a);
     for (size_t i = 0; i < s.positions.size(); ++i) EXPECT_EQ(four.positions[i], s.positions[i]);
@@ -114,13 +114,13 @@ TEST(SceneTransform, LightScalingDoublesEverySourceAndNothingElse) {
   ParticleEmitter e;
   s.emitters.push_back(e);
   const Scene d = light_scaled(s, 2.0f);
-  ASSERT_FALSE(s.spot_lights.empty());
+  ASSERT_FALSE(s.lights.empty());
   for (size_t i = 0; i < s.materials.size(); ++i) {
     EXPECT_EQ(d.materials[i].emission(), 2.0f * s.materials[i].emission());
     EXPECT_EQ(d.materials[i].base_color_factor, s.materials[i].base_color_factor);
   }
-  for (size_t i = 0; i < s.spot_lights.size(); ++i)
-    EXPECT_EQ(d.spot_lights[i].intensity, 2.0f * s.spot_lights[i].intensity);
+  for (size_t i = 0; i < s.lights.size(); ++i)
+    EXPECT_EQ(d.lights[i].intensity, 2.0f * s.lights[i].intensity);
   EXPECT_EQ(d.emitters[0].color_start, 2.0f * e.color_start);
   EXPECT_EQ(d.emitters[0].color_end, 2.0f * e.color_end);
   EXPECT_EQ(d.positions, s.positions);

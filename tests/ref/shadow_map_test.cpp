@@ -11,11 +11,11 @@ Scene plane_under_spot() {
   Scene s;
   const uint32_t m = test::add_material(s, vec3(0.5f));
   test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.1f, 1.0f, -0.2f);
   l.direction = glm::normalize(vec3(0.2f, -1.0f, 0.1f));
   l.outer_cone_angle = 0.6f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
   return s;
 }
@@ -44,7 +44,7 @@ TEST(ShadowMap, PlaneDepthMatchesTheAnalyticWindowDepth) {
 }
 
 TEST(ShadowMap, UpVectorIsRobustForAxisAlignedSpots) {
-  SpotLight l;
+  Light l;
   l.position = vec3(0.0f, 0.0f, 2.0f);
   l.direction = vec3(0.0f, 0.0f, -1.0f);  // parallel to the default up (+z)
   Bounds3 b;

@@ -31,13 +31,13 @@ Scene floor_under_spot(bool occluder) {
   test::add_quad(s, {0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}, {0, 1, 0}, 0);
   if (occluder) test::add_quad(s, {0.4f, 0.5f, 0.4f}, {0.6f, 0.5f, 0.4f}, {0.6f, 0.5f, 0.6f}, {0.4f, 0.5f, 0.6f}, {0, -1, 0}, 0);
   s.bounds.add(vec3(0.5f, 1.0f, 0.5f));  // room for the light inside the volume
-  SpotLight l;
+  Light l;
   l.position = vec3(0.5f, 0.95f, 0.5f);
   l.direction = vec3(0.0f, -1.0f, 0.0f);
   l.intensity = 1.0f;
   l.outer_cone_angle = 1.2f;
   l.inner_cone_angle = 1.0f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
   s.camera.position = vec3(0.5f, 2.5f, 0.5f);
   s.camera.forward = vec3(0.0f, -1.0f, 0.0f);
@@ -102,7 +102,7 @@ TEST(SoftShadow, OccluderDarkensTheConeVisibility) {
   // halfway to the shadow's edge, less; outside, hardly.
   const Scene scene = floor_under_spot(true);
   const VctSettings s;
-  const vec3 light = scene.spot_lights[0].position;
+  const Light& light = scene.lights[0];
   const float centre = trace_shadow_cone(f.mips, scene.volume, s, vec3(0.5f, 0.0f, 0.5f), light);
   const float half = trace_shadow_cone(f.mips, scene.volume, s, vec3(0.6f, 0.0f, 0.5f), light);
   const float outside = trace_shadow_cone(f.mips, scene.volume, s, vec3(0.9f, 0.0f, 0.5f), light);
@@ -113,6 +113,31 @@ TEST(SoftShadow, OccluderDarkensTheConeVisibility) {
   EXPECT_LT(centre, half);
   EXPECT_LT(half, outside);
   EXPECT_GT(outside, 0.85f);
+}
+
+TEST(SoftShadow, SunConeRunsToTheVolumeExit) {
+  // The same floor and occluder under a sun straight down instead of the spot: the cone has no
+  // light position to stop at, it runs up through the occluder to where it leaves the volume, so
+  // the occluder's shadow is the same while the light term is lux x cos everywhere.
+  Scene scene = floor_under_spot(true);
+  scene.lights[0].kind = LightKind::Directional;
+  scene.lights[0].position = vec3(100.0f);  // meaningless for a sun: must not matter
+  const Frame f = render(scene);
+  const VctSettings s;
+  const float centre = trace_shadow_cone(f.mips, scene.volume, s, vec3(0.5f, 0.0f, 0.5f), scene.lights[0]);
+  const float outside = trace_shadow_cone(f.mips, scene.volume, s, vec3(0.9f, 0.0f, 0.5f), scene.lights[0]);
+  EXPECT_LT(centre, 0.6f);
+  EXPECT_GT(outside, 0.85f);
+  // Unshadowed, the sun's radiance is lux x cos x BRDF whatever the light's "position".
+  const vec3 p(0.9f, 0.0f, 0.1f), n(0, 1, 0), v = glm::normalize(scene.camera.position - p);
+  SurfaceMaterial m;
+  m.albedo = vec3(0.8f);
+  m.metallic = 0.0f;
+  m.roughness = 0.7f;
+  const vec3 far = light_radiance(scene.lights[0], s, p, n, v, m);
+  scene.lights[0].position = vec3(-3.0f);
+  EXPECT_EQ(light_radiance(scene.lights[0], s, p, n, v, m), far);
+  EXPECT_GT(far.r, 0.0f);
 }
 
 }  // namespace

@@ -26,6 +26,25 @@ TEST(StageRegistry, FamilyMembersParseAndPrintTheSameName) {
   EXPECT_EQ(dump_stem(*find_stage("mip.iso.2")->row, 2), "voxels_radiance_L2");
 }
 
+TEST(StageRegistry, CubeFacesAreNumberedByLightAndFaceAndNamedInDumps) {
+  const auto cube = find_stage("shadow_map_cube.7");  // light 1, face 1 (-x)
+  ASSERT_TRUE(cube);
+  EXPECT_STREQ(cube->row->name, "shadow_map_cube");
+  EXPECT_EQ(cube->index, 7);
+  EXPECT_EQ(stage_name(*cube->row, 7), "shadow_map_cube.7");
+  EXPECT_EQ(dump_stem(*cube->row, 7), "shadow_map_cube_1_negx");
+  EXPECT_EQ(dump_stem(*cube->row, 0), "shadow_map_cube_0_posx");
+  EXPECT_EQ(dump_stem(*cube->row, 17), "shadow_map_cube_2_negz");
+  EXPECT_EQ(namespace_kind("shadow_map_cube.3"), StageKind::Image);
+  // The slot is light i / 6's face i % 6; a spot's entry holds no faces, so it has no members.
+  FrameResult f;
+  *cube->row->image(f, 9, true) = Image(4, 4, 1);
+  ASSERT_EQ(f.shadow_maps.size(), 2u);
+  EXPECT_EQ(f.shadow_maps[1].cube[3].width, 4);
+  EXPECT_EQ(frame_members(f, *cube->row), (std::vector<int>{9}));
+  EXPECT_TRUE(frame_members(f, stage_row(stage_names::kShadowMap)).empty());
+}
+
 TEST(StageRegistry, RefusesNamesThatAreNotMembers) {
   EXPECT_FALSE(find_stage("mip.iso.0"));   // level 0 is voxel.radiance
   EXPECT_FALSE(find_stage("mip.iso.x"));

@@ -59,13 +59,13 @@ inline Scene stage_room() {
   add_quad(s, {-1, 2, -1}, {1, 2, -1}, {1, 2, 1}, {-1, 2, 1}, {0, -1, 0}, white);    // ceiling
   add_box(s, {-0.3f, 0.0f, -0.4f}, {0.3f, 0.7f, 0.1f}, white);
   add_quad(s, {0.5f, 0.4f, -0.99f}, {0.8f, 0.4f, -0.99f}, {0.8f, 0.9f, -0.99f}, {0.5f, 0.9f, -0.99f}, {0, 0, 1}, lamp);
-  SpotLight l;
+  Light l;
   l.position = vec3(0.1f, 1.9f, 0.2f);
   l.direction = vec3(0.0f, -1.0f, 0.0f);
   l.intensity = 8.0f;
   l.inner_cone_angle = 0.5f;
   l.outer_cone_angle = 0.8f;
-  s.spot_lights.push_back(l);
+  s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
   s.camera.position = vec3(0.0f, 1.0f, 3.2f);
   s.camera.forward = vec3(0.0f, 0.0f, -1.0f);
