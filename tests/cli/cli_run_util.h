@@ -51,6 +51,21 @@ inline std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
+/// What one `vct` run printed, and its exit code.
+struct VctOutput {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+/// Runs `VCT_BINARY args`, keeping stdout and stderr (files under scratch_root()).
+inline VctOutput run_vct_captured(const std::string& args) {
+  const fs::path o = scratch_root() / "vct_stdout.txt", e = scratch_root() / "vct_stderr.txt";
+  fs::create_directories(scratch_root());
+  const std::string cmd = "'" + std::string(VCT_BINARY) + "' " + args + " >'" + o.string() + "' 2>'" + e.string() + "'";
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(o), slurp(e)};
+}
+
 /// Every regular file below `dir` (relative path -> bytes), leaving out run.json (timings,
 /// thread counts) and anything whose name matches `skip` (a substring) if given.
 inline std::map<std::string, std::string> files_below(const fs::path& dir, const std::string& skip = "") {

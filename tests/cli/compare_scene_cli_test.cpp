@@ -23,18 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using Result = test::VctOutput;
 
-Result vct(const std::string& args) {
-  const fs::path o = test::scratch_root() / "scene_stdout.txt", e = test::scratch_root() / "scene_stderr.txt";
-  fs::create_directories(test::scratch_root());
-  const std::string cmd = "'" + std::string(VCT_BINARY) + "' " + args + " >'" + o.string() + "' 2>'" + e.string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::slurp(o), test::slurp(e)};
-}
+Result vct(const std::string& args) { return test::run_vct_captured(args); }
 
 json read_json(const fs::path& p) {
   std::ifstream in(p);

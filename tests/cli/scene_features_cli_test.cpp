@@ -20,18 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Result {
-  int exit_code = -1;
-  std::string err;
-};
+using Result = test::VctOutput;
 
-Result vct(const std::string& args) {
-  const fs::path e = test::scratch_root() / "features_stderr.txt";
-  fs::create_directories(test::scratch_root());
-  const std::string cmd = "'" + std::string(VCT_BINARY) + "' " + args + " >/dev/null 2>'" + e.string() + "'";
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::slurp(e)};
-}
+Result vct(const std::string& args) { return test::run_vct_captured(args); }
 
 json cornell_box() {
   std::ifstream in(std::string(VCT_SOURCE_DIR) + "/scenes/cornell_box.gltf");
