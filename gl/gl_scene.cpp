@@ -20,6 +20,7 @@ struct Vertex {
   float tangent[4];
   float uv0[2];
   float uv1[2];
+  float color[4];  // COLOR_0, white without it
 };
 
 GLint wrap_mode(Wrap w) {
@@ -70,9 +71,11 @@ GlScene::GlScene(const Scene& scene) : scene_(scene) {
     const vec4 t = i < scene.tangents.size() ? scene.tangents[i] : vec4(1.0f, 0.0f, 0.0f, 1.0f);
     const vec2 a = i < scene.uv0.size() ? scene.uv0[i] : vec2(0.0f);
     const vec2 b = i < scene.uv1.size() ? scene.uv1[i] : vec2(0.0f);
+    const vec4 col = i < scene.colors.size() ? scene.colors[i] : vec4(1.0f);
     for (int c = 0; c < 3; ++c) v.position[c] = p[c], v.normal[c] = n[c];
     for (int c = 0; c < 4; ++c) v.tangent[c] = t[c];
     for (int c = 0; c < 2; ++c) v.uv0[c] = a[c], v.uv1[c] = b[c];
+    for (int c = 0; c < 4; ++c) v.color[c] = col[c];
   }
   // Indices grouped by material, triangles in scene order within a material (stable), so draw
   // order is deterministic.
@@ -100,10 +103,11 @@ GlScene::GlScene(const Scene& scene) : scene_(scene) {
   glCreateVertexArrays(1, &vao_);
   glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao_, ibo_);
-  const GLint sizes[5] = {3, 3, 4, 2, 2};
-  const GLuint offsets[5] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, tangent),
-                             offsetof(Vertex, uv0), offsetof(Vertex, uv1)};
-  for (GLuint a = 0; a < 5; ++a) {
+  // Attribute locations as scene.vert / voxelize.vert declare them.
+  const GLint sizes[6] = {3, 3, 4, 2, 2, 4};
+  const GLuint offsets[6] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, tangent),
+                             offsetof(Vertex, uv0),      offsetof(Vertex, uv1),    offsetof(Vertex, color)};
+  for (GLuint a = 0; a < 6; ++a) {
     glEnableVertexArrayAttrib(vao_, a);
     glVertexArrayAttribFormat(vao_, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
     glVertexArrayAttribBinding(vao_, a, 0);

@@ -6,16 +6,16 @@
 uniform int u_alpha_mode;  // ALPHA_MODE_* (vct_shared.h); 0 = opaque, no fetch
 uniform float u_alpha_cutoff;
 
-float base_color_alpha(vec2 uv0, vec2 uv1) {
+float base_color_alpha(vec2 uv0, vec2 uv1, float color_alpha) {
   float alpha = u_base_color_factor.a;
   // Level 0, as every engine tests alpha (docs/scenes.md "Alpha modes"): an explicit LOD also needs no
   // derivatives, which are undefined after a discard in non-uniform control flow.
   if (u_tex_present[0] != 0) alpha *= textureLod(u_tex_base, slot_uv(0, uv0, uv1), 0.0f).a;
-  return alpha;
+  return alpha * color_alpha;  // x COLOR_0's alpha (1 without vertex colours)
 }
 
 // True when the fragment is cut away: the caller discards it (no depth, no colour, no voxel).
-bool alpha_masked(vec2 uv0, vec2 uv1) {
+bool alpha_masked(vec2 uv0, vec2 uv1, float color_alpha) {
   if (u_alpha_mode == ALPHA_MODE_OPAQUE) return false;
-  return alpha_discards(u_alpha_mode, base_color_alpha(uv0, uv1), u_alpha_cutoff);
+  return alpha_discards(u_alpha_mode, base_color_alpha(uv0, uv1, color_alpha), u_alpha_cutoff);
 }

@@ -4,9 +4,10 @@
 #include "alpha_mask.glsl"
 in vec2 v_uv0;
 in vec2 v_uv1;
+in vec4 v_color;  // COLOR_0
 
 void main() {
 #ifndef VCT_FAULT_ALPHA_SHADOW
-  if (alpha_masked(v_uv0, v_uv1)) discard;
+  if (alpha_masked(v_uv0, v_uv1, v_color.a)) discard;
 #endif
 }

@@ -7,6 +7,7 @@ in vec3 v_normal;
 in vec4 v_tangent;
 in vec2 v_uv0;
 in vec2 v_uv1;
+in vec4 v_color;  // COLOR_0
 
 layout(location = 0) out vec4 o_position;  // xyz, w = coverage
 layout(location = 1) out vec4 o_normal;
@@ -16,11 +17,11 @@ layout(location = 4) out vec4 o_specular_color;
 layout(location = 5) out vec4 o_emission;
 
 void main() {
-  if (alpha_masked(v_uv0, v_uv1)) discard;
+  if (alpha_masked(v_uv0, v_uv1, v_color.a)) discard;
   float len = length(v_normal);
   vec3 n = len > 0.0f ? v_normal / len : vec3(0.0f, 0.0f, 1.0f);
   if (!gl_FrontFacing) n = -n;
-  SurfaceMaterial m = evaluate_material(n, v_tangent, v_uv0, v_uv1);
+  SurfaceMaterial m = evaluate_material(n, v_tangent, v_uv0, v_uv1, v_color);
   o_position = vec4(v_position, 1.0f);
   o_normal = vec4(m.shading_normal, 0.0f);
   o_albedo = vec4(m.albedo, 0.0f);

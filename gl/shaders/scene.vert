@@ -5,6 +5,7 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_tangent;
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
+layout(location = 5) in vec4 a_color;  // COLOR_0, white without it
 
 uniform mat4 u_view_proj;
 
@@ -13,6 +14,7 @@ out vec3 v_normal;
 out vec4 v_tangent;
 out vec2 v_uv0;
 out vec2 v_uv1;
+out vec4 v_color;
 invariant gl_Position;
 
 void main() {
@@ -21,5 +23,6 @@ void main() {
   v_tangent = a_tangent;
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
+  v_color = a_color;
   gl_Position = u_view_proj * vec4(a_position, 1.0f);
 }

@@ -56,11 +56,13 @@ vec3 apply_normal_map(vec3 normal, vec4 tangent, vec3 tn, float scale) {
   return nl > 1e-8f ? n / nl : normal;
 }
 
-// `normal` is the interpolated vertex normal (already unit), `tangent` the interpolated tangent.
-SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1) {
+// `normal` is the interpolated vertex normal (already unit), `tangent` the interpolated tangent,
+// `color` the interpolated COLOR_0 (white without it).
+SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec4 color) {
   SurfaceMaterial s;
   vec4 base = u_base_color_factor;
   if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, slot_uv(0, uv0, uv1));
+  base *= color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = base.rgb;
   s.metallic = u_metallic_factor;
   s.roughness = u_roughness_factor;

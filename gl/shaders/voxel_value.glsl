@@ -6,10 +6,10 @@
 uniform int u_bounce;          // 0 = first frame (no indirect term)
 uniform float u_restitution;
 
-vec3 voxel_radiance(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec3 tex) {
+vec3 voxel_radiance(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec4 color, vec3 tex) {
   float len = length(normal);
   vec3 n0 = len > 0.0f ? normal / len : vec3(0.0f, 0.0f, 1.0f);
-  SurfaceMaterial m = evaluate_material(n0, tangent, uv0, uv1);
+  SurfaceMaterial m = evaluate_material(n0, tangent, uv0, uv1, color);
   vec3 n = m.shading_normal;
   vec3 irradiance = vec3(0.0f);
   for (int i = 0; i < u_light_count; ++i) {

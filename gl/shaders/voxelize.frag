@@ -12,6 +12,7 @@ in vec3 v_normal;
 in vec4 v_tangent;
 in vec2 v_uv0;
 in vec2 v_uv1;
+in vec4 v_color;  // COLOR_0
 in vec3 v_tex;
 flat in int v_axis;
 flat in vec3 v_geometric_normal;
@@ -84,10 +85,10 @@ void main() {
 #ifndef VCT_FAULT_ALPHA_VOXEL
   // A masked fragment adds neither opacity (count) nor light, tested at the pixel centre as the
   // CPU's GPU-rule voxelizer tests it (ref/stages/voxelize_gpu.cpp).
-  if (alpha_masked(v_uv0, v_uv1)) discard;
+  if (alpha_masked(v_uv0, v_uv1, v_color.a)) discard;
 #endif
   ivec3 c = voxel_coords();
-  vec3 value = voxel_radiance(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_tex);
+  vec3 value = voxel_radiance(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, v_tex);
   imageAtomicAdd(u_count, c, 1u);
   if (u_reduction == 1) {
     cas_average(c, clamp(value, vec3(0.0f), vec3(1.0f)));

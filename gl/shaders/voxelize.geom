@@ -9,6 +9,7 @@ in vec3 vg_normal[];
 in vec4 vg_tangent[];
 in vec2 vg_uv0[];
 in vec2 vg_uv1[];
+in vec4 vg_color[];
 in vec3 vg_tex[];
 
 out vec3 v_position;
@@ -16,6 +17,7 @@ out vec3 v_normal;
 out vec4 v_tangent;
 out vec2 v_uv0;
 out vec2 v_uv1;
+out vec4 v_color;
 out vec3 v_tex;
 flat out int v_axis;
 flat out vec3 v_geometric_normal;
@@ -53,6 +55,7 @@ void main() {
     v_tangent = vg_tangent[i];
     v_uv0 = vg_uv0[i];
     v_uv1 = vg_uv1[i];
+    v_color = vg_color[i];
     v_tex = vg_tex[i];
     v_axis = axis;
     v_geometric_normal = gn;

@@ -5,6 +5,7 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_tangent;
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
+layout(location = 5) in vec4 a_color;  // COLOR_0, white without it
 
 uniform vec3 u_volume_origin;
 uniform float u_volume_size;
@@ -14,6 +15,7 @@ out vec3 vg_normal;
 out vec4 vg_tangent;
 out vec2 vg_uv0;
 out vec2 vg_uv1;
+out vec4 vg_color;
 out vec3 vg_tex;
 
 void main() {
@@ -22,6 +24,7 @@ void main() {
   vg_tangent = a_tangent;
   vg_uv0 = a_uv0;
   vg_uv1 = a_uv1;
+  vg_color = a_color;
   vg_tex = (a_position - u_volume_origin) / u_volume_size;
   gl_Position = vec4(vg_tex * 2.0f - 1.0f, 1.0f);
 }

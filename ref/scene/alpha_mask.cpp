@@ -18,16 +18,20 @@ bool triangle_alpha_tested(const Scene& scene, uint32_t triangle) {
 float base_color_alpha(const Scene& scene, uint32_t triangle, float b1, float b2) {
   const Material& m = scene.materials[scene.triangle_material[triangle]];
   float alpha = m.base_color_factor.a;
+  const uvec3 t = scene.triangles[triangle];
+  const float b0 = 1.0f - b1 - b2;  // interpolation as interpolate_surface
   const TextureRef& ref = m.base_color_texture;
-  if (!ref.present()) return alpha;
-  const std::vector<vec2>& uvs = ref.texcoord == 1 ? scene.uv1 : scene.uv0;
-  vec2 uv(0.0f);
-  if (!uvs.empty()) {
-    const uvec3 t = scene.triangles[triangle];
-    uv = (1.0f - b1 - b2) * uvs[t.x] + b1 * uvs[t.y] + b2 * uvs[t.z];  // as interpolate_surface
+  if (ref.present()) {
+    const std::vector<vec2>& uvs = ref.texcoord == 1 ? scene.uv1 : scene.uv0;
+    vec2 uv(0.0f);
+    if (!uvs.empty()) uv = b0 * uvs[t.x] + b1 * uvs[t.y] + b2 * uvs[t.z];
+    if (!ref.transform.is_identity()) uv = ref.transform.apply(uv);
+    alpha *= sample_texture(scene.textures[size_t(ref.texture)], uv, false).a;
   }
-  if (!ref.transform.is_identity()) uv = ref.transform.apply(uv);
-  return alpha * sample_texture(scene.textures[size_t(ref.texture)], uv, false).a;
+  if (!scene.colors.empty()) {
+    alpha *= (b0 * scene.colors[t.x] + b1 * scene.colors[t.y] + b2 * scene.colors[t.z]).a;  // COLOR_0
+  }
+  return alpha;
 }
 
 bool surface_masked(const Scene& scene, uint32_t triangle, float b1, float b2) {

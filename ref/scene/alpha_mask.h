@@ -17,7 +17,8 @@ bool triangle_alpha_tested(const Scene& scene, uint32_t triangle);
 
 /// glTF 2.0 §3.9.4's alpha at barycentrics (1-b1-b2, b1, b2): base_color_factor.a times the base
 /// colour texture's alpha, sampled as evaluate_material samples it (scene/surface.h:
-/// sample_texture; alpha is linear in SRGB8_ALPHA8 too). The Scene keeps no COLOR_0.
+/// sample_texture at level 0; alpha is linear in SRGB8_ALPHA8 too) x COLOR_0's alpha when the
+/// scene has vertex colours.
 float base_color_alpha(const Scene& scene, uint32_t triangle, float b1, float b2);
 
 /// True when the point is cut away: an alpha-tested material whose alpha is below its cutoff.

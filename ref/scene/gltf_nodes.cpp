@@ -78,8 +78,28 @@ struct Mesh {
   std::vector<vec3> pos, nrm;
   std::vector<vec4> tan;
   std::vector<vec2> uv0, uv1;
+  std::vector<vec4> col;  // COLOR_0, linear RGBA; empty = white
   std::vector<uvec3> tris;
 };
+
+// COLOR_0 (glTF 2.0 §3.7.2.1): VEC3 or VEC4, float or normalized unsigned byte/short, linear; it
+// multiplies the base colour (alpha included). Morph targets displace it like any attribute.
+std::vector<vec4> read_color(const Context& ctx, const tinygltf::Primitive& p, size_t count,
+                             const std::vector<float>& weights, const std::string& owner) {
+  auto it = p.attributes.find("COLOR_0");
+  if (it == p.attributes.end()) return {};
+  const auto& a = ctx.model.accessors[size_t(it->second)];
+  const int comps = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+  std::vector<float> f = read_floats(ctx, it->second, comps, owner + " COLOR_0");
+  if (f.size() != count * size_t(comps)) fail(ctx, owner + " COLOR_0 count differs from POSITION count");
+  add_morph_displacements(ctx, p, weights, "COLOR_0", comps, f, owner);
+  std::vector<vec4> out(count);
+  for (size_t i = 0; i < count; ++i) {
+    const float* c = &f[i * size_t(comps)];
+    out[i] = vec4(c[0], c[1], c[2], comps == 4 ? c[3] : 1.0f);
+  }
+  return out;
+}
 
 // Each triangle gets its own three vertices with the face normal (glTF: flat normals when
 // NORMAL is absent).
@@ -94,6 +114,7 @@ void unweld_with_flat_normals(Mesh& m) {
       if (!m.tan.empty()) f.tan.push_back(m.tan[v]);
       if (!m.uv0.empty()) f.uv0.push_back(m.uv0[v]);
       if (!m.uv1.empty()) f.uv1.push_back(m.uv1[v]);
+      if (!m.col.empty()) f.col.push_back(m.col[v]);
     }
     f.tris.emplace_back(base, base + 1, base + 2);
   }
@@ -123,6 +144,7 @@ class Flattener {
       for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world});
     }
     if (!any_uv1_) scene_.uv1.clear();
+    if (!any_color_) scene_.colors.clear();
   }
 
  private:
@@ -178,9 +200,6 @@ class Flattener {
     const std::string owner = "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(prim_index);
     auto pos_it = prim.attributes.find("POSITION");
     if (pos_it == prim.attributes.end()) fail(ctx_, owner + " has no POSITION attribute");
-    if (prim.attributes.count("COLOR_0")) {
-      warn(owner + ": COLOR_0 (vertex colours) is not rendered; the base colour is not multiplied by it");
-    }
     std::vector<float> pf = read_floats(ctx_, pos_it->second, 3, owner + " POSITION");
     add_morph_displacements(ctx_, prim, weights, "POSITION", 3, pf, owner);
     const size_t count = pf.size() / 3;
@@ -243,6 +262,7 @@ class Flattener {
     }
     m.uv0 = read_uv(ctx_, prim, "TEXCOORD_0", count, weights, owner);
     m.uv1 = read_uv(ctx_, prim, "TEXCOORD_1", count, weights, owner);
+    m.col = read_color(ctx_, prim, count, weights, owner);
     if (m.uv1.empty() && uses_uv1(prim)) warn(owner + ": its material samples TEXCOORD_1, which it lacks (reads (0, 0))");
     if (det < 0.0f) {
       for (uvec3& t : m.tris) std::swap(t.y, t.z);
@@ -302,6 +322,9 @@ class Flattener {
     if (m.uv0.empty()) scene_.uv0.resize(scene_.uv0.size() + n, vec2(0.0f));
     else scene_.uv0.insert(scene_.uv0.end(), m.uv0.begin(), m.uv0.end());
     if (!m.uv1.empty()) any_uv1_ = true;
+    if (!m.col.empty()) any_color_ = true;
+    if (m.col.empty()) scene_.colors.resize(scene_.colors.size() + n, vec4(1.0f));
+    else scene_.colors.insert(scene_.colors.end(), m.col.begin(), m.col.end());
     if (m.uv1.empty()) scene_.uv1.resize(scene_.uv1.size() + n, vec2(0.0f));
     else scene_.uv1.insert(scene_.uv1.end(), m.uv1.begin(), m.uv1.end());
     for (const uvec3& t : m.tris) {
@@ -315,6 +338,7 @@ class Flattener {
   Scene& scene_;
   bool camera_found_ = false;
   bool any_uv1_ = false;
+  bool any_color_ = false;
   int default_material_ = -1;
 };
 

@@ -172,6 +172,7 @@ struct Scene {
   std::vector<vec3> normals;   // unit
   std::vector<vec4> tangents;  // xyz unit, w = handedness (+1/-1)
   std::vector<vec2> uv0, uv1;  // uv1 empty if no primitive has TEXCOORD_1
+  std::vector<vec4> colors;    // COLOR_0, linear RGBA; empty if no primitive has it (= white)
   // Triangles: three vertex indices and a material index each.
   std::vector<uvec3> triangles;
   std::vector<uint32_t> triangle_material;

@@ -23,6 +23,7 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
   }
   if (!scene.uv0.empty()) p.uv0 = b0 * scene.uv0[t.x] + b1 * scene.uv0[t.y] + b2 * scene.uv0[t.z];
   if (!scene.uv1.empty()) p.uv1 = b0 * scene.uv1[t.x] + b1 * scene.uv1[t.y] + b2 * scene.uv1[t.z];
+  if (!scene.colors.empty()) p.color = b0 * scene.colors[t.x] + b1 * scene.colors[t.y] + b2 * scene.colors[t.z];
   return p;
 }
 
@@ -65,6 +66,7 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   if (m.base_color_texture.present())
     base *= sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor],
                        lods.srgb_after_filter);
+  base *= p.color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = vec3(base);
   s.opacity = base.a;
   s.metallic = m.metallic_factor;

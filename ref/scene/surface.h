@@ -19,6 +19,7 @@ struct SurfacePoint {
   vec3 normal{0.0f, 0.0f, 1.0f};            // interpolated vertex normal, unit
   vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};     // interpolated tangent, w = handedness
   vec2 uv0{0.0f}, uv1{0.0f};
+  vec4 color{1.0f};  // COLOR_0 (white without it): multiplies the base colour
 };
 
 /// Material values at a surface point after texturing and normal mapping.

@@ -26,7 +26,7 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       const size_t i = vb.index(x, row);
       if (vb.triangle[i] < 0) continue;
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      if (!is_textured(scene.materials[scene.triangle_material[tri]])) continue;
+      if (!is_textured(scene.materials[scene.triangle_material[tri]]) && scene.colors.empty()) continue;
       const SurfaceLods lods =
           pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
       double cand[3][kMaxLodCandidates];

@@ -89,7 +89,8 @@ int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int
 vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
                    uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
                    const SurfaceLods& lods) {
-  if (!textured(scene.materials[scene.triangle_material[triangle]])) return vec4(0.0f);
+  // Vertex colours (COLOR_0) move the albedo with the sample point as a texture does.
+  if (!textured(scene.materials[scene.triangle_material[triangle]]) && scene.colors.empty()) return vec4(0.0f);
   SurfacePoint points[kSlackShifts];
   const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
   // Each slot's candidates; evaluation j takes the j-th of every slot (the last once a slot has

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -65,6 +66,53 @@ TEST(SceneFeaturesCli, OrthographicCameraRendersParallelAndValidates) {
   const double want = 64.0 * 2.0 / (2.0 * ymag);  // 51.2 columns, centred
   EXPECT_NEAR(double(hi - lo + 1), want, 1.0);
   EXPECT_NEAR(0.5 * double(lo + hi + 1), 32.0, 1.0);
+}
+
+// COLOR_0 (1, 1, 0) on every primitive: the base colour loses its blue in every engine, so every
+// covered G-buffer albedo has b = 0 exactly on both backends (without vertex colours the white walls
+// keep b = 0.73), and GL still matches the reference stage by stage.
+TEST(SceneFeaturesCli, VertexColoursReachEveryEngine) {
+  json doc = cornell_box();
+  std::string bytes;
+  std::map<int, int> accessor_of_count;  // one COLOR_0 accessor per vertex count
+  for (json& mesh : doc["meshes"])
+    for (json& prim : mesh["primitives"]) {
+      const int count = doc["accessors"][prim["attributes"]["POSITION"].get<int>()]["count"];
+      if (!accessor_of_count.count(count)) {
+        const size_t at = bytes.size();
+        for (int v = 0; v < count; ++v) bytes += std::string("\xff\xff\x00", 3);
+        while (bytes.size() % 4) bytes += '\0';
+        doc["bufferViews"].push_back({{"buffer", doc["buffers"].size()}, {"byteOffset", at}, {"byteLength", 3 * count}});
+        doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1},
+                                    {"componentType", 5121},
+                                    {"normalized", true},
+                                    {"count", count},
+                                    {"type", "VEC3"}});
+        accessor_of_count[count] = int(doc["accessors"].size()) - 1;
+      }
+      prim["attributes"]["COLOR_0"] = accessor_of_count[count];
+    }
+  doc["buffers"].push_back({{"uri", "colours.bin"}, {"byteLength", bytes.size()}});
+  const std::string scene = write_scene("coloured", doc);
+  std::ofstream(fs::path(scene).parent_path() / "colours.bin", std::ios::binary) << bytes;
+  const fs::path out = test::fresh_dir("coloured_validate");
+  const Result r = vct("validate '" + scene + "' --no-report --width 32 --height 32 --grid 32 --spp 1 --out '" +
+                       out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("COLOR_0"), std::string::npos) << r.err;
+  for (const char* side : {"ref", "gl"}) {
+    const Image cov = read_image((out / side / "gbuffer_coverage.exr").string());
+    const Image albedo = read_image((out / side / "gbuffer_albedo.exr").string());
+    int covered = 0, blue = 0;
+    for (int y = 0; y < cov.height; ++y)
+      for (int x = 0; x < cov.width; ++x) {
+        if (cov.at(x, y, 0) <= 0.0f) continue;
+        ++covered;
+        blue += albedo.at(x, y, 2) != 0.0f;
+      }
+    EXPECT_GT(covered, 0) << side;
+    EXPECT_EQ(blue, 0) << side;
+  }
 }
 
 TEST(SceneFeaturesCli, LoadWarningsReachStderrAndRunJson) {

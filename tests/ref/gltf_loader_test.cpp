@@ -6,7 +6,9 @@
 
 #include "core/error.h"
 #include "gltf_test_doc.h"
+#include "scene/alpha_mask.h"
 #include "scene/gltf_loader.h"
+#include "scene/surface.h"
 
 namespace vct {
 namespace {
@@ -479,6 +481,41 @@ TEST(GltfLoader, ASceneWithoutAnyLightIsWarnedAbout) {
   auto lit = quad_doc();
   lit.j["materials"][0]["emissiveFactor"] = {1, 1, 1};
   EXPECT_TRUE(load(lit).stats.warnings.empty());
+}
+
+// glTF 2.0 §3.9.2: COLOR_0 multiplies the base colour, alpha included (normalized unsigned bytes
+// here); with alphaMode MASK its alpha enters the test (§3.9.4).
+TEST(GltfLoader, VertexColoursMultiplyTheBaseColourAndItsAlpha) {
+  auto d = quad_doc();
+  const size_t at = d.bin.size();
+  test::append<uint8_t>(d.bin, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 0, 255, 255, 255, 128});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 16}});
+  d.j["accessors"].push_back(
+      {{"bufferView", 3}, {"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}});
+  d.j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 3;
+  d.j["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 0.5, 0.5, 1.0};
+  d.j["materials"][0]["alphaMode"] = "MASK";
+  d.j["materials"][0]["emissiveFactor"] = {1, 1, 1};  // lit, so the only warning would be COLOR_0's
+  const Scene s = load(d);
+  EXPECT_TRUE(s.stats.warnings.empty()) << s.stats.warnings.front();
+  ASSERT_EQ(s.colors.size(), s.positions.size());
+  for (size_t v = 0; v < s.positions.size(); ++v) {  // flat normals unweld: find each corner by position
+    const vec3 p = s.positions[v];
+    const vec4 want = p == vec3(0, 0, 0)   ? vec4(1, 0, 0, 1)
+                      : p == vec3(1, 0, 0) ? vec4(0, 1, 0, 1)
+                      : p == vec3(1, 1, 0) ? vec4(0, 0, 1, 0)
+                                           : vec4(1, 1, 1, 128.0f / 255.0f);
+    EXPECT_EQ(s.colors[v], want) << "vertex " << v;
+  }
+  // Triangle 0 is corners (0, 1, 2): at its centroid the colour is the mean of three.
+  const SurfacePoint c = interpolate_surface(s, 0, 1.0f / 3.0f, 1.0f / 3.0f);
+  const SurfaceMaterial m = evaluate_material(s, c);
+  EXPECT_NEAR(m.albedo.r, 0.5f / 3.0f, 1e-6f);
+  EXPECT_NEAR(m.albedo.g, 0.5f / 3.0f, 1e-6f);
+  EXPECT_NEAR(m.albedo.b, 0.5f / 3.0f, 1e-6f);
+  EXPECT_NEAR(base_color_alpha(s, 0, 1.0f / 3.0f, 1.0f / 3.0f), 2.0f / 3.0f, 1e-6f);
+  EXPECT_FALSE(surface_masked(s, 0, 0.0f, 0.0f));  // corner 0: alpha 1
+  EXPECT_TRUE(surface_masked(s, 0, 0.0f, 1.0f));   // corner 2: COLOR_0 alpha 0 < 0.5
 }
 
 }  // namespace
