@@ -158,6 +158,9 @@ void GlScene::bind_material(const Program& p, const Material& m) {
   p.set("u_specular_color", m.specular_color_factor);
   p.set("u_alpha_mode", int(m.alpha_mode));  // AlphaMode's values are vct_shared.h's ALPHA_MODE_*
   p.set("u_alpha_cutoff", m.alpha_cutoff);
+  // Without COLOR_0 the attribute is a constant white, which interpolation need not return as
+  // exactly 1: the shaders skip the product then, as the CPU multiplies by an exact 1.
+  p.set("u_vertex_colors", scene_.colors.empty() ? 0 : 1);
   const TextureRef* refs[4] = {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
                                &m.emissive_texture};
   const bool srgb[4] = {true, false, false, true};

@@ -11,7 +11,7 @@ float base_color_alpha(vec2 uv0, vec2 uv1, float color_alpha) {
   // Level 0, as every engine tests alpha (docs/scenes.md "Alpha modes"): an explicit LOD also needs no
   // derivatives, which are undefined after a discard in non-uniform control flow.
   if (u_tex_present[0] != 0) alpha *= textureLod(u_tex_base, slot_uv(0, uv0, uv1), 0.0f).a;
-  return alpha * color_alpha;  // x COLOR_0's alpha (1 without vertex colours)
+  return u_vertex_colors != 0 ? alpha * color_alpha : alpha;  // x COLOR_0's alpha
 }
 
 // True when the fragment is cut away: the caller discards it (no depth, no colour, no voxel).

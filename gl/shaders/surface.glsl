@@ -12,6 +12,7 @@ uniform vec3 u_emission;           // emissive_factor * emissive_strength
 uniform float u_specular_factor;
 uniform vec3 u_specular_color;
 // Texture slots: 0 base colour, 1 metallic-roughness, 2 normal, 3 emissive.
+uniform int u_vertex_colors;  // the scene has COLOR_0 (gl_scene.cpp bind_material)
 uniform int u_tex_present[4];
 uniform int u_tex_coord[4];
 uniform mat3 u_tex_transform[4];
@@ -62,7 +63,7 @@ SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1,
   SurfaceMaterial s;
   vec4 base = u_base_color_factor;
   if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, slot_uv(0, uv0, uv1));
-  base *= color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
+  if (u_vertex_colors != 0) base *= color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = base.rgb;
   s.metallic = u_metallic_factor;
   s.roughness = u_roughness_factor;
