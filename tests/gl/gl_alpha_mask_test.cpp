@@ -23,23 +23,13 @@ const Scene& foliage() {
   return scene;
 }
 
-std::string failing_stages(const cmp::Report& rep) {
-  std::string out;
-  for (const auto& st : rep.stages)
-    if (st.verdict == cmp::Verdict::Fail) out += st.stage + " ";
-  return out;
-}
-
 // The report `vct validate` gives GL against the reference (cone stages on GL's own inputs).
 cmp::Report judge(GlContext& ctx, const Scene& scene, const Settings& s, const FrameResult& ref,
                   const std::string& fault) {
   const FrameResult gl = render_gl_frame(ctx, scene, s, {"", fault});
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), gl_set);
-  const FrameResult ref_on_gl = cmp::reference_on_test_inputs(scene, gl, s.vct);
-  cmp::apply_isolated_verdicts(
-      rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-      s.vct.soft_shadows);
+  cmp::judge_cones_on_test_inputs(rep, scene, gl, s.vct, gl_set);  // as validate does
   std::printf("  foliage, gl_fault '%s': failing stages: %s\n", fault.c_str(),
               failing_stages(rep).c_str());
   return rep;

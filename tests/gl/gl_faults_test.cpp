@@ -40,13 +40,6 @@ const FrameResult& reference(const Settings& s) {
   return it->second;
 }
 
-std::string failing_stages(const cmp::Report& rep) {
-  std::string out;
-  for (const auto& st : rep.stages)
-    if (st.verdict == cmp::Verdict::Fail) out += st.stage + " ";
-  return out;
-}
-
 // The report `vct validate` would print for the GL frame with the fault switched on.
 cmp::Report judge(GlContext& ctx, const FaultRun& run) {
   const Settings& s = run.s;

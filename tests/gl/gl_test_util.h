@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "compare/verdict.h"
 #include "core/error.h"
 #include "core/settings.h"
 #include "gl/gl_context.h"
@@ -70,6 +71,14 @@ size_t count_diff(const T& a, const T& b, float tol) {
   size_t n = 0;
   for (size_t i = 0; i < std::min(a.data.size(), b.data.size()); ++i) n += std::abs(a.data[i] - b.data[i]) > tol;
   return n;
+}
+
+/// The failing stages of a report, space-separated (for test output and assertions).
+inline std::string failing_stages(const cmp::Report& rep) {
+  std::string out;
+  for (const auto& st : rep.stages)
+    if (st.verdict == cmp::Verdict::Fail) out += st.stage + " ";
+  return out;
 }
 
 }  // namespace vct::gl::test

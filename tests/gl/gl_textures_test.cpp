@@ -36,10 +36,7 @@ cmp::Report judge_tiled_floor(GlContext& ctx, const Settings& s, const FrameResu
   const FrameResult gl = render_gl_frame(ctx, tiled_floor(), s, {"", fault});
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
   cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(ref, s.vct), gl_set);
-  const FrameResult ref_on_gl = cmp::reference_on_test_inputs(tiled_floor(), gl, s.vct);
-  cmp::apply_isolated_verdicts(
-      rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-      s.vct.soft_shadows);
+  cmp::judge_cones_on_test_inputs(rep, tiled_floor(), gl, s.vct, gl_set);  // as validate does
   for (const char* st : {"gbuffer.normal", "gbuffer.albedo", "voxel.radiance"}) {
     const cmp::StageVerdict& v = verdict(rep, st);
     std::printf("  tiled floor%s%s: %s %s, %zu of %zu beyond the bound, worst %.3g (bound %.3g)\n",
