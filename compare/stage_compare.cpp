@@ -467,10 +467,10 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const Volume* hi = rs.volumes.count(st::kVoxelCasHi) ? &rs.volumes.at(st::kVoxelCasHi) : nullptr;
   const bool interval = m.cas_interval && lo && hi && same_size(*lo, ref) && same_size(*hi, ref);
   if (m.cas_interval && !interval) v.note = "no cas_lo/cas_hi in the reference: judged with +-1/255 only; ";
-  // Textured scenes: each voxel's mean may move by its fragments' mean LOD slack (the reference's
-  // voxel.texture_slack, docs/compare.md "Texture LOD").
+  // Each voxel's mean may move by its fragments' mean shading slack (the reference's
+  // voxel.shading_slack, docs/compare.md "Voxel shading slack").
   const Volume* lod_slack =
-      rs.volumes.count(st::kVoxelTextureSlack) ? &rs.volumes.at(st::kVoxelTextureSlack) : nullptr;
+      rs.volumes.count(st::kVoxelShadingSlack) ? &rs.volumes.at(st::kVoxelShadingSlack) : nullptr;
   if (lod_slack && !same_size(*lod_slack, ref)) lod_slack = nullptr;
   const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
   const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
@@ -598,8 +598,8 @@ Taint taint_at_level(const Taint& base, int n, const Volume& level_vol, int leve
 // aniso-mip-propagated model). Empty when the reference has no slack volume.
 std::vector<float> mip_lod_slack(const StageSet& rs, const Volume& base, const Volume& level_vol,
                                  int level, bool aniso) {
-  if (!rs.volumes.count(st::kVoxelTextureSlack)) return {};
-  const Volume& s = rs.volumes.at(st::kVoxelTextureSlack);
+  if (!rs.volumes.count(st::kVoxelShadingSlack)) return {};
+  const Volume& s = rs.volumes.at(st::kVoxelShadingSlack);
   if (!same_size(s, base) || s.nx != s.ny || s.ny != s.nz) return {};
   const int f = 1 << level;
   const float grow = aniso ? float(f) : 1.0f;

@@ -782,10 +782,153 @@ def sun_room():
     return g.write("sun_room.gltf")
 
 
+def arch_mesh(m, center, inner, outer, depth, segments):
+    """A semicircular arch in the x = const plane: a half annulus (radii inner..outer) about
+    `center`, spanning z from -outer to +outer and y upward, extruded over x in +-depth/2. The
+    faces: both sides (+x, -x), the intrados (facing the axis) and the extrados (facing away)."""
+    cx, cy, cz = center
+    h = depth / 2.0
+
+    def ring(r, a):
+        return [0.0, cy + r * math.sin(a), cz + r * math.cos(a)]
+
+    for k in range(segments):
+        a0, a1 = math.pi * k / segments, math.pi * (k + 1) / segments
+        for side in (-1.0, 1.0):
+            n = [side, 0.0, 0.0]
+            p = [ring(inner, a0), ring(outer, a0), ring(outer, a1), ring(inner, a1)]
+            v = [m.vertex([cx + side * h, q[1], q[2]], n, [q[2], q[1]]) for q in p]
+            # CCW seen from +x for side +1, from -x for side -1.
+            if side > 0:
+                m.tri(v[0], v[3], v[2]); m.tri(v[0], v[2], v[1])
+            else:
+                m.tri(v[0], v[1], v[2]); m.tri(v[0], v[2], v[3])
+        for r, sign in ((inner, -1.0), (outer, 1.0)):
+            q0, q1 = ring(r, a0), ring(r, a1)
+            am = 0.5 * (a0 + a1)
+            n = [0.0, sign * math.sin(am), sign * math.cos(am)]
+            v = [m.vertex([cx - h, q0[1], q0[2]], n, [0.0, a0 * r]), m.vertex([cx + h, q0[1], q0[2]], n, [depth, a0 * r]),
+                 m.vertex([cx + h, q1[1], q1[2]], n, [depth, a1 * r]), m.vertex([cx - h, q1[1], q1[2]], n, [0.0, a1 * r])]
+            if sign > 0:
+                m.tri(v[0], v[3], v[2]); m.tri(v[0], v[2], v[1])
+            else:
+                m.tri(v[0], v[1], v[2]); m.tri(v[0], v[2], v[3])
+
+
+def atrium():
+    """Issue 13's zoo: a Sponza-like atrium of our own. An 8 x 8 m courtyard open to the sky, a
+    mipmapped, tiled, normal-mapped floor (checker + bumps, 8 repeats, LINEAR_MIPMAP_LINEAR), brick
+    walls (albedo + normal map, 4 repeats per wall), two arcades of four columns joined by
+    semicircular arches, a high sun (80 degrees elevation, as in sun_room: no acne under the
+    constant bias on the floor) and a warm lamp under the left arcade."""
+    g = Gltf("atrium: mipmapped tiled normal-mapped floor, brick walls, columns and arches, sun and lamp")
+    files = {"textures/checker_albedo.png": checker_albedo(), "textures/bump_normal.png": bump_normal()}
+    brick_albedo, brick_normal = brick_textures()
+    files.update({"textures/brick_albedo.png": brick_albedo, "textures/brick_normal.png": brick_normal})
+    t_checker = g.texture("textures/checker_albedo.png", "checker_albedo")
+    t_bump = g.texture("textures/bump_normal.png", "bump_normal")
+    t_brick = g.texture("textures/brick_albedo.png", "brick_albedo")
+    t_brick_n = g.texture("textures/brick_normal.png", "brick_normal")
+    floor_mat = g.material("courtyard_floor", (1.0, 1.0, 1.0), roughness=0.7,
+                           base_color=g.texture_info(t_checker), normal=g.texture_info(t_bump, scale=0.8))
+    wall_mat = g.material("brick_wall", (1.0, 1.0, 1.0), roughness=0.9,
+                          base_color=g.texture_info(t_brick), normal=g.texture_info(t_brick_n, scale=1.0))
+    stone = g.material("column_stone", (0.72, 0.68, 0.6), roughness=0.8)
+    S, H = 4.0, 4.0
+    floor = MeshData(with_tangents=True)
+    floor.quad([-S, 0, S], [2 * S, 0, 0], [0, 0, -2 * S], uv_scale=(1.0, 1.0))  # uv 0..8
+    g.node("floor", mesh=g.mesh("floor", floor, floor_mat))
+    walls = MeshData(with_tangents=True)
+    for origin, du in (([-S, 0, -S], [2 * S, 0, 0]), ([S, 0, S], [-2 * S, 0, 0]),
+                       ([-S, 0, S], [0, 0, -2 * S]), ([S, 0, -S], [0, 0, 2 * S])):
+        walls.quad(origin, du, [0, H, 0], uv_scale=(0.5, 0.5), nu=2, nv=2)  # one brick tile per 2 m
+    g.node("walls", mesh=g.mesh("walls", walls, wall_mat))
+    column = MeshData()
+    column.cylinder([0, 0, 0], 0.2, 2.2, 20)
+    column_mesh = g.mesh("column", column, stone)
+    arcade = MeshData()
+    for z in (-3.0, -1.0, 1.0):  # arches between columns at z and z + 2, springing at y = 2.2
+        arch_mesh(arcade, [0.0, 2.2, z + 1.0], 0.8, 1.0, 0.4, 12)
+    arcade.box([-0.2, 3.2, -3.2], [0.2, 3.5, 3.2])  # the beam on top of the arches
+    arcade_mesh = g.mesh("arcade", arcade, stone)
+    for side, x in (("left", -2.2), ("right", 2.2)):
+        for i, z in enumerate((-3.0, -1.0, 1.0, 3.0)):
+            g.node("column_%s_%d" % (side, i), mesh=column_mesh, translation=[x, 0.0, z])
+        g.node("arcade_" + side, mesh=arcade_mesh, translation=[x, 0.0, 0.0])
+    g.sun("sun", normalize([0.12, -1.0, -0.1]), lux=6.0, color=(1.0, 0.96, 0.88))
+    g.point("arcade_lamp", [-3.1, 1.6, 0.0], intensity=3.0, color=(1.0, 0.75, 0.5))
+    g.camera([0.0, 1.8, 3.8], [0.0, 1.5, -2.0], yfov=1.25)
+    return [g.write("atrium.gltf")] + [(name, data) for name, data in files.items()]
+
+
+def scan_displacement(theta, phi):
+    """A lumpy, scanned-looking surface: a few low-frequency lobes plus fine ridges."""
+    return (1.0 + 0.15 * math.sin(2 * theta) * math.cos(3 * phi) + 0.06 * math.sin(9 * theta + 1.3) * math.cos(7 * phi)
+            + 0.02 * math.sin(23 * theta) * math.sin(19 * phi + 0.7))
+
+
+def scanned_statue():
+    """Issue 13's zoo: a dense, scanned-like mesh: 29,800 small triangles (edges ~1-2 cm, below a
+    grid-128 voxel of this ~3.2 m volume, 25 mm) on a pedestal in a small room, under a spot light."""
+    g = Gltf("a dense scanned-like mesh (tens of thousands of triangles)")
+    clay = g.material("clay", (0.7, 0.55, 0.42), roughness=0.65)
+    wall = g.material("wall", (0.7, 0.7, 0.7), lambert=True)
+    stone = g.material("pedestal", (0.45, 0.45, 0.47), roughness=0.8)
+    room = MeshData(with_uv=False)
+    room.box([-1.6, 0.0, -1.6], [1.6, 2.6, 1.6], inward=True)
+    g.node("room", mesh=g.mesh("room", room, wall))
+    pedestal = MeshData(with_uv=False)
+    pedestal.box([-0.35, 0.0, -0.35], [0.35, 0.6, 0.35])
+    g.node("pedestal", mesh=g.mesh("pedestal", pedestal, stone))
+    statue = MeshData(with_uv=False)
+    statue.sphere([0, 0, 0], 1.0, 100, 150, displace=scan_displacement)
+    g.node("statue", mesh=g.mesh("statue", statue, clay), translation=[0.0, 1.1, 0.0], scale=[0.42, 0.5, 0.42])
+    g.spot("key_light", [1.2, 2.5, 1.2], look_rotation([1.2, 2.5, 1.2], [0.0, 1.0, 0.0]), intensity=10.0,
+           inner=0.3, outer=0.55)
+    g.camera([0.9, 1.6, 1.5], [0.0, 1.0, 0.0], yfov=1.0)
+    return g.write("scanned_statue.gltf")
+
+
+def material_room():
+    """Issue 13's zoo: a many-materials room. Two rows of four spheres (metals: gold, copper,
+    iron, silver at roughness 0.1, 0.3, 0.55, 0.85; dielectrics: red, blue, white, green plastic
+    at roughness 0.05, 0.25, 0.5, 0.9) on a grey floor, two emissive strips on the back wall and a
+    spot light."""
+    g = Gltf("many materials: metals and dielectrics of several roughnesses, emissive strips")
+    wall = g.material("wall", (0.65, 0.65, 0.65), lambert=True)
+    floor_mat = g.material("floor", (0.4, 0.4, 0.4), roughness=0.45)
+    strip = g.material("strip", (0.0, 0.0, 0.0), lambert=True, emissive=(0.9, 0.95, 1.0), strength=4.0)
+    metals = [("gold", (1.0, 0.78, 0.34), 0.1), ("copper", (0.95, 0.64, 0.54), 0.3),
+              ("iron", (0.56, 0.57, 0.58), 0.55), ("silver", (0.97, 0.96, 0.91), 0.85)]
+    plastics = [("red", (0.7, 0.1, 0.08), 0.05), ("blue", (0.1, 0.2, 0.7), 0.25),
+                ("white", (0.8, 0.8, 0.8), 0.5), ("green", (0.15, 0.55, 0.15), 0.9)]
+    room = MeshData(with_uv=False)
+    room.box([-3.0, 0.0, -2.0], [3.0, 2.8, 2.0], inward=True)
+    g.node("room", mesh=g.mesh("room", room, wall))
+    floor = MeshData(with_uv=False)
+    floor.quad([-2.9, 0.01, 1.9], [5.8, 0, 0], [0, 0, -3.8])
+    g.node("floor", mesh=g.mesh("floor", floor, floor_mat))
+    ball = MeshData(with_uv=False)
+    ball.sphere([0, 0, 0], 0.3, 16, 24)
+    for row, (z, entries, metal) in enumerate(((-1.3, metals, 1.0), (-0.3, plastics, 0.0))):
+        for i, (name, color, rough) in enumerate(entries):
+            mat = g.material("%s_r%g" % (name, rough), color, metallic=metal, roughness=rough)
+            g.node("sphere_%s" % name, mesh=g.mesh("sphere_" + name, ball, mat),
+                   translation=[-1.8 + 1.2 * i, 0.31, z])
+    strips = MeshData(with_uv=False)
+    for y in (1.4, 2.2):
+        strips.quad([-2.4, y, -1.98], [4.8, 0, 0], [0, 0.08, 0])
+    g.node("strips", mesh=g.mesh("strips", strips, strip))
+    g.spot("spot", [0.0, 2.7, 1.2], look_rotation([0.0, 2.7, 1.2], [0.0, 0.0, -0.3]), intensity=14.0,
+           inner=0.5, outer=0.8, color=(1.0, 0.97, 0.92))
+    g.camera([0.0, 1.6, 1.9], [0.0, 0.6, -0.9], yfov=1.2)
+    return g.write("material_room.gltf")
+
+
 def main():
     outputs = []
     for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage, tiled_floor,
-                 sun_room):
+                 sun_room, atrium, scanned_statue, material_room):
         result = make()
         outputs += result if isinstance(result, list) else [result]
     check = "--check" in sys.argv

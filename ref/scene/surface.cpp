@@ -30,11 +30,11 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
 namespace {
 
 vec4 sample_ref(const Scene& scene, const TextureRef& ref, const SurfacePoint& p, bool srgb,
-                double lambda, bool srgb_after_filter) {
+                double lambda, bool srgb_after_filter, vec2 texel_shift) {
   const Texture& tex = scene.textures[size_t(ref.texture)];
   vec2 uv = ref.texcoord == 1 ? p.uv1 : p.uv0;
   if (!ref.transform.is_identity()) uv = ref.transform.apply(uv);
-  return sample_texture_lod(tex, uv, srgb, lambda, srgb_after_filter);
+  return sample_texture_lod(tex, uv, srgb, lambda, srgb_after_filter, texel_shift);
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   vec4 base = m.base_color_factor;
   if (m.base_color_texture.present())
     base *= sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor],
-                       lods.srgb_after_filter);
+                       lods.srgb_after_filter, lods.texel_shift);
   base *= p.color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = vec3(base);
   s.opacity = base.a;
@@ -73,7 +73,7 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   s.roughness = m.roughness_factor;
   if (m.metallic_roughness_texture.present()) {
     const vec4 mr = sample_ref(scene, m.metallic_roughness_texture, p, false,
-                               lods.lambda[kSlotMetallicRoughness], lods.srgb_after_filter);
+                               lods.lambda[kSlotMetallicRoughness], lods.srgb_after_filter, lods.texel_shift);
     s.roughness *= mr.g;  // glTF: G = roughness, B = metallic
     s.metallic *= mr.b;
   }
@@ -82,11 +82,11 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   s.emission = m.emission();
   if (m.emissive_texture.present())
     s.emission *= vec3(sample_ref(scene, m.emissive_texture, p, true, lods.lambda[kSlotEmissive],
-                                  lods.srgb_after_filter));
+                                  lods.srgb_after_filter, lods.texel_shift));
   s.shading_normal = p.normal;
   if (m.normal_texture.present()) {
     const vec4 texel = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal],
-                                  lods.srgb_after_filter);
+                                  lods.srgb_after_filter, lods.texel_shift);
     vec3 tn(texel.x * 2.0f - 1.0f, texel.y * 2.0f - 1.0f, texel.z * 2.0f - 1.0f);
     if (m.normal_two_channel) tn.z = std::sqrt(std::max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
     s.shading_normal = apply_normal_map(p.normal, p.tangent, tn, m.normal_scale);

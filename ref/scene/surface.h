@@ -52,6 +52,9 @@ struct SlotLods {
   // sRGB slots (base colour, emissive) decoded after filtering instead of per texel, as GL 4.5
   // §8.24 allows (scene/texture_sample.h); the reference decodes per texel, the slack tries both.
   bool srgb_after_filter = false;
+  // Every lookup's sample point moved by this many texels of the level it reads: the 8-bit
+  // sub-texel weight precision GL leaves open (scene/texture_sample.h); zero for the reference.
+  vec2 texel_shift{0.0f};
 };
 
 /// A surface sample's lambdas: the reference's own (exact derivatives) and, per slot, every lambda

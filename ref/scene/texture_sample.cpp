@@ -50,15 +50,17 @@ vec4 fetch(const uint8_t* texels, int width, int x, int y, bool srgb) {
 }  // namespace
 
 vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int height, vec2 uv,
-                  bool linear, bool srgb) {
+                  bool linear, bool srgb, vec2 texel_shift) {
   if (!linear) {
     // NEAREST: texel i covers [i, i+1) in texel units.
-    const int x = wrap_index(int(std::floor(uv.x * float(width))), width, tex.wrap_s);
-    const int y = wrap_index(int(std::floor(uv.y * float(height))), height, tex.wrap_t);
+    const int x = wrap_index(int(std::floor(uv.x * float(width) + texel_shift.x)), width, tex.wrap_s);
+    const int y =
+        wrap_index(int(std::floor(uv.y * float(height) + texel_shift.y)), height, tex.wrap_t);
     return fetch(texels, width, x, y, srgb);
   }
   // LINEAR: the four texels around (u - 1/2, v - 1/2), weighted by the fractions.
-  const float u = uv.x * float(width) - 0.5f, v = uv.y * float(height) - 0.5f;
+  const float u = uv.x * float(width) - 0.5f + texel_shift.x,
+              v = uv.y * float(height) - 0.5f + texel_shift.y;
   const float fu = std::floor(u), fv = std::floor(v);
   const float au = u - fu, av = v - fv;
   const int x0 = wrap_index(int(fu), width, tex.wrap_s),
@@ -72,17 +74,17 @@ vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int heig
 }
 
 vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda,
-                        bool decode_after_filter) {
+                        bool decode_after_filter, vec2 texel_shift) {
   if (tex.width <= 0 || tex.height <= 0) return vec4(1.0f);
   const LevelBlend b = select_levels(tex, lambda, available_levels(tex, srgb) - 1);
   // The chain is the one built for `srgb` reads either way; only where the decode happens moves.
   const bool decode_texels = srgb && !decode_after_filter;
   int w = 0, h = 0;
   const uint8_t* t1 = mip_level_texels(tex, srgb, b.level1, w, h);
-  vec4 v = sample_level(tex, t1, w, h, uv, b.linear, decode_texels);
+  vec4 v = sample_level(tex, t1, w, h, uv, b.linear, decode_texels, texel_shift);
   if (b.weight2 != 0.0f && b.level2 != b.level1) {
     const uint8_t* t2 = mip_level_texels(tex, srgb, b.level2, w, h);
-    const vec4 v2 = sample_level(tex, t2, w, h, uv, b.linear, decode_texels);
+    const vec4 v2 = sample_level(tex, t2, w, h, uv, b.linear, decode_texels, texel_shift);
     v = (1.0f - b.weight2) * v + b.weight2 * v2;
   }
   if (srgb && decode_after_filter)

@@ -15,8 +15,11 @@ namespace vct {
 float srgb8_to_linear(uint8_t v);
 
 /// One level: NEAREST (`linear` false) or bilinear (LINEAR) at uv in [0,1] units of that level.
+/// `texel_shift` moves the sample point by that many texels of this level: the sub-texel
+/// precision GL leaves open (a filter weight quantised to 8 bits is the exact weight at a point
+/// at most 2^-8 texel away; docs/compare.md, "Sub-texel weight precision").
 vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int height, vec2 uv,
-                  bool linear, bool srgb);
+                  bool linear, bool srgb, vec2 texel_shift = vec2(0.0f));
 
 /// The lookup at scale factor lambda = log2(rho): magnification (lambda <= 0) with the mag
 /// filter on level 0, else the min filter over the levels built for `srgb` reads
@@ -25,8 +28,9 @@ vec4 sample_level(const Texture& tex, const uint8_t* texels, int width, int heig
 /// values, RGB decoded once at the end, which GL 4.5 §8.24 allows ("implementations are allowed
 /// to perform this conversion after filtering", llvmpipe does); by convexity of the decode it is
 /// the lower end of what any staging of the conversion gives, decode-before the upper end.
+/// `texel_shift`: as sample_level's, in texels of each level fetched.
 vec4 sample_texture_lod(const Texture& tex, vec2 uv, bool srgb, double lambda,
-                        bool decode_after_filter = false);
+                        bool decode_after_filter = false, vec2 texel_shift = vec2(0.0f));
 
 /// Level 0 with the magnification filter (lambda = 0).
 inline vec4 sample_texture(const Texture& tex, vec2 uv, bool srgb) {

@@ -4,13 +4,11 @@
 
 #include "core/parallel.h"
 #include "stages/direct.h"
+#include "stages/fragment_slack.h"
 #include "stages/reduction.h"
-#include "stages/texture_slack.h"
 #include "stages/voxel_lod.h"
 
 namespace vct {
-
-namespace {
 
 vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMaterial& m,
                    const std::vector<ShadowMap>& maps, const VctSettings& settings,
@@ -21,14 +19,6 @@ vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMate
   if (bounce && *bounce) l += (*bounce)(f, m);
   return l;
 }
-
-bool textured(const Material& m) {
-  for (int slot = 0; slot < kTextureSlots; ++slot)
-    if (slot_texture(m, slot)) return true;
-  return false;
-}
-
-}  // namespace
 
 std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                                     const VctSettings& settings, const BounceLight* bounce) {
@@ -41,43 +31,6 @@ std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox,
     const SurfaceMaterial m =
         evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), l);
     out[size_t(i)] = light_leaving(scene, f, m, maps, settings, bounce);
-  });
-  return out;
-}
-
-std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox,
-                                      const std::vector<vec3>& values,
-                                      const std::vector<ShadowMap>& maps,
-                                      const VctSettings& settings, const BounceLight* bounce) {
-  const std::vector<SurfaceLods> lods = voxel_lods_per_triangle(scene, vox.n);
-  std::vector<float> out(vox.fragments.size(), 0.0f);
-  parallel_for(int64_t(out.size()), [&](int64_t i) {
-    const VoxelFragment& f = vox.fragments[size_t(i)];
-    if (!textured(scene.materials[scene.triangle_material[f.triangle]])) return;
-    const SurfaceLods& l = lods[f.triangle];
-    // Diffuse light reads albedo (base colour), the normal map and emission; their lookups may
-    // each take any admissible lambda, and the light mixes them (albedo x n.l + emission), so
-    // every combination of the three slots' candidates is tried.
-    static constexpr int kSlots[3] = {kSlotBaseColor, kSlotNormal, kSlotEmissive};
-    double cand[3][kMaxLodCandidates];
-    int count[3];
-    for (int k = 0; k < 3; ++k) count[k] = lod_candidates(l.range[kSlots[k]], cand[k]);
-    const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
-    float slack = 0.0f;
-    SlotLods s = l.exact;
-    for (int i0 = 0; i0 < count[0]; ++i0)
-      for (int i1 = 0; i1 < count[1]; ++i1)
-        for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
-          s.srgb_after_filter = i2 >= count[2];
-          s.lambda[kSlots[0]] = cand[0][i0];
-          s.lambda[kSlots[1]] = cand[1][i1];
-          s.lambda[kSlots[2]] = cand[2][i2 % count[2]];
-          const vec3 d = glm::abs(
-              light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) -
-              values[size_t(i)]);
-          slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));
-        }
-    out[size_t(i)] = slack;
   });
   return out;
 }
@@ -142,34 +95,12 @@ VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& val
   return g;
 }
 
-Volume voxel_lod_slack(const Voxelization& vox, const std::vector<float>& slack) {
-  Volume v(vox.n, vox.n, vox.n, 1);
-  v.channel_names = {"slack"};
-  // Runs of fragments per voxel (sorted by voxel): the mean of the fragments' slacks bounds how
-  // far the voxel's mean may move. Summed in double in fragment order: deterministic.
-  size_t b = 0;
-  while (b < vox.fragments.size()) {
-    size_t e = b;
-    double sum = 0.0;
-    while (e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel)
-      sum += double(slack[e++]);
-    const ivec3 c = vox.fragments[b].voxel;
-    *v.voxel(c.x, c.y, c.z) = float(sum / double(e - b));
-    b = e;
-  }
-  return v;
-}
-
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                             const VctSettings& settings, const BounceLight* bounce) {
   const std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
   VoxelGrid g = reduce_fragments(vox, values, settings);
-  bool any_texture = false;
-  for (const Material& m : scene.materials) any_texture = any_texture || textured(m);
-  if (any_texture) {
-    g.texture_slack =
-        voxel_lod_slack(vox, fragment_lod_slack(scene, vox, values, maps, settings, bounce));
-  }
+  g.shading_slack =
+      voxel_shading_slack(vox, fragment_shading_slack(scene, vox, values, maps, settings, bounce));
   return g;
 }
 

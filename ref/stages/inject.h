@@ -18,26 +18,20 @@ namespace vct {
 /// frame's mips). Called concurrently; must be thread-safe and deterministic.
 using BounceLight = std::function<vec3(const VoxelFragment&, const SurfaceMaterial&)>;
 
+/// The light leaving one fragment with material `m`: diffuse_outgoing_radiance (shading normal)
+/// + emission (+ bounce).
+vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMaterial& m,
+                   const std::vector<ShadowMap>& maps, const VctSettings& settings,
+                   const BounceLight* bounce);
+
 /// The light each fragment carries: diffuse_outgoing_radiance (shading normal after normal
 /// mapping) + emission (+ bounce). Fragment order as in `vox`.
 std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                                     const VctSettings& settings, const BounceLight* bounce = nullptr);
 
-/// Per fragment, the largest |change| (over RGB) of its light when every textured slot is looked
-/// up at the other lambdas a correct GL may use in the voxel raster (stages/voxel_lod.h), against
-/// `values` (fragment_radiance). 0 for untextured materials.
-std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vox,
-                                      const std::vector<vec3>& values,
-                                      const std::vector<ShadowMap>& maps,
-                                      const VctSettings& settings,
-                                      const BounceLight* bounce = nullptr);
-
-/// Per voxel, the mean of its fragments' slacks (a bound on how far the voxel's mean may move).
-Volume voxel_lod_slack(const Voxelization& vox, const std::vector<float>& slack);
-
 /// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied,
 /// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
-/// texture_slack (voxel_lod_slack) when a material has a texture.
+/// shading_slack (stages/fragment_slack.h).
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                             const VctSettings& settings, const BounceLight* bounce = nullptr);
 

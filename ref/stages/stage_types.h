@@ -56,9 +56,10 @@ struct VoxelGrid {
   // CAS RGBA8 model only: per voxel the lowest and highest value a correct GPU may store for any
   // fragment order (empty otherwise).
   Volume cas_lo, cas_hi;
-  // Reference only, textured scenes: per voxel how far its mean may move when GL looks the
-  // fragments' textures up at another admissible LOD (stages/inject.h voxel_lod_slack).
-  Volume texture_slack;
+  // Reference only: per voxel how far its mean may move under the shading freedoms GL leaves
+  // the voxelization pass (position snapping, texture LOD, sub-texel weights;
+  // stages/fragment_slack.h).
+  Volume shading_slack;
 };
 
 /// Axis directions of the anisotropic volumes, in this order: +x, -x, +y, -y, +z, -z.

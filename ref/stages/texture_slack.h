@@ -52,6 +52,18 @@ class WindowBarycentrics {
 /// The sample points the slack considers: the pixel centre and the four (+-s, +-s) shifts.
 constexpr int kSlackShifts = 5;
 
+/// Sub-texel weight precision: GL leaves the filter weights' precision open (§8.14.2); current
+/// GPUs keep 8 fractional bits (D3D11 functional spec §7.18.16.1, dEQP LookupPrecision), so a
+/// weight may be the exact weight of a point up to 2^-8 texel away on each axis of each level.
+constexpr float kSubtexelShift = 1.0f / 256.0f;
+constexpr int kTexelShifts = 5;
+/// Shift k of the lookup's sample point, in texels: k = 0 none, 1..4 the (+-s, +-s) corners
+/// (a bilinear lookup is linear in each weight, so its extremes over the square are at corners).
+inline vec2 texel_shift(int k) {
+  const float s = kSubtexelShift;
+  return k == 0 ? vec2(0.0f) : vec2((k & 1) ? s : -s, (k & 2) ? s : -s);
+}
+
 /// True when any of the material's slots has a texture.
 bool is_textured(const Material& m);
 

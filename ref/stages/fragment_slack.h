@@ -1,0 +1,40 @@
+// How far a voxel fragment's light may legitimately move between the reference and a correct GL:
+// the shading freedoms the GL specification leaves to the voxelization pass, each tried on the
+// reference's own fragment (docs/compare.md, "Voxel shading slack"):
+//   - position: vertices snap to a 2^-8 pixel grid of the voxel raster (GL_SUBPIXEL_BITS 8), so
+//     the attributes at a pixel centre are those of a point up to 2^-8 voxel away on each in-plane
+//     axis of the dominant-axis projection. That moves the fragment along its triangle: a PCF tap
+//     near a shadow-map texel edge or a depth tie flips, the falloff and textures shift;
+//   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
+//   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h).
+#pragma once
+
+#include <vector>
+
+#include "core/settings.h"
+#include "scene/scene.h"
+#include "stages/inject.h"
+#include "stages/stage_types.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+
+/// Largest pixel-centre shift of the voxel raster the slack covers, in voxels per in-plane axis:
+/// one sub-pixel step of the snapping grid (as the raster stages' 2^-8 pixel, compare/tolerance.h).
+constexpr double kVoxelSnapShift = 1.0 / 256.0;
+
+/// Per fragment, the largest |change| (over RGB) of its light against `values`
+/// (fragment_radiance): the largest over the four (+-s, +-s) position shifts at the reference's
+/// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel
+/// shift at the fragment itself (the two freedoms are independent; the sum bounds their
+/// combination by the triangle inequality, each term taken where the reference sits).
+std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
+                                          const std::vector<vec3>& values,
+                                          const std::vector<ShadowMap>& maps,
+                                          const VctSettings& settings,
+                                          const BounceLight* bounce = nullptr);
+
+/// Per voxel, the mean of its fragments' slacks: the voxel's mean moves by at most that.
+Volume voxel_shading_slack(const Voxelization& vox, const std::vector<float>& slack);
+
+}  // namespace vct

@@ -1,0 +1,98 @@
+// The voxel shading slack (stages/fragment_slack.h) against hand-computed values: the sub-texel
+// weight shift of a bilinear lookup, and the position term of a floor under a point light, whose
+// light falls off as h / d^3 (glTF point light: I cos(theta) / d^2, cos(theta) = h / d).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/texture_sample.h"
+#include "stage_test_scene.h"
+#include "stages/fragment_slack.h"
+#include "stages/inject.h"
+#include "stages/shadow_map.h"
+#include "stages/texture_slack.h"
+
+namespace vct {
+namespace {
+
+// A 2x1 texture (0, 255) read at u = 0.5 lies halfway between the two texel centres: bilinear
+// gives 0.5, and a sample point moved by t texels gives 0.5 + t (slope one per texel).
+TEST(FragmentSlack, TexelShiftMovesTheBilinearSamplePointInTexels) {
+  Texture t;
+  t.width = 2;
+  t.height = 1;
+  t.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
+  const vec2 uv(0.5f, 0.5f);
+  EXPECT_FLOAT_EQ(sample_level(t, t.rgba8.data(), 2, 1, uv, true, false).r, 0.5f);
+  for (int k = 1; k < kTexelShifts; ++k) {
+    const vec2 shift = texel_shift(k);
+    EXPECT_FLOAT_EQ(std::abs(shift.x), kSubtexelShift);
+    EXPECT_FLOAT_EQ(std::abs(shift.y), kSubtexelShift);
+    EXPECT_NEAR(sample_level(t, t.rgba8.data(), 2, 1, uv, true, false, shift).r, 0.5f + shift.x, 1e-6f);
+  }
+  EXPECT_EQ(texel_shift(0), vec2(0.0f));
+}
+
+// A 4 m floor at y = 0 under a point light at height h above the origin, nothing else: every
+// fragment's light is c h / d^3 with d its distance to the light. The position term moves the
+// fragment by (+-2^-8, +-2^-8) voxels along x and z (the floor's dominant-axis window), so the
+// slack is the largest |L(p + delta) - L(p)| over those four corners: no texture, no shadow edge.
+TEST(FragmentSlack, PositionTermIsTheLightsChangeOverASnapOfTheVoxelRaster) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.8f));
+  test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
+  const float h = 1.5f;
+  Light lamp;
+  lamp.kind = LightKind::Point;
+  lamp.position = vec3(0.0f, h, 0.0f);
+  lamp.intensity = 10.0f;
+  s.lights.push_back(lamp);
+  s.volume = fit_volume(s.bounds);
+  VctSettings settings;
+  settings.grid = 16;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
+  ASSERT_FALSE(vox.fragments.empty());
+  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, values, maps, settings);
+  const double step = double(s.volume.size) / double(settings.grid) / 256.0;  // 2^-8 voxel, metres
+  const auto falloff = [&](double x, double z) {
+    const double d = std::sqrt(x * x + z * z + double(h) * double(h));
+    return double(h) / (d * d * d);
+  };
+  const VoxelFragment& f0 = vox.fragments.front();
+  const double c = double(values.front().x) / falloff(f0.position.x, f0.position.z);
+  int checked = 0;
+  for (size_t i = 0; i < vox.fragments.size(); i += 7) {
+    const VoxelFragment& f = vox.fragments[i];
+    const double x = f.position.x, z = f.position.z;
+    // The reference's own light follows c h / d^3 (no shadow, no texture): the model holds.
+    ASSERT_NEAR(double(values[i].x), c * falloff(x, z), 1e-5 * c * falloff(x, z));
+    double expected = 0.0;
+    for (double dx : {-step, step})
+      for (double dz : {-step, step})
+        expected = std::max(expected, std::abs(c * (falloff(x + dx, z + dz) - falloff(x, z))));
+    // Float evaluation of both lights: a few ulps of the light, far below the slack itself.
+    EXPECT_NEAR(double(slack[i]), expected, 1e-6 * c * falloff(x, z) + 0.02 * expected) << "fragment " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+}
+
+// The voxel's slack is the mean of its fragments' slacks.
+TEST(FragmentSlack, VoxelSlackIsTheMeanOfItsFragments) {
+  Voxelization vox;
+  vox.n = 2;
+  VoxelFragment a, b, c;
+  a.voxel = b.voxel = ivec3(1, 0, 0);
+  c.voxel = ivec3(0, 1, 1);
+  vox.fragments = {a, b, c};
+  const Volume v = voxel_shading_slack(vox, {0.25f, 0.75f, 0.125f});
+  EXPECT_FLOAT_EQ(*v.voxel(1, 0, 0), 0.5f);
+  EXPECT_FLOAT_EQ(*v.voxel(0, 1, 1), 0.125f);
+  EXPECT_FLOAT_EQ(*v.voxel(0, 0, 0), 0.0f);
+}
+
+}  // namespace
+}  // namespace vct
