@@ -85,8 +85,9 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
                                   lods.srgb_after_filter, lods.texel_shift));
   s.shading_normal = p.normal;
   if (m.normal_texture.present()) {
-    const vec4 texel = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal],
-                                  lods.srgb_after_filter, lods.texel_shift);
+    const vec4 sampled = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal],
+                                    lods.srgb_after_filter, lods.texel_shift);
+    const vec3 texel = glm::clamp(vec3(sampled) + lods.normal_texel_offset, vec3(0.0f), vec3(1.0f));
     vec3 tn(texel.x * 2.0f - 1.0f, texel.y * 2.0f - 1.0f, texel.z * 2.0f - 1.0f);
     if (m.normal_two_channel) tn.z = std::sqrt(std::max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
     s.shading_normal = apply_normal_map(p.normal, p.tangent, tn, m.normal_scale);

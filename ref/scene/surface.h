@@ -55,6 +55,10 @@ struct SlotLods {
   // Every lookup's sample point moved by this many texels of the level it reads: the 8-bit
   // sub-texel weight precision GL leaves open (scene/texture_sample.h); zero for the reference.
   vec2 texel_shift{0.0f};
+  // Added to the filtered normal-map texel (each channel, clamped to [0, 1]): GL returns a lookup
+  // of an 8-bit UNORM texture with that format's precision, one step 1/255 (stages/texture_slack.h
+  // kUnorm8Step); zero for the reference.
+  vec3 normal_texel_offset{0.0f};
 };
 
 /// A surface sample's lambdas: the reference's own (exact derivatives) and, per slot, every lambda

@@ -88,6 +88,23 @@ float lookup_slack(const Scene& scene, const VoxelFragment& f, const SurfaceLods
   return slack;
 }
 
+/// Largest change over the 8-bit precision of the filtered normal-map texel (kUnorm8Step per
+/// channel), at the reference's position and lambdas.
+float normal_precision_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods,
+                             const vec3& value, const std::vector<ShadowMap>& maps,
+                             const VctSettings& settings, const BounceLight* bounce) {
+  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
+  SlotLods s = lods;
+  float slack = 0.0f;
+  for (int k = 0; k < kUnorm8Corners; ++k) {
+    s.normal_texel_offset = unorm8_corner(k);
+    const vec3 d =
+        glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) - value);
+    slack = std::max(slack, largest_channel(d));
+  }
+  return slack;
+}
+
 }  // namespace
 
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
@@ -101,8 +118,10 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     const VoxelFragment& f = vox.fragments[size_t(i)];
     const SurfaceLods& l = lods[f.triangle];
     float slack = position_slack(scene, vox, f, l.exact, values[size_t(i)], maps, settings, bounce);
-    if (is_textured(scene.materials[scene.triangle_material[f.triangle]]))
-      slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
+    const Material& m = scene.materials[scene.triangle_material[f.triangle]];
+    if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
+    if (m.normal_texture.present())
+      slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     out[size_t(i)] = slack;
   });
   return out;

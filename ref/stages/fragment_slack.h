@@ -6,7 +6,8 @@
 //     axis of the dominant-axis projection. That moves the fragment along its triangle: a PCF tap
 //     near a shadow-map texel edge or a depth tie flips, the falloff and textures shift;
 //   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
-//   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h).
+//   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h);
+//   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off.
 #pragma once
 
 #include <vector>
@@ -26,8 +27,9 @@ constexpr double kVoxelSnapShift = 1.0 / 256.0;
 /// Per fragment, the largest |change| (over RGB) of its light against `values`
 /// (fragment_radiance): the largest over the four (+-s, +-s) position shifts at the reference's
 /// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel
-/// shift at the fragment itself (the two freedoms are independent; the sum bounds their
-/// combination by the triangle inequality, each term taken where the reference sits).
+/// shift at the fragment itself, plus, with a normal map, the largest over the normal texel's
+/// 8-bit precision (the freedoms are independent; the sum bounds their combination by the
+/// triangle inequality, each term taken where the reference sits).
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
                                           const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,

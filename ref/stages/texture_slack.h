@@ -64,6 +64,20 @@ inline vec2 texel_shift(int k) {
   return k == 0 ? vec2(0.0f) : vec2((k & 1) ? s : -s, (k & 2) ? s : -s);
 }
 
+/// Precision of a filtered 8-bit UNORM lookup: GL leaves the filtering arithmetic open, and a
+/// result may be off by one step of the format (dEQP's texture verifiers take the colour threshold
+/// of an 8-bit format as one step; llvmpipe filters RGBA8 in 8-bit integers). A normal map lit at
+/// a grazing angle turns that step into a large relative change of n.l (docs/compare.md, "Voxel
+/// shading slack").
+constexpr float kUnorm8Step = 1.0f / 255.0f;
+constexpr int kUnorm8Corners = 8;
+/// Corner k of the cube [-kUnorm8Step, kUnorm8Step]^3 (the light is nearly linear-fractional in
+/// the texel, so its extremes over the cube lie at corners).
+inline vec3 unorm8_corner(int k) {
+  const float s = kUnorm8Step;
+  return vec3((k & 1) ? s : -s, (k & 2) ? s : -s, (k & 4) ? s : -s);
+}
+
 /// True when any of the material's slots has a texture.
 bool is_textured(const Material& m);
 
