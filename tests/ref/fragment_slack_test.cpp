@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
 #include "stage_test_scene.h"
 #include "stages/fragment_slack.h"
@@ -78,6 +79,59 @@ TEST(FragmentSlack, PositionTermIsTheLightsChangeOverASnapOfTheVoxelRaster) {
     ++checked;
   }
   EXPECT_GT(checked, 20);
+}
+
+// A floor whose normal map is one texel (128, 128, 255) under a sun at 60 degrees elevation along
+// +x: tn = 2 t - 1 = (1/255, 1/255, 1), so with normal +y and tangent +x (bitangent n x t = -z)
+// the shading normal is (tn.x, tn.z, -tn.y) / |tn| and n.l = (tn.x cos e + tn.z sin e) / |tn|.
+// Nothing varies across the floor (position and LOD terms are zero), so the slack is the 8-bit
+// precision term alone: the largest |L(corner) - L| over texels moved by +-1/255 per channel
+// (clamped to [0, 1]), L proportional to n.l.
+TEST(FragmentSlack, NormalMapTexelMayBeOneUnorm8StepOff) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.8f));
+  test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
+  s.tangents.assign(s.positions.size(), vec4(1, 0, 0, 1));
+  Texture t;
+  t.width = t.height = 1;
+  t.rgba8 = {128, 128, 255, 255};
+  s.textures.push_back(t);
+  s.materials[m].normal_texture.texture = 0;
+  const double e = glm::radians(60.0);
+  Light sun;
+  sun.kind = LightKind::Directional;
+  sun.direction = -vec3(float(std::cos(e)), float(std::sin(e)), 0.0f);  // where the light points
+  sun.intensity = 2.0f;
+  s.lights.push_back(sun);
+  s.volume = fit_volume(s.bounds);
+  build_texture_mips(s);
+  VctSettings settings;
+  settings.grid = 8;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
+  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, values, maps, settings);
+  const auto n_dot_l = [&](double tx, double ty, double tz) {
+    const glm::dvec3 tn(2.0 * tx - 1.0, 2.0 * ty - 1.0, 2.0 * tz - 1.0);
+    return (tn.x * std::cos(e) + tn.z * std::sin(e)) / glm::length(tn);
+  };
+  const double ref = n_dot_l(128 / 255.0, 128 / 255.0, 1.0);
+  double expected_rel = 0.0;  // largest |n.l(corner) - n.l| / n.l
+  for (double dx : {-1.0, 1.0})
+    for (double dy : {-1.0, 1.0})
+      for (double dz : {-1.0, 1.0}) {
+        const double nl = n_dot_l((128 + dx) / 255.0, (128 + dy) / 255.0, std::min(1.0, (255 + dz) / 255.0));
+        expected_rel = std::max(expected_rel, std::abs(nl - ref) / ref);
+      }
+  ASSERT_GT(expected_rel, 0.004);  // ~ (2/255) cot(e) = 0.0045: far above float noise
+  int checked = 0;
+  for (size_t i = 0; i < vox.fragments.size(); ++i) {
+    const double light = values[i].x;
+    ASSERT_GT(light, 0.0) << "fragment " << i << " in shadow";
+    EXPECT_NEAR(double(slack[i]), expected_rel * light, 1e-4 * light) << "fragment " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
 }
 
 // The voxel's slack is the mean of its fragments' slacks.
