@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "stages/texture_slack.h"
+
 namespace vct::cmp {
 
 double half_ulp(double v) {
@@ -116,16 +118,25 @@ std::string bound_text(const ImageModel& m) {
 }
 
 int texture_slack_channel(const std::string& stage, const Image& slack) {
-  // TextureSlackChannel order: the slack image's channel names, and the stage each widens.
-  static const char* kNames[] = {"normal", "albedo", "material", "emission", "direct"};
-  static const char* kStages[] = {stage_names::kGbufferNormal, stage_names::kGbufferAlbedo,
-                                  stage_names::kGbufferMaterial, stage_names::kGbufferEmission,
-                                  stage_names::kImageDirect};
-  for (int k = 0; k < 5; ++k) {
-    if (stage != kStages[k]) continue;
-    if (int(slack.channel_names.size()) != slack.channels) return k < slack.channels ? k : -1;
+  // Each stage a slack channel widens, with the channel's name and its TextureSlackChannel index
+  // (for unnamed images). image.emission is the G-buffer's emission as the final pass adds it, so
+  // the emission lookup's freedom is the same there.
+  struct Row {
+    const char* stage;
+    const char* channel;
+    int index;
+  };
+  static const Row kRows[] = {{stage_names::kGbufferNormal, "normal", kSlackNormal},
+                              {stage_names::kGbufferAlbedo, "albedo", kSlackAlbedo},
+                              {stage_names::kGbufferMaterial, "material", kSlackMaterial},
+                              {stage_names::kGbufferEmission, "emission", kSlackEmission},
+                              {stage_names::kImageEmission, "emission", kSlackEmission},
+                              {stage_names::kImageDirect, "direct", kSlackDirect}};
+  for (const Row& r : kRows) {
+    if (stage != r.stage) continue;
+    if (int(slack.channel_names.size()) != slack.channels) return r.index < slack.channels ? r.index : -1;
     for (int c = 0; c < slack.channels; ++c)
-      if (slack.channel_names[size_t(c)] == kNames[k]) return c;
+      if (slack.channel_names[size_t(c)] == r.channel) return c;
     return -1;
   }
   return -1;
