@@ -26,7 +26,8 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       const size_t i = vb.index(x, row);
       if (vb.triangle[i] < 0) continue;
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      if (!is_textured(scene.materials[scene.triangle_material[tri]]) && scene.colors.empty()) continue;
+      // Untextured surfaces too: the snapped sample point moves the interpolated normal (a dense
+      // smooth mesh at a grazing angle) and the shadow-map lookup (a PCF tap at a texel edge).
       const SurfaceLods lods =
           pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
       double cand[3][kMaxLodCandidates];
@@ -53,7 +54,21 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
                   direct_radiance(scene, maps, settings, points[p].position, nrm, v, m) - ref);
               slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));
             }
-      g.texture_slack.at(x, row, kSlackDirect) = slack;
+      // Plus the normal map's 8-bit lookup precision at the centre (stages/texture_slack.h
+      // kUnorm8Step), a freedom independent of the above: the sum bounds both (as the voxels').
+      float precision = 0.0f;
+      if (n > 0 && scene.materials[scene.triangle_material[tri]].normal_texture.present())
+        for (int k = 0; k < kUnorm8Corners; ++k) {
+          SlotLods c = lods.exact;
+          c.normal_texel_offset = unorm8_corner(k);
+          const SurfaceMaterial m = evaluate_material(scene, points[0], c);
+          const vec3 nrm = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
+          const vec3 v = glm::normalize(eye - points[0].position);
+          const vec3 d =
+              glm::abs(direct_radiance(scene, maps, settings, points[0].position, nrm, v, m) - ref);
+          precision = std::max(precision, std::max(d.x, std::max(d.y, d.z)));
+        }
+      g.texture_slack.at(x, row, kSlackDirect) = slack + precision;
     }
   });
 }

@@ -1,9 +1,10 @@
-// How far the direct light may legitimately move at a textured pixel: the reference's own
-// direct_radiance (stages/direct.h) shaded from every textured material a correct GL G-buffer may
-// hold there (the texture slack's sample shifts x admissible LODs, stages/texture_slack.h), at
+// How far the direct light may legitimately move at a pixel: the reference's own direct_radiance
+// (stages/direct.h) shaded from every material a correct GL G-buffer may hold there (the texture
+// slack's sample shifts x admissible LODs, stages/texture_slack.h), at the shifted positions and
 // the same shadow maps. image.direct's bound adds it (docs/compare.md, "Texture LOD"): a
 // normal-mapped surface's admissible normals move n.l and the specular lobe by more than the
-// shading bound alone allows.
+// shading bound alone allows; on any surface the snapped sample point moves the interpolated
+// normal and may flip a PCF tap at a shadow-map texel edge.
 #pragma once
 
 #include <vector>
@@ -14,7 +15,7 @@
 
 namespace vct {
 
-/// Fills channel kSlackDirect of g.texture_slack: per covered pixel of a textured material, the
+/// Fills channel kSlackDirect of g.texture_slack: per covered pixel, the
 /// largest |direct(candidate) - direct| over RGB, with `direct` the reference's image.direct.
 /// Every combination of the base colour, metallic-roughness and normal slots' LOD candidates is
 /// shaded at each shifted sample point.

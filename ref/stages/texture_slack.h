@@ -99,7 +99,8 @@ int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]);
 /// `triangle` at barycentrics `bary` (b0, b1, b2) and whose reference value `centre` was looked
 /// up at lods.exact: for each TextureSlackChannel, the largest |value - centre| over the centre
 /// and the 4 shifts (+-s, +-s), s = kTextureSlackShift, each at every lod candidate of the
-/// channel's texture slot. Zero for materials without textures.
+/// channel's texture slot. Without textures only the interpolated attributes (the vertex normal,
+/// COLOR_0) move.
 vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
                    uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
                    const SurfaceLods& lods);

@@ -122,7 +122,37 @@ TEST(TextureSlack, MinifiedCheckerboardMovesByTheShiftTimesTexelsPerPixel) {
   check_checker(true);   // sRGB base colour: the same wave, plus the decode-after-filter values
 }
 
-TEST(TextureSlack, UntexturedMaterialsHaveNone) {
+// A smooth-shaded untextured quad (the CheckerView quad, u = (x + 2) / 4) whose vertex normals
+// lean +-k along x: the interpolated normal is ((2u - 1) k, 0, 1) normalised, an attribute GL reads
+// at the snapped sample point like a texture coordinate. Its slack is the largest component change
+// over a shift of 2^-8 pixel (du = 0.136576 / 4 / 256 per pixel of the 16^2 view).
+TEST(TextureSlack, SmoothUntexturedNormalsMoveWithTheSamplePoint) {
+  CheckerView v = checker_quad(1, true);
+  v.scene.materials[0].base_color_texture.texture = -1;
+  const float k = 0.8f;
+  for (size_t i = 0; i < v.scene.positions.size(); ++i)
+    v.scene.normals[i] = glm::normalize(vec3(v.scene.positions[i].x < 0.0f ? -k : k, 0.0f, 1.0f));
+  VctSettings st;
+  st.width = st.height = 16;
+  const GBuffer g = render_gbuffer(v.scene, st);
+  const auto normal_at = [&](double u) {
+    const double t = (2.0 * u - 1.0) * k;
+    return glm::dvec3(t, 0.0, 1.0) / std::sqrt(1.0 + t * t);
+  };
+  const double du = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * kTextureSlackShift;
+  for (int x = 0; x < 16; ++x) {
+    const double u = (g.position.at(x, 8, 0) + 2.0) / 4.0;
+    double want = 0.0;
+    for (double d : {-du, du}) {
+      const glm::dvec3 c = glm::abs(normal_at(u + d) - normal_at(u));
+      want = std::max(want, std::max(c.x, c.z));
+    }
+    EXPECT_NEAR(g.texture_slack.at(x, 8, kSlackNormal), want, 0.02 * want + 1e-7) << x;
+    EXPECT_GT(want, 1e-4);
+  }
+}
+
+TEST(TextureSlack, FlatUntexturedMaterialsHaveNone) {
   CheckerView v = checker_quad(64, true);
   v.scene.materials[0].base_color_texture.texture = -1;
   VctSettings st;
