@@ -8,6 +8,8 @@
 // against that. The end-to-end difference stays in the report as context.
 #pragma once
 
+#include <optional>
+
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "compare/verdict.h"
@@ -22,6 +24,15 @@ namespace vct::cmp {
 /// are re-traced too when enabled.
 FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s);
 
+/// A multibounce frame's voxels as the reference computes them from the test's own bounce input:
+/// its last frame injected again with the bounce light traced in mips it builds from
+/// test.bounce_input (the test's frame before the last), particles added. End to end, every
+/// voxel the test's earlier frames legitimately moved (a tie, a shading slack) changes the bounce
+/// light of its neighbours, and the reference's own frames cannot show that. Nullopt when the test
+/// ran one frame (no bounce input).
+std::optional<VoxelGrid> reference_voxels_on_test_bounce_input(const Scene& scene, const FrameResult& test,
+                                                              const VctSettings& s);
+
 /// For every cone-traced stage, replaces the end-to-end verdict by the isolated one (stage judged
 /// on the test's own inputs) and keeps the end-to-end verdict in the note and in
 /// extra["end_to_end"], so a cone stage fails only when the test's marcher is wrong.
@@ -30,7 +41,8 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool so
 
 /// The whole isolated judgement, as `vct validate` and `vct compare --scene` run it: the reference
 /// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`
-/// (no masks by default), then applied to `end_to_end`.
+/// (no masks by default), then applied to `end_to_end`; in multibounce frames voxel.radiance too
+/// (reference_voxels_on_test_bounce_input).
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt = {});
 

@@ -39,6 +39,7 @@ struct GlFrame {
   GLenum voxel_format = GL_RGBA16F;
   int levels = 1;
   GLuint radiance = 0;                // voxel radiance with its mip chain
+  GLuint bounce_input = 0;            // the frame before the last's radiance (multibounce), else 0
   std::array<GLuint, 6> aniso{};      // directional volumes, level 0 = mip 1
   std::array<GLuint, 4> sums{};       // r, g, b (or packed CAS), count
   std::array<GLuint, 3> particle_sums{};

@@ -203,6 +203,7 @@ void voxel_passes(GlFrame& f) {
     resolve(f, radiance[cur]);
     build_mips(f, radiance[cur], aniso[cur]);
     f.out.multibounce_energy.push_back(total_radiance(f, radiance[cur], n));
+    f.bounce_input = b > 0 ? radiance[prev] : 0;
     if (multibounce_converged(f.out.multibounce_energy, f.s.convergence_tolerance)) break;
   }
   f.radiance = radiance[cur];

@@ -62,6 +62,7 @@ void read_back(GlFrame& f) {
 
   r.voxels.n = n;
   r.voxels.radiance = read_voxels(f, f.radiance, 0, n);
+  if (f.bounce_input) r.bounce_input = read_voxels(f, f.bounce_input, 0, n);
   r.voxels.fragments = read_volume_uint(f.sums[3], n);
   r.voxels.fragments.channel_names = {"fragments"};
   double fragments = 0.0;

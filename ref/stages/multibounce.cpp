@@ -58,6 +58,7 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
   finish_frame(scene, s, r);
   for (int frame = 1; frame < s.bounces; ++frame) {
     if (keep_frames) r.earlier_frames.push_back(r.grid.radiance);
+    r.bounce_input = r.grid.radiance;
     const VoxelMips previous = std::move(r.mips);
     const BounceLight bounce = make_bounce_light(scene, previous, s);
     sw = Stopwatch();

@@ -37,6 +37,7 @@ struct MultibounceResult {
   VoxelMips mips;   // its mips
   std::vector<double> energy;  // total_energy after each frame
   std::vector<Volume> earlier_frames;  // base level of each frame before the last (if kept)
+  Volume bounce_input;  // the base level the last frame's bounce light came from (frames > 1)
   int frames = 0;
   std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject"
 };

@@ -75,6 +75,7 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const
     const bool keep = keeps_multibounce_frames(s);
     MultibounceResult mb = inject_with_multibounce(scene, vox, r.shadow_maps, s, keep);
     r.multibounce_frames = std::move(mb.earlier_frames);
+    r.bounce_input = std::move(mb.bounce_input);
     for (const auto& [stage, ms] : mb.timings_ms) r.timings_ms[stage] += ms;
     r.voxels = std::move(mb.grid);
     r.mips = std::move(mb.mips);

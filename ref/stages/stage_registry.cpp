@@ -35,6 +35,7 @@ Image* cube_face(FrameResult& f, int i, bool grow) {
 }
 Volume* conservative(FrameResult& f, int, bool) { return &f.conservative_occupancy; }
 Volume* holes(FrameResult& f, int, bool) { return &f.holes; }
+Volume* bounce_input(FrameResult& f, int, bool) { return &f.bounce_input; }
 // iso[0] is the base level itself (voxel.radiance); the family starts at level 1.
 Volume* iso_level(FrameResult& f, int level, bool grow) {
   if (level < 1) return nullptr;
@@ -105,6 +106,8 @@ const std::vector<StageRow> kRows = {
    "highest value a correct CAS running average may store (reference only)", "Reduction", "ref/stages/reduction.cpp", "-", ""},
   {st::kVoxelShadingSlack,     "voxels_shading_slack",          K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::shading_slack>,
    "how far each voxel's mean light may move under GL's shading freedoms: 2^-8 voxel position snapping, texture LOD, sub-texel weights (reference only)", "Reduction", "ref/stages/fragment_slack.cpp, ref/stages/voxel_lod.cpp", "-", ""},
+  {st::kVoxelBounceInput,      "voxels_bounce_input",           K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           bounce_input,
+   "multibounce: the base level of the frame before the last, whose mips the last frame's bounce light was traced in; voxel.radiance is judged on the test's own (compare/isolated_stages.h)", "Temporal multibounce", "ref/stages/multibounce.cpp", "gl/gl_pass_voxel.cpp (voxel_passes)", ""},
   {st::kVoxelConservative,     "voxels_conservative_occupancy", K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           conservative,
    "exact triangle-box voxel occupancy (reference only)", "Voxelizers", "ref/stages/voxelize_conservative.cpp", "-", "voxelize"},
   {st::kVoxelHoles,            "holes",                         K::Volume, X::None,     R::Judged,    P::Volume,   T::VoxelHoles,     false, C::No,                0, "",                     nullptr,                                           holes,

@@ -103,6 +103,10 @@ struct FrameResult {
   // ref only: the base level after each multibounce frame before the last (kept while small,
   // see pipeline.cpp), for the dumps.
   std::vector<Volume> multibounce_frames;
+  // The base level the last multibounce frame traced its bounce light from (the frame before the
+  // last; empty after one frame): what voxel.radiance is judged on in bounce frames
+  // (compare/isolated_stages.h).
+  Volume bounce_input;
   std::map<std::string, double> timings_ms;  // stage name -> milliseconds
   BackendFacts facts;  // what ran and the driver's facts (typed; backend_facts.h)
   std::map<std::string, std::string> info;   // free-form notes only (counts, ...): nothing parses them

@@ -4,7 +4,13 @@
 
 #include "compare/isolated_stages.h"
 #include "scene/gltf_loader.h"
+#include "stages/inject.h"
+#include "stages/mips.h"
+#include "stages/multibounce.h"
+#include "stages/particles.h"
 #include "stages/pipeline.h"
+#include "stages/shadow_map.h"
+#include "stages/voxelize.h"
 
 namespace vct::cmp {
 namespace {
@@ -48,6 +54,50 @@ TEST(IsolatedStages, UpstreamTiesWarnButAWrongMarcherStillFails) {
   EXPECT_EQ(e2e.stages[2].verdict, Verdict::Fail);  // marcher wrong on its own inputs
   EXPECT_EQ(e2e.stages[3].verdict, Verdict::Fail);  // not cone-traced: untouched
   EXPECT_EQ(e2e.first_failing(), "image.indirect_specular");
+}
+
+// Multibounce voxels on the test's own bounce input: the reference's frame given to itself gives
+// its own last frame back bit for bit, and a test whose last frame added the bounce light 1.5x
+// too strongly (on a right bounce input) fails voxel.radiance there, while the same frame
+// judged end to end is blamed the same way.
+TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce) {
+  const Scene scene = load_scene("");
+  Settings s;
+  s.vct.width = s.vct.height = 32;
+  s.vct.grid = 16;
+  s.vct.shadow_map_size = 128;
+  s.vct.bounces = 3;
+  const FrameResult ref = render_ref_frame(scene, s);
+  ASSERT_EQ(ref.bounce_input.nx, 16);
+  const std::optional<VoxelGrid> again = reference_voxels_on_test_bounce_input(scene, ref, s.vct);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_EQ(again->radiance.data, ref.voxels.radiance.data);
+  // One frame: nothing to judge on.
+  FrameResult one = ref;
+  one.bounce_input = Volume();
+  EXPECT_FALSE(reference_voxels_on_test_bounce_input(scene, one, s.vct).has_value());
+
+  // The faulty test: its last frame's bounce light x 1.5, everything else the reference's.
+  VctSettings strong = s.vct;
+  strong.restitution *= 1.5f;
+  const Voxelization vox = voxelize_gpu_rule(scene, 16, ref.facts.sample_positions);
+  const BounceLight bounce = make_bounce_light(scene, build_mips(ref.bounce_input, false), strong);
+  FrameResult faulty = ref;
+  faulty.voxels = inject_and_reduce(scene, vox, render_shadow_maps(scene, s.vct), s.vct, &bounce);
+  add_particles_to_voxels(scene, s.vct, faulty.voxels.radiance);
+  const StageSet faulty_set = stage_set_from_frame(faulty, s.vct);
+  Report rep = compare_stage_sets(stage_set_from_frame(ref, s.vct), faulty_set);
+  judge_cones_on_test_inputs(rep, scene, faulty, s.vct, faulty_set);
+  const auto radiance = std::find_if(rep.stages.begin(), rep.stages.end(),
+                                     [](const StageVerdict& v) { return v.stage == "voxel.radiance"; });
+  ASSERT_NE(radiance, rep.stages.end());
+  EXPECT_EQ(radiance->verdict, Verdict::Fail) << radiance->note;
+  EXPECT_NE(radiance->note.find("the test's own bounce input"), std::string::npos) << radiance->note;
+  // The right frame judged the same way passes.
+  const StageSet ref_set = stage_set_from_frame(ref, s.vct);
+  Report same = compare_stage_sets(ref_set, ref_set);
+  judge_cones_on_test_inputs(same, scene, ref, s.vct, ref_set);
+  EXPECT_EQ(same.first_failing(), "");
 }
 
 }  // namespace
