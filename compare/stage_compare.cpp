@@ -475,7 +475,13 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const Volume* frags = rs.volumes.count(st::kVoxelFragments) ? &rs.volumes.at(st::kVoxelFragments) : nullptr;
   const Volume* tfrags = ts.volumes.count(st::kVoxelFragments) ? &ts.volumes.at(st::kVoxelFragments) : nullptr;
   if (tfrags && (!frags || !same_size(*tfrags, ref))) tfrags = nullptr;
-  size_t count_ties = 0, shading_ties = 0, transparent_lit = 0;
+  // Voxels whose every fragment's light GL computes bit for bit (the reference's voxel.exact:
+  // emission from constants, no light in front, no bounce, no particles) reduce to the same
+  // integers and the same half: with the fixed-point reduction and the same fragment count they
+  // must be identical (docs/compare.md, "Exact voxels"). Needs the test's fragment counts.
+  const Volume* exact = rs.volumes.count(st::kVoxelExact) ? &rs.volumes.at(st::kVoxelExact) : nullptr;
+  if (exact && (!same_size(*exact, ref) || !tfrags || m.cas_interval)) exact = nullptr;
+  size_t count_ties = 0, shading_ties = 0, transparent_lit = 0, exact_checked = 0, exact_differ = 0;
   const auto ro = occupancy(ref), to = occupancy(test);
   taint.assign(ro.size(), 0);
   Volume mask(ref.nx, ref.ny, ref.nz, 1);
@@ -489,6 +495,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     if (!ro[i] && !carries_light(ref, i) && !carries_light(test, i)) continue;
     if (!ro[i]) ++transparent_lit;
     const double n = frags ? std::max(1.0, double(frags->data[i * size_t(frags->channels)])) : 8.0;
+    // Different fragment counts: MSAA sample-coverage ties at triangle edges changed the set of
+    // fragments averaged; the mean of a different set is not bounded, only counted.
+    const bool count_tie = tfrags && frags->data[i * size_t(frags->channels)] != tfrags->data[i * size_t(tfrags->channels)];
+    const bool exact_voxel = exact && !count_tie && exact->data[i * size_t(exact->channels)] > 0.0f;
+    exact_checked += exact_voxel;
     double worst_ratio = 0;
     float we = 0, wb = 0;
     for (int c = 0; c < ch; ++c) {
@@ -496,7 +507,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
       const double r = ref.data[k], t = test.data[i * size_t(test.channels) + size_t(c)];
       const double slack =
           lod_slack && c < 3 ? double(lod_slack->data[i * size_t(lod_slack->channels)]) : 0.0;
-      double d = std::abs(t - r), bound = m.bound(r, n) + slack;
+      double d = std::abs(t - r), bound = exact_voxel ? 0.0 : m.bound(r, n) + slack;
       if (interval) {
         const double l = double(lo->data[k]) - m.abs - slack,
                      h = double(hi->data[k]) + m.abs + slack;
@@ -509,9 +520,6 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
       if (ratio > worst_ratio) worst_ratio = ratio, we = float(std::abs(t - r)), wb = float(bound);
     }
     ++v.checked;
-    // Different fragment counts: MSAA sample-coverage ties at triangle edges changed the set of
-    // fragments averaged; the mean of a different set is not bounded, only counted.
-    const bool count_tie = tfrags && frags->data[i * size_t(frags->channels)] != tfrags->data[i * size_t(tfrags->channels)];
     if (count_tie) ++count_ties, taint[i] = 1;
     if (worst_ratio <= 1.0) continue;
     ++v.out_of_bound;
@@ -520,7 +528,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
       ++v.allowed;
       continue;
     }
-    ++shading_ties, taint[i] = 1;
+    if (exact_voxel)
+      ++exact_differ;  // no freedom there: never a tie
+    else
+      ++shading_ties;
+    taint[i] = 1;
     int x, y, z;
     xyz_of(ref, i, x, y, z);
     offenders.push_back(voxel_offender(ref, test, x, y, z, we, wb));
@@ -541,6 +553,9 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   if (tfrags) v.note += "; " + std::to_string(count_ties) + " with a different fragment count (coverage ties" +
                         std::string(too_many ? ": more than 2%, not ties)" : ", tolerated)");
   v.extra["fragment_count_ties"] = count_ties;
+  v.extra["exact_voxels"] = exact_checked;
+  v.extra["exact_voxels_differing"] = exact_differ;
+  if (exact) v.note += "; " + std::to_string(exact_differ) + " of " + std::to_string(exact_checked) + " exact voxels differ";
   v.extra["shading_ties"] = shading_ties;
   if (shading_ties)
     v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound (shadow-test ties" +

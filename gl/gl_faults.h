@@ -27,6 +27,9 @@ inline constexpr GlFault kGlFaults[] = {
     {"racy_average", "non-atomic load/add/store or load/average/store (voxelize.frag); invisible on llvmpipe",
      stage_names::kVoxelRadiance, false, false},
     {"lost_update", "last writer wins instead of the reduction (voxelize.frag)", stage_names::kVoxelRadiance, false},
+    // Caught only by the exact voxels (voxel.exact): one half-ulp is within every shading bound.
+    {"half_truncate", "the RGBA16F store truncates instead of rounding to nearest even (half_round.glsl)",
+     stage_names::kVoxelRadiance, false},
     // Family members by their canonical names (stages/stage_registry.h: stage_name(row, level)).
     {"wrong_mip", "iso mip l built from level l-2 (mip_iso.comp)", "mip.iso.2", false},
     {"alpha_unclamped", "aniso compositing never clamps opacity (mip_aniso.comp; needs anisotropic)", "mip.posx.1",

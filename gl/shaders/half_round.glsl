@@ -14,7 +14,11 @@ float round_to_half(float v) {
   } else {
     int e;
     frexp(a, e);  // a = m * 2^e, m in [0.5, 1): 11 significant bits keep steps of 2^(e-11)
+#ifdef VCT_FAULT_HALF_TRUNCATE
+    r = ldexp(trunc(ldexp(a, 11 - e)), e - 11);  // fault: truncates instead of rounding to nearest even
+#else
     r = ldexp(roundEven(ldexp(a, 11 - e)), e - 11);
+#endif
   }
   return v < 0.0f ? -r : r;
 }

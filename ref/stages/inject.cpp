@@ -101,6 +101,7 @@ VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const s
   VoxelGrid g = reduce_fragments(vox, values, settings);
   g.shading_slack =
       voxel_shading_slack(vox, fragment_shading_slack(scene, vox, values, maps, settings, bounce));
+  g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
   return g;
 }
 

@@ -30,9 +30,21 @@ double total_energy(const Volume& radiance) {
 }
 
 namespace {
+// Particle light is float arithmetic on both sides (positions from a hash, falloff): a voxel it
+// reaches is no longer exact (VoxelGrid::exact).
+void add_particles(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
+  if (scene.emitters.empty()) return;
+  const Volume before = g.radiance;
+  add_particles_to_voxels(scene, s, g.radiance);
+  if (g.exact.voxel_count() != g.radiance.voxel_count()) return;
+  for (size_t i = 0; i < g.exact.voxel_count(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (g.radiance.data[i * 4 + size_t(c)] != before.data[i * 4 + size_t(c)]) g.exact.data[i] = 0.0f;
+}
+
 void finish_frame(const Scene& scene, const VctSettings& s, MultibounceResult& r) {
   Stopwatch sw;
-  add_particles_to_voxels(scene, s, r.grid.radiance);
+  add_particles(scene, s, r.grid);
   r.timings_ms["particles_voxels"] += sw.ms();
   sw = Stopwatch();
   r.mips = build_mips(r.grid.radiance, s.anisotropic);

@@ -60,6 +60,10 @@ struct VoxelGrid {
   // the voxelization pass (position snapping, texture LOD, sub-texel weights;
   // stages/fragment_slack.h).
   Volume shading_slack;
+  // Reference only: 1 where every fragment's light is computed bit for bit by any correct GL
+  // (stages/fragment_slack.h, fragment_light_is_exact), so the fixed-point reduction must agree
+  // exactly there.
+  Volume exact;
 };
 
 /// Axis directions of the anisotropic volumes, in this order: +x, -x, +y, -y, +z, -z.

@@ -67,6 +67,40 @@ TEST(StageCompare, RareShadowTiesWarnManyFail) {
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
 }
 
+// Exact voxels (the reference's voxel.exact) admit no difference at all: a half-ulp that every
+// shading bound allows elsewhere (here 0.4 + 2^-11) fails there, given both fragment counts.
+TEST(StageCompare, ExactVoxelsMustBeBitIdentical) {
+  StageSet a;
+  a.backend = "test";
+  a.storage = "rgba16f";
+  a.reduction = "fixed_point";
+  Volume v(8, 8, 8, 4), frags(8, 8, 8, 1), exact(8, 8, 8, 1);
+  for (int x = 0; x < 8; ++x) {
+    v.set_rgba(x, 1, 1, vec4(0.4f, 0.4f, 0.4f, 1.0f));
+    *frags.voxel(x, 1, 1) = 2.0f;
+  }
+  *exact.voxel(3, 1, 1) = 1.0f;
+  a.volumes["voxel.radiance"] = v;
+  a.volumes["voxel.fragments"] = frags;
+  StageSet ref = a;
+  ref.volumes["voxel.exact"] = exact;
+  StageSet b = a;
+  const float half_ulp = std::ldexp(1.0f, -12);  // half spacing in [0.25, 0.5) is 2^-12
+  b.volumes["voxel.radiance"].voxel(5, 1, 1)[0] += half_ulp;  // not exact: within the bound
+  StageVerdict r = find(compare_stage_sets(ref, b), "voxel.radiance");
+  EXPECT_EQ(r.verdict, Verdict::Pass) << r.note;
+  EXPECT_EQ(r.extra["exact_voxels"], 1);
+  b.volumes["voxel.radiance"].voxel(3, 1, 1)[0] += half_ulp;  // the exact voxel
+  r = find(compare_stage_sets(ref, b), "voxel.radiance");
+  EXPECT_EQ(r.verdict, Verdict::Fail) << r.note;
+  EXPECT_EQ(r.extra["exact_voxels_differing"], 1);
+  // A different fragment count there is a coverage tie: the voxel is no longer judged as exact.
+  b.volumes["voxel.fragments"].voxel(3, 1, 1)[0] = 3.0f;
+  r = find(compare_stage_sets(ref, b), "voxel.radiance");
+  EXPECT_EQ(r.extra["exact_voxels"], 0);
+  EXPECT_EQ(r.extra["exact_voxels_differing"], 0);
+}
+
 TEST(StageCompare, CasIntervalAcceptsAnyOrderRejectsOutside) {
   StageSet a = voxel_set("cas_rgba8");
   Volume lo = a.volumes["voxel.radiance"], hi = lo;

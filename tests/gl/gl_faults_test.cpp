@@ -105,6 +105,20 @@ TEST(GlFaults, LostUpdateFailsRadiance) {
   }
 }
 
+// A truncating half conversion moves a voxel by less than one half-ulp, within every shading
+// bound; only the exact voxels (voxel.exact: emission-only fragments, bit-determined on both
+// sides) see it. The box has them: its lamp and the walls outside the spot's cone.
+TEST(GlFaults, HalfTruncateFailsTheExactVoxels) {
+  VCT_REQUIRE_GL();
+  const cmp::Report rep = judge(*ctx, fault_settings("half_truncate", Reduction::FixedPoint, false));
+  EXPECT_FIRST_FAILING(rep, "voxel.radiance");
+  for (const cmp::StageVerdict& v : rep.stages)
+    if (v.stage == "voxel.radiance") {
+      EXPECT_GT(v.extra.value("exact_voxels_differing", 0), 0) << v.note;
+      EXPECT_EQ(v.extra.value("shading_ties", -1), 0) << v.note;  // the exact ones alone fail it
+    }
+}
+
 // Without the barrier between the voxelization draw and the resolve dispatch (GL 4.5 §7.12.2) a
 // GPU may resolve before the atomics land. llvmpipe finishes each pass before the next, so there
 // the frame is the correct one (the test says so and skips); on a GPU it asserts the stage.

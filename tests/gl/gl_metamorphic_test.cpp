@@ -65,6 +65,9 @@ const std::map<std::string, std::set<std::string>>& expected_catches() {
       {"wrong_axis", {"turn_x", "turn_y"}},
       // Last writer wins: the furnace's voxels hold Le / fragments instead of Le.
       {"lost_update", {"furnace"}},
+      // Half a ulp down: transform-invariant and within the linearity bound; only a reference's
+      // exact voxels see it.
+      {"half_truncate", {}},
       // Level l from level l-2 at level l-1's coordinates: neither shift- nor turn-equivariant.
       {"wrong_mip", {"shift_in_volume", "turn_x", "turn_y", "turn_z"}},
       // Opacity above 1: the mip model's range check needs no reference; the furnace's bound.

@@ -134,6 +134,50 @@ TEST(FragmentSlack, NormalMapTexelMayBeOneUnorm8StepOff) {
   EXPECT_GT(checked, 10);
 }
 
+// Exact fragments: untextured, no light reaching them by the margin, no bounce. A floor with
+// emission under (a) a sun from below (n.l = -0.5: exact), (b) a sun from above (lit: not),
+// (c) a spot above pointing sideways, the floor outside its 30 degree cone (exact; pointing down
+// with a 60 degree cone it reaches the floor), (d) a textured floor or a bounce frame (never).
+TEST(FragmentSlack, ExactFragmentsAreThoseNoFreedomReaches) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.5f), vec3(0.3f));
+  test::add_quad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {0, 1, 0}, m);
+  s.volume = fit_volume(s.bounds);
+  const Voxelization vox = voxelize_gpu_rule(s, 4, 4);
+  ASSERT_FALSE(vox.fragments.empty());
+  const VoxelFragment& f = vox.fragments.front();
+  VctSettings settings;
+  Light sun;
+  sun.kind = LightKind::Directional;
+  sun.direction = glm::normalize(vec3(0.0f, 1.0f, 1.0f));  // points up: the light comes from below
+  s.lights = {sun};
+  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, false));
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, true));  // a bounce term: float cones
+  s.lights[0].direction = -s.lights[0].direction;
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  Light spot;
+  spot.kind = LightKind::Spot;
+  spot.position = vec3(0.0f, 1.0f, 0.0f);
+  spot.direction = glm::normalize(vec3(1.0f, 0.0f, 0.0f));  // sideways: 90 degrees off the floor
+  spot.outer_cone_angle = glm::radians(30.0f);
+  s.lights = {spot};
+  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, false));
+  s.lights[0].direction = vec3(0.0f, -1.0f, 0.0f);  // down: every fragment within 47 degrees of it
+  s.lights[0].outer_cone_angle = glm::radians(60.0f);
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  s.lights.clear();
+  Texture t;
+  t.width = t.height = 1;
+  t.rgba8 = {255, 255, 255, 255};
+  s.textures.push_back(t);
+  s.materials[m].emissive_texture.texture = 0;
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  // Per voxel: 1 where every fragment is exact.
+  s.materials[m].emissive_texture.texture = -1;
+  const Volume v = voxel_exactness(s, vox, settings, false);
+  for (const VoxelFragment& g : vox.fragments) EXPECT_EQ(*v.voxel(g.voxel.x, g.voxel.y, g.voxel.z), 1.0f);
+}
+
 // The voxel's slack is the mean of its fragments' slacks.
 TEST(FragmentSlack, VoxelSlackIsTheMeanOfItsFragments) {
   Voxelization vox;
