@@ -6,6 +6,7 @@
 #include "stages/direct.h"
 #include "stages/reduction.h"
 #include "stages/texture_slack.h"
+#include "stages/voxel_fill.h"
 #include "stages/voxel_lod.h"
 
 namespace vct {
@@ -164,6 +165,8 @@ VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const s
                             const VctSettings& settings, const BounceLight* bounce) {
   const std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
   VoxelGrid g = reduce_fragments(vox, values, settings);
+  // Solid interior and thickening (voxel_fill.h) add opacity before particles and mips.
+  fill_voxels(scene, vox, settings, g.radiance);
   bool any_texture = false;
   for (const Material& m : scene.materials) any_texture = any_texture || textured(m);
   if (any_texture) {

@@ -35,7 +35,8 @@ std::vector<float> fragment_lod_slack(const Scene& scene, const Voxelization& vo
 /// Per voxel, the mean of its fragments' slacks (a bound on how far the voxel's mean may move).
 Volume voxel_lod_slack(const Voxelization& vox, const std::vector<float>& slack);
 
-/// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied,
+/// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied
+/// (and where stages/voxel_fill.h adds the solid interior or thickening),
 /// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
 /// texture_slack (voxel_lod_slack) when a material has a texture.
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
