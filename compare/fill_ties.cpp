@@ -2,13 +2,12 @@
 
 namespace vct::cmp {
 
-std::vector<uint8_t> surface_differences(const Volume& ref_fragments, const Volume& test_fragments,
-                                         bool counts_matter) {
+std::vector<uint8_t> surface_differences(const Volume& ref_fragments, const Volume& test_fragments) {
   std::vector<uint8_t> out(ref_fragments.voxel_count(), 0);
   for (size_t i = 0; i < out.size(); ++i) {
     const float r = ref_fragments.data[i * size_t(ref_fragments.channels)];
     const float t = test_fragments.data[i * size_t(test_fragments.channels)];
-    out[i] = (r > 0.0f) != (t > 0.0f) || (counts_matter && r != t) ? 1 : 0;
+    out[i] = r != t ? 1 : 0;
   }
   return out;
 }

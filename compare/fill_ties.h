@@ -12,11 +12,9 @@
 
 namespace vct::cmp {
 
-/// Per voxel, 1 where the surface (fragment count > 0) differs between the two fragment-count
-/// volumes, or, when `counts_matter`, both have a surface there with different counts (another
-/// set of triangles, so possibly other facing directions).
-std::vector<uint8_t> surface_differences(const Volume& ref_fragments, const Volume& test_fragments,
-                                         bool counts_matter);
+/// Per voxel, 1 where the fragment counts differ: a surface on one side only, or another set of
+/// triangles (so possibly other facing directions, which both fills read).
+std::vector<uint8_t> surface_differences(const Volume& ref_fragments, const Volume& test_fragments);
 
 /// Whether one of the six axis rays from voxel `i` (the voxel itself excluded) meets a voxel
 /// set in `differs`.

@@ -379,10 +379,11 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
   size_t missing_n = 0, extra_n = 0, ties = 0, hard = 0;
   taint.assign(ro.size(), 0);
   // Filled voxels (opaque without fragments: solid interior, thickening) are judged by their own
-  // rule (fill_ties.h). Against a conservative reference every voxel's fragment count differs by
-  // rule, so only the occupancy of the surface (its holes) can explain a fill difference there.
+  // rule (fill_ties.h). A sample-rule fragment lies on a triangle inside its voxel, so where the
+  // counts agree the two sides hold the same triangles (hence the same facing), also against a
+  // conservative reference.
   std::vector<uint8_t> surface_differs;
-  if (rfrag && tfrag) surface_differs = surface_differences(*rfrag, *tfrag, !conservative_ref);
+  if (rfrag && tfrag) surface_differs = surface_differences(*rfrag, *tfrag);
   size_t fill_differences = 0;
   for (size_t i = 0; i < ro.size(); ++i) {
     if (!missing_set[i] && !extra_set[i]) continue;

@@ -203,7 +203,7 @@ void voxel_passes(GlFrame& f) {
   f.levels = mip_count(n);
   for (GLuint& t : f.sums) t = make_texture_3d(GL_R32UI, n, 1);
   for (GLuint& t : f.particle_sums) t = make_texture_3d(GL_R32UI, n, 1);
-  if (f.s.surface_thickening_voxels > 0) f.facing = make_texture_3d(GL_R32UI, n, 1);
+  if (f.s.surface_thickening_voxels > 0 || f.s.solid_voxelization) f.facing = make_texture_3d(GL_R32UI, n, 1);
   glCreateBuffers(1, &f.emitter_ubo);
   glNamedBufferStorage(f.emitter_ubo, 7 * sizeof(vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
   // Two voxel textures (and directional sets): multibounce frame b reads frame b-1's.

@@ -18,16 +18,17 @@ const ivec3 STEPS[6] = ivec3[6](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0),
 bool in_grid(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(u_grid))); }
 bool surface(ivec3 c) { return imageLoad(u_count, c).r > 0u; }
 
-// Walks from c along d: does it meet a surface voxel before leaving the grid?
-bool meets_surface(ivec3 c, ivec3 d) {
-  for (ivec3 p = c + d; in_grid(p); p += d)
-    if (surface(p)) return true;
+// Walks from c along direction d: is the first surface voxel met one that does not face back
+// toward c (no triangle of facing d ^ 1 there)? False when the ray leaves the grid first.
+bool closed_along(ivec3 c, int d) {
+  for (ivec3 p = c + STEPS[d]; in_grid(p); p += STEPS[d])
+    if (surface(p)) return (imageLoad(u_facing, p).r & (1u << uint(d ^ 1))) == 0u;
   return false;
 }
 
 bool enclosed(ivec3 c) {
   for (int d = 0; d < 6; ++d)
-    if (!meets_surface(c, STEPS[d])) return false;
+    if (!closed_along(c, d)) return false;
   return true;
 }
 

@@ -32,39 +32,32 @@ std::vector<uint8_t> facing_masks(const Scene& scene, const Voxelization& vox) {
   return masks;
 }
 
-std::vector<uint8_t> enclosed_voxels(const std::vector<uint8_t>& surface, int n) {
-  // Per axis and per row along it, the first and last surface index; a voxel is enclosed along
-  // that axis when it lies strictly between them. Rows are addressed by the two other coordinates.
+std::vector<uint8_t> enclosed_voxels(const std::vector<uint8_t>& surface, const std::vector<uint8_t>& masks, int n) {
+  // Per direction, the first surface voxel along it from every voxel, found by one sweep per row
+  // against the direction (the GL pass walks each ray instead). A ray is closed when it meets a
+  // surface voxel that does not face back toward the start (no triangle there facing -d).
   std::vector<uint8_t> out(surface.size(), 0);
-  std::vector<int> first(size_t(3) * size_t(n) * size_t(n), n), last(first.size(), -1);
-  auto row = [n](int axis, int x, int y, int z) {
-    const int u = axis == 0 ? y : x, v = axis == 2 ? y : z;
-    return size_t(axis) * size_t(n) * size_t(n) + size_t(u) + size_t(n) * size_t(v);
-  };
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        if (!surface[linear(x, y, z, n)]) continue;
-        const int c[3] = {x, y, z};
-        for (int a = 0; a < 3; ++a) {
-          const size_t r = row(a, x, y, z);
-          first[r] = std::min(first[r], c[a]);
-          last[r] = std::max(last[r], c[a]);
+  std::vector<uint8_t> closed(surface.size(), 0);  // bit d: the ray along direction d is closed
+  for (int d = 0; d < 6; ++d) {
+    const int axis = d / 2, sign = d % 2 == 0 ? 1 : -1;
+    const uint8_t facing_back = uint8_t(1u << (d ^ 1));
+    for (int v = 0; v < n; ++v)
+      for (int u = 0; u < n; ++u) {
+        int hit = -1;  // linear index of the nearest surface voxel ahead, -1 = none
+        // Walk the row from its far end (in direction d) back to the start.
+        for (int step = 0; step < n; ++step) {
+          const int w = sign > 0 ? n - 1 - step : step;
+          int c[3];
+          c[axis] = w;
+          c[axis == 0 ? 1 : 0] = u;
+          c[axis == 2 ? 1 : 2] = v;
+          const size_t i = linear(c[0], c[1], c[2], n);
+          if (hit >= 0 && !(masks[size_t(hit)] & facing_back)) closed[i] |= uint8_t(1u << d);
+          if (surface[i]) hit = int(i);
         }
       }
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const size_t i = linear(x, y, z, n);
-        if (surface[i]) continue;
-        const int c[3] = {x, y, z};
-        bool enclosed = true;
-        for (int a = 0; a < 3 && enclosed; ++a) {
-          const size_t r = row(a, x, y, z);
-          enclosed = first[r] < c[a] && c[a] < last[r];
-        }
-        out[i] = enclosed ? 1 : 0;
-      }
+  }
+  for (size_t i = 0; i < out.size(); ++i) out[i] = !surface[i] && closed[i] == 0x3F ? 1 : 0;
   return out;
 }
 
@@ -97,10 +90,11 @@ int64_t fill_voxels(const Scene& scene, const Voxelization& vox, const VctSettin
   const int n = vox.n;
   std::vector<uint8_t> surface(size_t(n) * size_t(n) * size_t(n), 0);
   for (const VoxelFragment& f : vox.fragments) surface[linear(f.voxel.x, f.voxel.y, f.voxel.z, n)] = 1;
+  const std::vector<uint8_t> masks = facing_masks(scene, vox);
   std::vector<uint8_t> added(surface.size(), 0);
-  if (solid) added = enclosed_voxels(surface, n);
+  if (solid) added = enclosed_voxels(surface, masks, n);
   if (k > 0) {
-    const std::vector<uint8_t> thick = thickened_voxels(surface, facing_masks(scene, vox), n, k);
+    const std::vector<uint8_t> thick = thickened_voxels(surface, masks, n, k);
     for (size_t i = 0; i < added.size(); ++i) added[i] |= thick[i];
   }
   int64_t count = 0;

@@ -22,9 +22,12 @@ int facing_direction(const vec3& v0, const vec3& v1, const vec3& v2);
 /// Per voxel, a 6-bit mask of the facing directions of the triangles whose fragments it holds.
 std::vector<uint8_t> facing_masks(const Scene& scene, const Voxelization& vox);
 
-/// 1 where an empty voxel lies strictly between two surface voxels along each of x, y and z
-/// (every axis-aligned ray from it meets the surface before leaving the grid).
-std::vector<uint8_t> enclosed_voxels(const std::vector<uint8_t>& surface, int n);
+/// 1 where an empty voxel is inside: each of its six axis-aligned rays meets a surface voxel
+/// before leaving the grid, and that first surface voxel holds no triangle facing back along the
+/// ray (toward the voxel). The interior of a closed mesh whose winding faces outward fills; a room
+/// whose walls face inward does not.
+std::vector<uint8_t> enclosed_voxels(const std::vector<uint8_t>& surface, const std::vector<uint8_t>& masks,
+                                     int n);
 
 /// 1 where an empty voxel is among the `k` voxels behind a surface voxel (opposite a direction
 /// in its facing mask).

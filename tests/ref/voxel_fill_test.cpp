@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "stages/inject.h"
 #include "stages/voxel_fill.h"
@@ -30,8 +31,16 @@ VoxelGrid filled_grid(const Scene& s, bool solid, int k) {
 
 float alpha(const VoxelGrid& g, int x, int y, int z) { return g.radiance.rgba(x, y, z).a; }
 
+// The test box's walls face inward (a room); turned inside out they face outward (a solid box).
+Scene outward_box() {
+  Scene s = test::closed_box(vec3(0.5f), vec3(0.0f));
+  for (uvec3& t : s.triangles) std::swap(t.y, t.z);
+  for (vec3& n : s.normals) n = -n;
+  return s;
+}
+
 TEST(VoxelFill, ClosedBoxInteriorIsFilledExactly) {
-  const Scene s = test::closed_box(vec3(0.5f), vec3(0.0f));
+  const Scene s = outward_box();
   // The walls lie at 0 and 1 on every axis; the conservative voxelizer puts each in one layer
   // (the half-open voxel box holding the plane). The volume is a cube, so the layers are the same
   // on every axis.
@@ -54,8 +63,14 @@ TEST(VoxelFill, ClosedBoxInteriorIsFilledExactly) {
   EXPECT_EQ(interior, (hi - lo - 1) * (hi - lo - 1) * (hi - lo - 1));
 }
 
+TEST(VoxelFill, RoomFacingInwardIsNotFilled) {
+  // The same six walls facing inward: every ray from inside meets a wall facing back at it.
+  const Scene s = test::closed_box(vec3(0.5f), vec3(0.0f));
+  EXPECT_EQ(filled_grid(s, true, 0).radiance.data, filled_grid(s, false, 0).radiance.data);
+}
+
 TEST(VoxelFill, OpenBoxIsNotFilled) {
-  Scene s = test::closed_box(vec3(0.5f), vec3(0.0f));
+  Scene s = outward_box();
   // Drop the ceiling (triangles 2, 3): every column along y now escapes through the top.
   s.triangles.erase(s.triangles.begin() + 2, s.triangles.begin() + 4);
   s.triangle_material.erase(s.triangle_material.begin() + 2, s.triangle_material.begin() + 4);
