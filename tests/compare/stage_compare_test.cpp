@@ -120,7 +120,8 @@ TEST(StageCompare, FilledVoxelDiffersOnlyBehindASurfaceDifference) {
   const StageSet a = filled_set();
   StageSet b = a;
   b.volumes["voxel.radiance"].set_rgba(3, 1, 5, vec4(0.0f));  // not filled, surface identical
-  const StageVerdict& unexplained = find(compare_stage_sets(a, b), "voxel.occupancy");
+  const Report rep = compare_stage_sets(a, b);
+  const StageVerdict& unexplained = find(rep, "voxel.occupancy");
   EXPECT_EQ(unexplained.verdict, Verdict::Fail);
   EXPECT_EQ(unexplained.extra.value("fill_differences", 0), 1);
   // The floor voxel above it took another set of triangles (a fragment-count tie): its facing
