@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "compare/fill_ties.h"
 #include "compare/image_edges.h"
 #include "compare/tolerance.h"
 #include "io/image_io.h"
@@ -358,6 +359,8 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
                 : "exact, except ties (up to 1% of occupied voxels -> warn): a missing voxel with an extra one among "
                   "its 26 neighbours (sample on a voxel face), or a voxel of <= 2 fragments (sample on a triangle "
                   "edge); any other missing or extra voxel fails";
+  v.bound += "; a filled voxel (opaque, no fragments: solid/thickening) may differ only where an axis ray through it "
+             "crosses a surface difference";
   const auto ro = occupancy(ref), to = occupancy(test);
   auto frag_of = [&](const StageSet& s) -> const Volume* {
     auto it = s.volumes.find(st::kVoxelFragments);
@@ -375,15 +378,29 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
   std::vector<Offender> offenders;
   size_t missing_n = 0, extra_n = 0, ties = 0, hard = 0;
   taint.assign(ro.size(), 0);
+  // Filled voxels (opaque without fragments: solid interior, thickening) are judged by their own
+  // rule (fill_ties.h). A sample-rule fragment lies on a triangle inside its voxel, so where the
+  // counts agree the two sides hold the same triangles (hence the same facing), also against a
+  // conservative reference.
+  std::vector<uint8_t> surface_differs;
+  if (rfrag && tfrag) surface_differs = surface_differences(*rfrag, *tfrag);
+  size_t fill_differences = 0;
   for (size_t i = 0; i < ro.size(); ++i) {
     if (!missing_set[i] && !extra_set[i]) continue;
     (missing_set[i] ? missing_n : extra_n)++;
     // Coverage tie: the voxel held at most 2 fragments on the side that has it (samples on a
     // triangle edge, decided by the fill rule).
     const Volume* fr = missing_set[i] ? rfrag : tfrag;
+    const bool filled = !surface_differs.empty() && fr->data[i * size_t(fr->channels)] == 0.0f;
     const bool few = fr && fr->data[i * size_t(fr->channels)] <= 2.0f;
-    const bool tie = few || face_neighbour_in(ref, missing_set[i] ? extra_set : missing_set, i);
-    const bool allowed = tie || (conservative_ref && missing_set[i]);
+    bool allowed;
+    if (filled) {
+      ++fill_differences;
+      allowed = ray_meets(ref, surface_differs, i);
+    } else {
+      const bool tie = few || face_neighbour_in(ref, missing_set[i] ? extra_set : missing_set, i);
+      allowed = tie || (conservative_ref && missing_set[i]);
+    }
     taint[i] = 1;
     mask.data[i] = allowed ? 0.5f : 1.0f;  // white = unexplained difference, grey = tie / hole
     if (allowed) {
@@ -412,7 +429,9 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
         xyz_of(ref, i, x, y, z);
         offenders.push_back(voxel_offender(ref, test, x, y, z, 1.0f, 0.0f));
       }
-  v.extra = {{"occupied_reference", occupied}, {"missing", missing_n}, {"extra", extra_n}, {"ties", ties}};
+  if (fill_differences) v.note += "; " + std::to_string(fill_differences) + " of them filled voxels (solid/thickening)";
+  v.extra = {{"occupied_reference", occupied}, {"missing", missing_n}, {"extra", extra_n}, {"ties", ties},
+             {"fill_differences", fill_differences}};
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_volume_mask(opt, v, mask);

@@ -43,6 +43,7 @@ struct GlFrame {
   std::array<GLuint, 6> aniso{};      // directional volumes, level 0 = mip 1
   std::array<GLuint, 4> sums{};       // r, g, b (or packed CAS), count
   std::array<GLuint, 3> particle_sums{};
+  GLuint facing = 0;  // R32UI facing masks (solid voxelization and thickening only)
   GLuint emitter_ubo = 0;
   GLuint diffuse_cone_ubo = 0;  // sh::DiffuseConeBlock of the settings (binding 1, cone.glsl)
 

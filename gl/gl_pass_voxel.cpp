@@ -92,6 +92,10 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
   prog.set("u_reduction", f.s.reduction == Reduction::CasRgba8 ? 1 : 0);
   if (bounce > 0) bind_voxels(f, prog, prev_radiance, prev_aniso);
   for (GLuint c = 0; c < 4; ++c) bind_image(c, f.sums[c], 0, GL_READ_WRITE, GL_R32UI);
+  if (f.facing) {
+    clear_uint(f.facing);
+    bind_image(4, f.facing, 0, GL_READ_WRITE, GL_R32UI);
+  }
   f.geo.draw(prog);
   // The resolve reads what the fragment shader's atomics wrote: GL 4.5 §7.12.2 orders the two
   // only through this barrier (the missing_barrier fault leaves it out).
@@ -112,6 +116,23 @@ void resolve(GlFrame& f, GLuint target) {
   glDispatchCompute(groups(f.s.grid), groups(f.s.grid), groups(f.s.grid));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   check_gl("voxel resolve");
+}
+
+// Solid interior and thickening (voxel_fill.comp) on the resolved base level.
+void fill(GlFrame& f, GLuint target) {
+  if (!f.s.solid_voxelization && f.s.surface_thickening_voxels <= 0) return;
+  ScopedTimer timer(f.timers, "voxel_fill");
+  const std::string format = f.voxel_format == GL_RGBA8 ? "rgba8" : "rgba16f";
+  const Program prog =
+      Program::from_files({"voxel_fill.comp"}, f.programs.defines() + "#define VCT_VOXEL_FORMAT " + format + "\n");
+  prog.use();
+  set_setting_uniforms(prog, f.s);
+  bind_image(0, f.sums[3], 0, GL_READ_ONLY, GL_R32UI);
+  if (f.facing) bind_image(1, f.facing, 0, GL_READ_ONLY, GL_R32UI);
+  bind_image(2, target, 0, GL_READ_WRITE, f.voxel_format);
+  glDispatchCompute(groups(f.s.grid), groups(f.s.grid), groups(f.s.grid));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  check_gl("voxel fill");
 }
 
 void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso) {
@@ -182,6 +203,7 @@ void voxel_passes(GlFrame& f) {
   f.levels = mip_count(n);
   for (GLuint& t : f.sums) t = make_texture_3d(GL_R32UI, n, 1);
   for (GLuint& t : f.particle_sums) t = make_texture_3d(GL_R32UI, n, 1);
+  if (f.s.surface_thickening_voxels > 0 || f.s.solid_voxelization) f.facing = make_texture_3d(GL_R32UI, n, 1);
   glCreateBuffers(1, &f.emitter_ubo);
   glNamedBufferStorage(f.emitter_ubo, 7 * sizeof(vec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
   // Two voxel textures (and directional sets): multibounce frame b reads frame b-1's.
@@ -201,6 +223,7 @@ void voxel_passes(GlFrame& f) {
     const size_t prev = 1 - cur;
     voxelize(f, prog, b, radiance[prev], aniso[prev]);
     resolve(f, radiance[cur]);
+    fill(f, radiance[cur]);
     build_mips(f, radiance[cur], aniso[cur]);
     f.out.multibounce_energy.push_back(total_radiance(f, radiance[cur], n));
     f.bounce_input = b > 0 ? radiance[prev] : 0;

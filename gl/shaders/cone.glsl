@@ -13,6 +13,7 @@ uniform int u_grid;
 uniform float u_cone_start;     // texture units
 uniform float u_cone_max_distance;
 uniform float u_cone_quality;
+uniform int u_opacity_step_correction;
 
 // A directional chain is [shared base level, aniso level 0 (= mip 1), ...].
 vec4 sample_direction(int d, vec3 uvw, float lod) {
@@ -57,11 +58,14 @@ vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float max_distance, float
     if (!inside_unit_cube(pos)) break;
     float diameter = max(voxel, 2.0f * t * tan_half);
     float lod = max(log2(diameter / voxel), min_lod);
+    float step = max(diameter * u_cone_quality, 1e-6f);
     vec4 s = sample_voxels(pos, lod, dir);
+    // dt0 = the side of a voxel of the level sampled (vct_shared.h step_corrected_sample).
+    if (u_opacity_step_correction != 0) s = step_corrected_sample(s, step / (voxel * exp2(lod)));
     float transmit = 1.0f - alpha;
     color += transmit * s.rgb;
     alpha += transmit * s.a;
-    t += max(diameter * u_cone_quality, 1e-6f);
+    t += step;
   }
   return vec4(color, min(alpha, 1.0f));
 }

@@ -24,6 +24,11 @@ layout(binding = 0, r32ui) uniform coherent volatile uimage3D u_sum_r;  // CAS: 
 layout(binding = 1, r32ui) uniform coherent volatile uimage3D u_sum_g;
 layout(binding = 2, r32ui) uniform coherent volatile uimage3D u_sum_b;
 layout(binding = 3, r32ui) uniform coherent volatile uimage3D u_count;
+// Solid voxelization and thickening only (bound when either is on): per voxel, one bit per facing
+// direction of its triangles (ref/stages/voxel_fill.h facing_direction).
+layout(binding = 4, r32ui) uniform coherent volatile uimage3D u_facing;
+uniform int u_surface_thickening_voxels;
+uniform int u_solid_voxelization;
 
 ivec3 voxel_coords() {
   int n = u_grid;
@@ -90,6 +95,12 @@ void main() {
   ivec3 c = voxel_coords();
   vec3 value = voxel_radiance(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, v_tex);
   imageAtomicAdd(u_count, c, 1u);
+  if (u_surface_thickening_voxels > 0 || u_solid_voxelization != 0) {
+    // The dominant axis and its sign, from the geometry shader's cross product (the CPU's float
+    // cross product: the sign of the largest component cannot differ).
+    uint facing = uint(2 * v_axis + (v_geometric_normal[v_axis] < 0.0f ? 1 : 0));
+    imageAtomicOr(u_facing, c, 1u << facing);
+  }
   if (u_reduction == 1) {
     cas_average(c, clamp(value, vec3(0.0f), vec3(1.0f)));
   } else {

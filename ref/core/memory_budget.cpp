@@ -45,6 +45,9 @@ uint64_t voxel_bytes(const VctSettings& v) {
   const uint64_t grid = n3 * (16 + 4 + (v.reduction == Reduction::CasRgba8 ? 32 : 0));
   const uint64_t mips = mip_bytes(n3, v.anisotropic);
   uint64_t bytes = occupancy + grid + mips + kFragmentsPerSlice * n * n * kBytesPerFragment;
+  // Solid voxelization / thickening (stages/voxel_fill.cpp), during injection: byte masks for the
+  // surface, the facing, the closed rays, each fill's result and their union.
+  if (v.solid_voxelization || v.surface_thickening_voxels > 0) bytes += 6 * n3;
   if (v.bounces > 1) {
     // A bounce frame traces the previous mips while it reduces a new grid (the old grid is
     // replaced only when the new one is done) and then builds new mips (the previous ones still

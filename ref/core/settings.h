@@ -17,6 +17,8 @@ enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean v
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
+// Largest surface_thickening_voxels: a wall thicker than this is a scene edit, not a fix.
+inline constexpr int kMaxThickening = 4;
 
 struct VctSettings {
   // Images and shadow maps.
@@ -34,6 +36,9 @@ struct VctSettings {
   VoxelStorage storage = VoxelStorage::Rgba16f;
   Reduction reduction = Reduction::ExactMean;
   bool anisotropic = false;
+  // Artifact fixes (issue 17; docs/pipeline.md, "Solid voxelization and surface thickening").
+  bool solid_voxelization = false;   // opaque (A = 1, RGB 0) interior of closed geometry
+  int surface_thickening_voxels = 0;  // opaque voxels added behind each surface, 0..kMaxThickening
 
   // Cone tracing.
   bool diffuse_cones = true;
@@ -48,6 +53,9 @@ struct VctSettings {
   float cone_offset_voxels = 1.5f;  // start offset, in voxels of level 0
   float max_distance = 1.7320508f;  // in voxel-texture units ([0,1]^3 cube diagonal)
   float soft_shadow_aperture_deg = 10.0f;
+  // Sample opacity corrected for the step length: 1 - (1 - a)^(step / voxel size at the lod)
+  // (sh::step_corrected_opacity; docs/pipeline.md, "Cone marching").
+  bool opacity_step_correction = false;
 
   // Temporal multibounce.
   int bounces = 1;                 // frames of multibounce; 1 = direct light in voxels only

@@ -323,6 +323,22 @@ VCT_FN vec3 particle_voxel_radiance(ParticleState p, float voxel_size) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Opacity step correction (settings.opacity_step_correction; docs/pipeline.md, "Cone marching"):
+// a voxel's opacity a holds for a path of one voxel of its level (dt0 = 2^lod / N); a sample
+// standing for a step dt of the same medium has opacity 1 - (1 - a)^(dt / dt0), the standard
+// volume-rendering correction (Engel et al., Real-Time Volume Graphics, ch. 9 "opacity correction").
+// Premultiplied radiance scales by the same factor as the opacity (a'/a, and dt/dt0 as a -> 0,
+// the optically thin limit), so the sample's colour over opacity is unchanged.
+VCT_FN float step_corrected_opacity(float a, float step_ratio) {
+  return 1.0f - pow(clamp(1.0f - a, 0.0f, 1.0f), step_ratio);
+}
+VCT_FN vec4 step_corrected_sample(vec4 s, float step_ratio) {
+  float a = step_corrected_opacity(s.w, step_ratio);
+  float scale = s.w > 0.0f ? a / s.w : step_ratio;
+  return vec4(vec3(s) * scale, a);
+}
+
+// ---------------------------------------------------------------------------------------------
 // glTF 2.0 alphaMode (§3.9.4 "Alpha Coverage"): the one test every pass that rasterizes or traces
 // applies to the base-colour alpha (base_color_factor.a x texture alpha). MASK discards a surface
 // point whose alpha is below alphaCutoff; BLEND is treated as MASK at a fixed cutoff of 1/2, the

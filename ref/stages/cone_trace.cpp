@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shared/vct_shared.h"
 #include "stages/mip_sampler.h"
 #include "stages/voxel_sampler.h"
 
@@ -13,6 +14,7 @@ MarchParams MarchParams::from_settings(const VctSettings& s, int grid) {
   p.start_offset = s.cone_offset_voxels / float(grid);
   p.max_distance = s.max_distance;
   p.quality = s.cone_quality;
+  p.step_correction = s.opacity_step_correction;
   return p;
 }
 
@@ -35,14 +37,17 @@ vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sampl
     if (!inside_unit_cube(pos)) break;
     const float diameter = std::max(voxel, 2.0f * t * tan_half);
     const float lod = std::max(std::log2(diameter / voxel), params.min_lod);
-    const vec4 s = sample(pos, lod, cone.direction);
+    // A degenerate step (quality 0) would never end; the settings validator forbids it, but a
+    // hand-built MarchParams might not.
+    const float step = std::max(diameter * params.quality, 1e-6f);
+    vec4 s = sample(pos, lod, cone.direction);
+    // dt0: the side of a voxel of the level sampled (lod as computed, before any clamp).
+    if (params.step_correction) s = sh::step_corrected_sample(s, step / (voxel * std::exp2(lod)));
     const float transmit = 1.0f - alpha;
     color += transmit * vec3(s);
     alpha += transmit * s.a;
     if (record) record->push_back({pos, t, diameter, lod, s, vec4(color, alpha)});
-    // A degenerate step (quality 0) would never end; the settings validator forbids it, but a
-    // hand-built MarchParams might not.
-    t += std::max(diameter * params.quality, 1e-6f);
+    t += step;
   }
   return vec4(color, std::min(alpha, 1.0f));
 }

@@ -22,6 +22,7 @@ struct MarchParams {
   float max_distance = 1.7320508f;
   float quality = 0.5f;       // step = diameter * quality
   float min_lod = 0.0f;       // multibounce traces start at level >= 1
+  bool step_correction = false;  // sh::step_corrected_sample with dt / dt0 = step / (2^lod / N)
   static MarchParams from_settings(const VctSettings& s, int grid);
 };
 

@@ -6,6 +6,7 @@
 #include "stages/direct.h"
 #include "stages/fragment_slack.h"
 #include "stages/reduction.h"
+#include "stages/voxel_fill.h"
 #include "stages/voxel_lod.h"
 
 namespace vct {
@@ -99,6 +100,8 @@ VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const s
                             const VctSettings& settings, const BounceLight* bounce) {
   const std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
   VoxelGrid g = reduce_fragments(vox, values, settings);
+  // Solid interior and thickening (voxel_fill.h) add opacity before particles and mips.
+  fill_voxels(scene, vox, settings, g.radiance);
   g.shading_slack =
       voxel_shading_slack(vox, fragment_shading_slack(scene, vox, values, maps, settings, bounce));
   g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);

@@ -29,7 +29,8 @@ vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMate
 std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                                     const VctSettings& settings, const BounceLight* bounce = nullptr);
 
-/// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied,
+/// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied
+/// (and where stages/voxel_fill.h adds the solid interior or thickening),
 /// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
 /// shading_slack (stages/fragment_slack.h).
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,

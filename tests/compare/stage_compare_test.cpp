@@ -134,6 +134,39 @@ TEST(StageCompare, ConservativeReferenceTurnsMissingIntoHoles) {
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Fail);
 }
 
+// Solid voxelization / thickening add opaque voxels without fragments (ref/stages/voxel_fill.h).
+// Whether a voxel is added depends only on the surface on the six axis rays through it, so a
+// difference there is a tie only where such a ray crosses a surface difference; a backend that
+// does not fill fails.
+StageSet filled_set() {
+  StageSet s = voxel_set("fixed_point");
+  Volume frags(8, 8, 8, 1);
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x) {
+      frags.voxel(x, 2, z)[0] = 4.0f;  // the floor: 4 fragments each (no coverage tie)
+      s.volumes["voxel.radiance"].set_rgba(x, 1, z, vec4(0.0f, 0.0f, 0.0f, 1.0f));  // thickened below
+    }
+  s.volumes["voxel.fragments"] = frags;
+  return s;
+}
+
+TEST(StageCompare, FilledVoxelDiffersOnlyBehindASurfaceDifference) {
+  const StageSet a = filled_set();
+  StageSet b = a;
+  b.volumes["voxel.radiance"].set_rgba(3, 1, 5, vec4(0.0f));  // not filled, surface identical
+  const Report rep = compare_stage_sets(a, b);
+  const StageVerdict& unexplained = find(rep, "voxel.occupancy");
+  EXPECT_EQ(unexplained.verdict, Verdict::Fail);
+  EXPECT_EQ(unexplained.extra.value("fill_differences", 0), 1);
+  // The floor voxel above it took another set of triangles (a fragment-count tie): its facing
+  // may differ, so the voxel below may legitimately not be thickened.
+  b.volumes["voxel.fragments"].voxel(3, 2, 5)[0] = 3.0f;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Warn);
+  // ... but not one whose rays all miss the tie.
+  b.volumes["voxel.radiance"].set_rgba(6, 1, 0, vec4(0.0f));
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Fail);
+}
+
 TEST(StageCompare, DepthEdgeTiesWarnInteriorDifferencesFail) {
   Image ref(64, 64, 1, 1.0f);
   for (int y = 16; y < 48; ++y)

@@ -481,6 +481,47 @@ ElementCase range_window_case() {
   return c;
 }
 
+// step_corrected_opacity / step_corrected_sample: 1 - pow(1 - a, r). GLSL 4.50 §4.7.1 defines
+// pow's precision as that of exp2(r * log2(x)): log2 within 2^-21 absolute on [0.5, 2] and 3 ulp
+// (6 u) elsewhere, the product 1 u, exp2 (3 + 2|z|) ulp = (6 + 4|z|) u relative; an absolute error
+// E in z = r log2(x) becomes ln2 E relative in exp2. glibc's powf is within 1 ulp (2 u). 1 - a and
+// the clamp are exact or correctly rounded alike on both sides; the final 1 - p rounds once (1 u
+// of the result, each side). The sample's rgb is rgb * (a'/a): a'/a carries a''s relative bound,
+// the division 5 u (GL) + 1 u (C++), the product 1 u each side, so |d rgb'| <= |rgb|/a |d a'| +
+// 8 u |rgb'|; a = 0 multiplies by r (1 u each side).
+double step_opacity_bound(float a, float r) {
+  const double x = std::clamp(1.0 - double(a), 0.0, 1.0);
+  if (x == 0.0) return 0.0;  // pow(0, r > 0) = 0 on both sides (exp2(-inf))
+  const double l = std::log2(x), z = double(r) * l, p = std::exp2(z);
+  const double log_err = x >= 0.5 ? 8.0 * kU : 6.0 * kU * std::abs(l);
+  const double e_z = double(r) * log_err + kU * std::abs(z);
+  const double pow_rel = std::log(2.0) * e_z + (6.0 + 4.0 * std::abs(z)) * kU + kCpuLibmU * kU;
+  return p * pow_rel + 2.0 * kU * std::abs(1.0 - p);
+}
+
+ElementCase step_correction_case() {
+  ElementCase c{"step_corrected_opacity, step_corrected_sample", "ff", 2, "", nullptr, {}};
+  for (float a : {0.0f, 1e-6f, 1e-3f, 0.01f, 0.1f, 0.25f, 0.5f, 0.75f, 0.9f, 0.99f, 0.999f, 1.0f})
+    for (float r : {0.01f, 0.125f, 0.25f, 0.5f, 0.7f, 1.0f, 2.0f, 4.0f})
+      c.inputs.insert(c.inputs.end(), {words(vec4(a, r, 0, 0)), words(vec4(0.3f, 1.7f, 0.0f, 0.0f) * a)});
+  c.glsl =
+      "vec4 a = fin(0u), s = fin(1u);\nput(0u, vec4(step_corrected_opacity(a.x, a.y), 0.0f, 0.0f, 0.0f));\n"
+      "put(1u, step_corrected_sample(vec4(s.xyz, a.x), a.y));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]), s = floats(in[1]);
+    const float o = sh::step_corrected_opacity(a.x, a.y);
+    const vec4 cs = sh::step_corrected_sample(vec4(vec3(s), a.x), a.y);
+    const double ob = step_opacity_bound(a.x, a.y);
+    // |d rgb'| <= |rgb| / a * |d a'| + |rgb'| * 8 u (a' may be 0 on one side and tiny on the other).
+    glm::dvec4 sb(ob);
+    for (int k = 0; k < 3; ++k)
+      sb[k] = a.x > 0.0f ? std::abs(double(s[k])) / double(a.x) * ob + std::abs(double(cs[k])) * 8.0 * kU
+                         : std::abs(double(cs[k])) * 2.0 * kU;
+    return std::vector<ExpectedSlot>{within(vec4(o, 0, 0, 0), {ob, 0, 0, 0}), within(cs, sb)};
+  };
+  return c;
+}
+
 ElementCase spot_irradiance_case() {
   ElementCase c{"spot_irradiance", "ff", 1, "", nullptr, {}};
   for (int model : {sh::LIGHT_MODEL_GLTF, sh::LIGHT_MODEL_SEED})
@@ -939,6 +980,7 @@ std::vector<ElementCase> all_cases() {
           cook_torrance_case(),
           spot_cone_case(),
           range_window_case(),
+          step_correction_case(),
           spot_irradiance_case(),
           directional_irradiance_case(),
           point_irradiance_case(),
