@@ -10,7 +10,7 @@ namespace vct::attr {
 
 namespace {
 // Salts keep the rungs' random numbers apart even within one stream.
-constexpr uint32_t kSaltCosine = 11, kSaltCones = 12;
+constexpr uint32_t kSaltCosine = 11, kSaltCosineKd = 13, kSaltCones = 12;
 }  // namespace
 
 const std::vector<std::string>& diffuse_term_names() {
@@ -21,7 +21,7 @@ const std::vector<std::string>& diffuse_term_names() {
 RungImage gather_cosine_rays(const LadderContext& ctx, uint32_t stream, bool composite_kd) {
   const uint32_t seed = ctx.settings().pt.seed;
   return ctx.for_each_pixel([&](const PixelSurface& s, RungImage& out) {
-    pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, kSaltCosine), stream);
+    pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, composite_kd ? kSaltCosineKd : kSaltCosine), stream);
     const sh::Frame frame = sh::frame_from_normal(s.n);
     const pt::BsdfPoint bsdf = pt::make_bsdf_point(s.pbr, s.n, s.n, s.v);
     const vec3 origin = ctx.scene().volume.to_texture(s.p);
