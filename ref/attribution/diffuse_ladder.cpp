@@ -42,7 +42,9 @@ RungImage gather_cone_set_rays(const LadderContext& ctx, uint32_t stream) {
   const int count = sh::diffuse_cone_count(block);
   const float aperture = vs.diffuse_aperture_deg * (kPi / 180.0f);
   const uint32_t seed = ctx.settings().pt.seed;
+  const bool on = vs.diffuse_cones;
   return ctx.for_each_pixel([&](const PixelSurface& s, RungImage& out) {
+    if (!on) return;  // the frame traces no diffuse cones: the quadrature term takes it all
     pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, kSaltCones), stream);
     const sh::Frame frame = sh::frame_from_normal(s.n);
     const float rotation = diffuse_rotation_for_pixel(vs, s.x, s.y);  // the frame's rotation
