@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "attribution/attribution.h"
-#include "attribution/budget_images.h"
+#include "attribution_outputs.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -43,36 +43,6 @@ Settings attribute_defaults() {
   s.vct.shadow_map_size = 512;
   s.pt.spp = 64;
   return s;
-}
-
-void print_budget(const attr::ComponentBudget& b, const std::string& prefix) {
-  const double total = b.total.value.mean;
-  for (size_t k = 0; k < b.rungs.size(); ++k)
-    std::printf("%s%-18s rung %-18s %12.6f  +- %.6f\n", prefix.c_str(), b.component.c_str(), b.rung_names[k].c_str(),
-                b.rungs[k].mean, b.rungs[k].se);
-  for (const attr::Term& t : b.terms)
-    std::printf("%s%-18s term %-18s %+12.6f  +- %.6f  %6.1f%%\n", prefix.c_str(), b.component.c_str(),
-                t.name.c_str(), t.value.mean, t.value.se, total != 0.0 ? 100.0 * t.value.mean / total : 0.0);
-  std::printf("%s%-18s      %-18s %+12.6f  +- %.6f  (sum of terms %+.6f +- %.6f: %s)\n", prefix.c_str(),
-              b.component.c_str(), "total", total, b.total.value.se, b.sum_of_terms, b.sum_se,
-              b.sums_to_total() ? "adds up" : "DOES NOT ADD UP");
-}
-
-// Waterfall per component, heat map (EXR of the RGB difference + PNG of its luminance) per term.
-nlohmann::json write_budget_images(const RunDir& run, const attr::ComponentBudget& b, const Image& mask) {
-  nlohmann::json files;
-  const std::string stem = "attribution/" + b.component;
-  std::filesystem::create_directories(run.file("attribution"));
-  write_png_linear(run.file(stem + "_waterfall.png"), attr::waterfall_image(b), 0.0f, 1.0f);
-  files["waterfall"] = stem + "_waterfall.png";
-  for (const attr::Term& t : b.terms) {
-    const std::string name = stem + "_" + t.name;
-    float scale = 0.0f;
-    write_exr(run.file(name + ".exr"), t.image.value);
-    write_png_linear(run.file(name + ".png"), attr::term_heat_image(t.image, mask, &scale), 0.0f, 1.0f);
-    files["heat_maps"][t.name] = {{"exr", name + ".exr"}, {"png", name + ".png"}, {"scale", scale}};
-  }
-  return files;
 }
 
 nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec,
@@ -113,11 +83,8 @@ int run_attribute(const AttributeOptions& o) {
   doc["scene"] = scene.source;
   doc["settings"] = s;
   doc["rays_per_pixel"] = o.rays;
-  doc["components"] = attr::to_json(a);
-  for (size_t i = 0; i < a.components.size(); ++i) {
-    print_budget(a.components[i], "");
-    doc["components"][i]["files"] = write_budget_images(run, a.components[i], frame.gbuffer.coverage);
-  }
+  doc["components"] = write_attribution(run, a, frame.gbuffer.coverage);
+  for (const attr::ComponentBudget& b : a.components) print_budget(b, "");
   if (!o.sweeps.empty()) {
     doc["sweeps"] = nlohmann::json::array();
     for (const std::string& spec : o.sweeps) doc["sweeps"].push_back(run_sweep(scene, s, spec, opt, cache));
