@@ -49,9 +49,9 @@ void print_budget(const attr::ComponentBudget& b, const std::string& prefix) {
   for (const attr::Term& t : b.terms)
     std::printf("%s%-18s term %-18s %+12.6f  +- %.6f  %6.1f%%\n", prefix.c_str(), b.component.c_str(),
                 t.name.c_str(), t.value.mean, t.value.se, total != 0.0 ? 100.0 * t.value.mean / total : 0.0);
-  std::printf("%s%-18s      %-18s %+12.6f  +- %.6f  (sum of terms %+.6f +- %.6f: %s)\n", prefix.c_str(),
-              b.component.c_str(), "total", total, b.total.value.se, b.sum_of_terms, b.sum_se,
-              b.sums_to_total() ? "adds up" : "DOES NOT ADD UP");
+  std::printf("%s%-18s      %-18s %+12.6f  +- %.6f  (sum of terms %+.6f; sum - total %+.6f +- %.6f: %s)\n",
+              prefix.c_str(), b.component.c_str(), "total", total, b.total.value.se, b.sum_of_terms, b.discrepancy,
+              b.discrepancy_se, b.sums_to_total() ? "adds up" : "DOES NOT ADD UP");
 }
 
 nlohmann::json write_attribution(const RunDir& run, const attr::Attribution& a, const Image& mask) {
