@@ -2,6 +2,7 @@
 // Exit: 0 when every GPU stage passes (warnings included), 1 when one fails or the GL frame
 // errors, 2 bad input, 3 only with --require-gl and no GL context; without --require-gl a
 // missing GL context is reported ("gl: unavailable") and the ref/pt parts still run.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -147,6 +148,16 @@ void write_validate_attribution(RunDir& run, const Scene& scene, const Settings&
   doc["sums_to_totals"] = a.sums_to_totals();
   write_text_atomically(run.file("attribution.json"), doc.dump(2) + "\n");
   run.json()["attribution"] = "attribution.json";
+  // One line per component for the report's first screen (vct_report/glance.py): the largest term.
+  for (const attr::ComponentBudget& b : a.components) {
+    const attr::Term* top = &b.terms.front();
+    for (const attr::Term& t : b.terms)
+      if (std::abs(t.value.mean) > std::abs(top->value.mean)) top = &t;
+    char line[160];
+    std::snprintf(line, sizeof line, "largest term %s %+.3g of total %+.3g", top->name.c_str(), top->value.mean,
+                  b.total.value.mean);
+    run.json()["error_budget"][b.component] = line;
+  }
   std::printf("error budget (vct attribute), mean luminance +- SE:\n");
   for (const attr::ComponentBudget& b : a.components) print_budget(b, "  ");
 }
