@@ -40,6 +40,20 @@ TEST(AttributeCli, WritesTheBudgetAndItsPictures) {
   EXPECT_EQ(j.at("sweeps")[0].at("rows").size(), 2u);
 }
 
+// validate --attribute puts the budget into its run: attribution.json named in run.json, and one
+// line per component for the report's first screen.
+TEST(AttributeCli, ValidateAttributeAddsTheBudgetToTheRun) {
+  const fs::path out = fresh_dir("attr_validate");
+  const int rc = run_vct("validate --attribute --attribute-rays 2 --no-report --out " + out.string() + kSize);
+  ASSERT_TRUE(rc == 0 || rc == 1) << rc;  // 1 would be a GL verdict, not the budget
+  const nlohmann::json run = nlohmann::json::parse(slurp(out / "run.json"));
+  ASSERT_EQ(run.at("attribution"), "attribution.json");
+  EXPECT_EQ(run.at("error_budget").size(), 3u);
+  const nlohmann::json j = nlohmann::json::parse(slurp(out / "attribution.json"));
+  EXPECT_EQ(j.at("components").size(), 3u);
+  EXPECT_TRUE(fs::exists(out / "attribution" / "indirect_diffuse_waterfall.png"));
+}
+
 TEST(AttributeCli, BadInputIsRefusedBeforeAnyOutput) {
   const fs::path out = fresh_dir("attr_bad") / "run";
   EXPECT_EQ(run_vct("attribute --components no_such_component --out " + out.string() + kSmall), 2);
