@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "attribution/diffuse_ladder.h"
+#include "attribution/specular_ladder.h"
 #include "attribution/ladder_context.h"
 #include "stages/composite.h"
 #include "stages/indirect_pass.h"
@@ -46,6 +47,7 @@ OnePixel one_pixel(const Volume& base, const vec3& p) {
   o.frame.mips = build_mips(base, false);
   IndirectImages ind = trace_indirect(o.scene, g, o.frame.mips, o.settings.vct);
   o.frame.images.indirect_diffuse = ind.diffuse;
+  o.frame.images.indirect_specular = ind.specular;
   composite_frame(o.scene, g, o.frame.images);
   return o;
 }
@@ -70,13 +72,17 @@ double square_form_factor(double w, double h) {
   return 4.0 * (2.0 * r * std::atan(r)) / (2.0 * 3.14159265358979323846);
 }
 
-double kd_albedo_of(const OnePixel& o) {
-  // The composite's factor: diffuse_term / indirect_diffuse with indirect_diffuse = 1.
+// The composite's factors: diffuse_term with indirect_diffuse = 1 is kd albedo, specular_term
+// with indirect_specular = 1 is F(n.v).
+FrameImages unit_composite(const OnePixel& o) {
   FrameImages im;
   im.indirect_diffuse = Image(1, 1, 3, 1.0f);
+  im.indirect_specular = Image(1, 1, 3, 1.0f);
   composite_frame(o.scene, o.frame.gbuffer, im);
-  return luminance(im.diffuse_term.rgb(0, 0));
+  return im;
 }
+double kd_albedo_of(const OnePixel& o) { return luminance(unit_composite(o).diffuse_term.rgb(0, 0)); }
+double fresnel_of(const OnePixel& o) { return luminance(unit_composite(o).specular_term.rgb(0, 0)); }
 
 // Every voxel opaque with radiance L: every ray and every cone returns exactly L (its first sample
 // is opaque, rgb / alpha = L), so the composite-kd rung, the cone-set rung and VCT all equal
@@ -94,6 +100,20 @@ TEST(LadderAnalytic, OpaqueFurnaceAllVoxelRungsAgree) {
   EXPECT_LT(gather.se, 1e-6 * expected);
   EXPECT_NEAR(cones.mean, expected, 1e-5 * expected);  // five weights summed in float
   EXPECT_LT(cones.se, 1e-6 * expected);
+  EXPECT_NEAR(vct.mean, expected, 1e-5 * expected);
+}
+
+// The same furnace for the specular cone: rays inside it and the cone itself both return L, so
+// both rungs are F(n.v) L (same tolerances as above).
+TEST(LadderAnalytic, OpaqueFurnaceSpecularConeRungsAgree) {
+  const OnePixel o = one_pixel(ceiling(16, 0), vec3(0.5f, 0.5f, 0.5f));
+  const LadderContext ctx(o.scene, o.settings, o.frame, 16);
+  const double expected = fresnel_of(o) * kRadiance;
+  ASSERT_GT(expected, 0.05);
+  const MeanSe rays = masked_mean(gather_specular_cone_rays(ctx, kStreamA), ctx.mask());
+  const MeanSe vct = masked_mean(image_rung(o.frame.images.specular_term, ctx.mask()), ctx.mask());
+  EXPECT_NEAR(rays.mean, expected, 1e-6 * expected);
+  EXPECT_LT(rays.se, 1e-6 * expected);
   EXPECT_NEAR(vct.mean, expected, 1e-5 * expected);
 }
 

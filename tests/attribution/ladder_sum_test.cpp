@@ -70,6 +70,21 @@ TEST(LadderSum, OpenPlaneIndirectDiffuseComesFromTheVoxelField) {
   EXPECT_TRUE(b.sums_to_total());
 }
 
+// Nothing occludes the spot on the open plane: the shadow map's visibility and the exact shadow
+// ray agree everywhere, and the exact-visibility rung is the frame's own direct sum
+// (stages/direct.cpp) with the same lights, BRDF and arithmetic, so the term is exactly 0.
+TEST(LadderSum, OpenPlaneShadowVisibilityTermIsZero) {
+  AttributionOptions opt;
+  opt.components = {"direct"};
+  const Scene scene = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/plane_spot.gltf");
+  const Attribution a = attribute(scene, small_settings(), opt);
+  const ComponentBudget& b = find(a, "direct");
+  ASSERT_EQ(b.terms.back().name, "shadow_visibility");
+  EXPECT_GT(b.rungs.back().mean, 0.01);
+  EXPECT_EQ(b.terms.back().value.mean, 0.0);
+  EXPECT_TRUE(b.sums_to_total());
+}
+
 // The check can fail: a rung whose two streams disagree by more than their error (an estimator
 // with a stream-dependent bias) makes the terms miss the total; the same ladder with consistent
 // streams passes.
