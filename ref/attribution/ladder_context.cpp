@@ -47,6 +47,10 @@ const pt::Accumulator& LadderContext::path_traced(uint32_t stream) const {
   ps.width = width();
   ps.height = height();
   ps.light_model = settings_.vct.light_model;  // the truth lit as the frame is
+  // The rungs read one-bounce AOVs and pt_direct only, complete at any max_depth >= 2
+  // (docs/compare.md, "Bias vs cone count"; ref/pt/integrator.cpp credits them at depths 1-2):
+  // deeper paths would only cost time.
+  ps.max_depth = std::min(ps.max_depth, 2);
   // One seed per stream: the two estimates of a path-traced rung share no random numbers.
   ps.seed = settings_.pt.seed * 16u + stream;
   nlohmann::json key;

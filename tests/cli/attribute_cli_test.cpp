@@ -16,7 +16,7 @@ const std::string kSmall = kSize + " --rays 2";
 
 TEST(AttributeCli, WritesTheBudgetAndItsPictures) {
   const fs::path out = fresh_dir("attr_ok");
-  ASSERT_EQ(run_vct("attribute --out " + out.string() + kSmall + " --sweep cones=1,5"), 0);
+  ASSERT_EQ(run_vct("attribute --out " + out.string() + kSmall + " --sweep aperture=20,40"), 0);
   EXPECT_FALSE(fs::exists(out / "INCOMPLETE"));
   const nlohmann::json run = nlohmann::json::parse(slurp(out / "run.json"));
   EXPECT_EQ(run.at("status"), "complete");
@@ -36,7 +36,7 @@ TEST(AttributeCli, WritesTheBudgetAndItsPictures) {
     }
   }
   ASSERT_EQ(j.at("sweeps").size(), 1u);
-  EXPECT_EQ(j.at("sweeps")[0].at("key"), "cones");
+  EXPECT_EQ(j.at("sweeps")[0].at("key"), "aperture");
   EXPECT_EQ(j.at("sweeps")[0].at("rows").size(), 2u);
 }
 
