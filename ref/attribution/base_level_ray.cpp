@@ -17,6 +17,27 @@ vec3 base_level_ray(const MipSampler& mips, const MarchParams& params, const vec
   return vec3(trace_cone(mips, ray, p));
 }
 
+vec3 base_level_cone_steps(const MipSampler& mips, const MarchParams& params, const Cone& cone) {
+  // stages/cone_trace.cpp's loop, term for term, with the lookup's lod pinned to 0.
+  if (mips.base_size() == 0) return vec3(0.0f);
+  const float voxel = 1.0f / float(mips.base_size());
+  const float tan_half = std::tan(0.5f * cone.aperture);
+  vec3 color(0.0f);
+  float alpha = 0.0f;
+  float t = params.start_offset;
+  while (alpha < 1.0f && t < params.max_distance) {
+    const vec3 pos = cone.origin + cone.direction * t;
+    if (!(pos.x >= 0.0f && pos.y >= 0.0f && pos.z >= 0.0f && pos.x <= 1.0f && pos.y <= 1.0f && pos.z <= 1.0f)) break;
+    const float diameter = std::max(voxel, 2.0f * t * tan_half);
+    const vec4 s = mips.sample(pos, 0.0f, cone.direction);
+    const float transmit = 1.0f - alpha;
+    color += transmit * vec3(s);
+    alpha += transmit * s.a;
+    t += std::max(diameter * params.quality, 1e-6f);
+  }
+  return color;
+}
+
 vec3 direction_in_cone(const vec3& axis, float aperture, vec2 u) {
   // Uniform in solid angle: cos(theta) uniform on [cos(half), 1].
   const float cos_half = std::cos(0.5f * aperture);

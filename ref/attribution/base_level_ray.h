@@ -16,6 +16,12 @@ namespace vct::attr {
 /// Radiance (rgb) a ray from texture-space `origin` along unit `dir` gathers in the base level.
 vec3 base_level_ray(const MipSampler& mips, const MarchParams& params, const vec3& origin, const vec3& dir);
 
+/// The cone's own march (its start offset, its step = diameter x quality growing with distance,
+/// its front-to-back compositing: stages/cone_trace.cpp) but every lookup at lod 0 on the cone's
+/// axis: what the cone would gather without prefiltered levels. Splits VCT's prefiltering into
+/// the step schedule (this vs rays filling the cone) and the mip lookups (VCT vs this).
+vec3 base_level_cone_steps(const MipSampler& mips, const MarchParams& params, const Cone& cone);
+
 /// A uniformly distributed direction (in solid angle) inside the cone of full opening
 /// `aperture` around unit `axis`; u in [0,1)^2.
 vec3 direction_in_cone(const vec3& axis, float aperture, vec2 u);

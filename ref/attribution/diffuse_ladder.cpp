@@ -14,7 +14,8 @@ constexpr uint32_t kSaltCosine = 11, kSaltCosineKd = 13, kSaltCones = 12;
 }  // namespace
 
 const std::vector<std::string>& diffuse_term_names() {
-  static const std::vector<std::string> names = {"voxel_field", "kd_at_n_dot_v", "cone_quadrature", "prefiltering"};
+  static const std::vector<std::string> names = {"voxel_field", "kd_at_n_dot_v", "cone_quadrature",
+                                                 "cone_step_schedule", "mip_lookups"};
   return names;
 }
 
@@ -65,6 +66,28 @@ RungImage gather_cone_set_rays(const LadderContext& ctx, uint32_t stream) {
   });
 }
 
+RungImage cone_set_base_level_steps(const LadderContext& ctx) {
+  const VctSettings& vs = ctx.settings().vct;
+  const sh::DiffuseConeBlock block = diffuse_cone_block(vs);
+  const int count = sh::diffuse_cone_count(block);
+  const float aperture = vs.diffuse_aperture_deg * (kPi / 180.0f);
+  const bool on = vs.diffuse_cones;
+  return ctx.for_each_pixel([&](const PixelSurface& s, RungImage& out) {
+    if (!on) return;
+    const sh::Frame frame = sh::frame_from_normal(s.n);
+    const float rotation = diffuse_rotation_for_pixel(vs, s.x, s.y);
+    vec3 sum(0.0f);
+    for (int c = 0; c < count; ++c) {
+      Cone cone;
+      cone.origin = ctx.scene().volume.to_texture(s.p);
+      cone.direction = glm::normalize(sh::frame_to_world(frame, sh::diffuse_cone_direction(c, rotation, block)));
+      cone.aperture = aperture;
+      sum += sh::diffuse_cone_weight(c, block) * base_level_cone_steps(ctx.mips(), ctx.march(), cone);
+    }
+    out.value.set_rgb(s.x, s.y, s.kd_albedo * sum);
+  });
+}
+
 std::vector<Rung> diffuse_rungs(const LadderContext& ctx) {
   const LadderContext* c = &ctx;
   return {
@@ -76,6 +99,8 @@ std::vector<Rung> diffuse_rungs(const LadderContext& ctx) {
        [c](uint32_t st) { return gather_cosine_rays(*c, st, true); }},
       {"cone_set_rays", "rays inside each diffuse cone through the base level, cone weights", false,
        [c](uint32_t st) { return gather_cone_set_rays(*c, st); }},
+      {"cone_steps", "each cone's own growing steps on its axis, base level (no mips)", true,
+       [c](uint32_t) { return cone_set_base_level_steps(*c); }},
       {"vct", "the frame's diffuse_term (cones on the mips)", true,
        [c](uint32_t) { return image_rung(c->frame().images.diffuse_term, c->mask()); }},
   };

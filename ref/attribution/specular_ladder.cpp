@@ -16,7 +16,7 @@ vec3 to_local(const sh::Frame& f, const vec3& w) { return vec3(glm::dot(w, f.t),
 }  // namespace
 
 const std::vector<std::string>& specular_term_names() {
-  static const std::vector<std::string> names = {"voxel_field", "cone_for_lobe", "prefiltering"};
+  static const std::vector<std::string> names = {"voxel_field", "cone_for_lobe", "cone_step_schedule", "mip_lookups"};
   return names;
 }
 
@@ -64,6 +64,15 @@ RungImage gather_specular_cone_rays(const LadderContext& ctx, uint32_t stream) {
   });
 }
 
+RungImage specular_cone_base_level_steps(const LadderContext& ctx) {
+  const bool on = ctx.settings().vct.specular_cones;
+  return ctx.for_each_pixel([&](const PixelSurface& s, RungImage& out) {
+    if (!on) return;
+    const Cone cone = specular_cone(ctx.scene().volume, s.p, s.n, s.v, s.pbr.roughness);
+    out.value.set_rgb(s.x, s.y, s.fresnel * base_level_cone_steps(ctx.mips(), ctx.march(), cone));
+  });
+}
+
 std::vector<Rung> specular_rungs(const LadderContext& ctx) {
   const LadderContext* c = &ctx;
   return {
@@ -73,6 +82,8 @@ std::vector<Rung> specular_rungs(const LadderContext& ctx) {
        [c](uint32_t st) { return gather_ggx_rays(*c, st); }},
       {"cone_rays", "rays inside the specular cone through the base level, x F(n.v)", false,
        [c](uint32_t st) { return gather_specular_cone_rays(*c, st); }},
+      {"cone_steps", "the cone's own growing steps on its axis, base level (no mips), x F(n.v)", true,
+       [c](uint32_t) { return specular_cone_base_level_steps(*c); }},
       {"vct", "the frame's specular_term (the cone on the mips)", true,
        [c](uint32_t) { return image_rung(c->frame().images.specular_term, c->mask()); }},
   };

@@ -85,17 +85,20 @@ double kd_albedo_of(const OnePixel& o) { return luminance(unit_composite(o).diff
 double fresnel_of(const OnePixel& o) { return luminance(unit_composite(o).specular_term.rgb(0, 0)); }
 
 // Every voxel opaque with radiance L: every ray and every cone returns exactly L (its first sample
-// is opaque, rgb / alpha = L), so the composite-kd rung, the cone-set rung and VCT all equal
+// is opaque, rgb / alpha = L), so the composite-kd rung, the cone-set rung, the cones' base-level
+// steps and VCT all equal
 // kd albedo L, with no variance beyond float rounding (the trilinear weights and the cosine
 // weights each sum to 1 only to a few ulps: 1e-6 relative is ~16 float ulps).
 TEST(LadderAnalytic, OpaqueFurnaceAllVoxelRungsAgree) {
   const OnePixel o = one_pixel(ceiling(16, 0), vec3(0.5f, 0.5f, 0.5f));
   const LadderContext ctx(o.scene, o.settings, o.frame, 16);
-  const double expected = kd_albedo_of(o) * kRadiance;
+  const double expected = kd_albedo_of(o) * double(kRadiance);
   ASSERT_GT(expected, 0.5);
   const MeanSe gather = masked_mean(gather_cosine_rays(ctx, kStreamA, true), ctx.mask());
   const MeanSe cones = masked_mean(gather_cone_set_rays(ctx, kStreamA), ctx.mask());
+  const MeanSe steps = masked_mean(cone_set_base_level_steps(ctx), ctx.mask());
   const MeanSe vct = masked_mean(image_rung(o.frame.images.diffuse_term, ctx.mask()), ctx.mask());
+  EXPECT_NEAR(steps.mean, expected, 1e-5 * expected);
   EXPECT_NEAR(gather.mean, expected, 1e-6 * expected);
   EXPECT_LT(gather.se, 1e-6 * expected);
   EXPECT_NEAR(cones.mean, expected, 1e-5 * expected);  // five weights summed in float
@@ -108,10 +111,12 @@ TEST(LadderAnalytic, OpaqueFurnaceAllVoxelRungsAgree) {
 TEST(LadderAnalytic, OpaqueFurnaceSpecularConeRungsAgree) {
   const OnePixel o = one_pixel(ceiling(16, 0), vec3(0.5f, 0.5f, 0.5f));
   const LadderContext ctx(o.scene, o.settings, o.frame, 16);
-  const double expected = fresnel_of(o) * kRadiance;
+  const double expected = fresnel_of(o) * double(kRadiance);
   ASSERT_GT(expected, 0.05);
   const MeanSe rays = masked_mean(gather_specular_cone_rays(ctx, kStreamA), ctx.mask());
+  const MeanSe steps = masked_mean(specular_cone_base_level_steps(ctx), ctx.mask());
   const MeanSe vct = masked_mean(image_rung(o.frame.images.specular_term, ctx.mask()), ctx.mask());
+  EXPECT_NEAR(steps.mean, expected, 1e-6 * expected);
   EXPECT_NEAR(rays.mean, expected, 1e-6 * expected);
   EXPECT_LT(rays.se, 1e-6 * expected);
   EXPECT_NEAR(vct.mean, expected, 1e-5 * expected);
@@ -131,7 +136,7 @@ TEST(LadderAnalytic, CeilingFormFactorBoundsTheCosineGathering) {
   const int n = 64;
   const OnePixel o = one_pixel(ceiling(n, n / 2), vec3(0.5f, 0.5f, 0.1f));
   const LadderContext ctx(o.scene, o.settings, o.frame, 4096);
-  const double kl = kd_albedo_of(o) * kRadiance;
+  const double kl = kd_albedo_of(o) * double(kRadiance);
   const double lower = kl * square_form_factor(0.5 - 3.0 / n, 33.0 / n - 0.1);
   const double upper = kl * square_form_factor(0.5, 31.5 / n - 0.1);
   const MeanSe gather = masked_mean(gather_cosine_rays(ctx, kStreamA, true), ctx.mask());

@@ -24,7 +24,7 @@ TEST(AttributeCli, WritesTheBudgetAndItsPictures) {
   const nlohmann::json j = nlohmann::json::parse(slurp(out / "attribution.json"));
   EXPECT_TRUE(j.at("sums_to_totals").get<bool>());
   ASSERT_EQ(j.at("components").size(), 3u);
-  const std::vector<size_t> term_counts = {4, 3, 2};  // diffuse, specular, direct ladders
+  const std::vector<size_t> term_counts = {5, 4, 2};  // diffuse, specular, direct ladders
   for (size_t i = 0; i < 3; ++i) {
     const nlohmann::json& c = j.at("components")[i];
     ASSERT_EQ(c.at("terms").size(), term_counts[i]) << c.at("component");
