@@ -54,9 +54,10 @@ ComponentBudget run_ladder(const std::string& component, const std::vector<Rung>
     disc_var += se_a * se_a + se_b * se_b;
   }
   b.discrepancy_se = std::sqrt(disc_var);
-  // Each pixel's differences are float subtractions (relative error <= 2^-24 of their operands)
-  // summed in double; K+2 of them enter the discrepancy. 2^-20 of the rungs' summed magnitudes
-  // leaves a factor > 4 over that for any ladder of up to 5 rungs (docs/compare.md, "Attribution").
+  // Each pixel's differences are float subtractions of non-negative radiance (relative error
+  // <= 2^-24 of their operands), and each rung's pixels enter at most three of them (two terms and
+  // the total), so the rounding in the discrepancy is <= 3 x 2^-24 x sum_k |rung_k|; 2^-20 leaves
+  // a factor > 5 (docs/compare.md, "Attribution").
   double magnitude = 0.0;
   for (const MeanSe& r : b.rungs) magnitude += std::abs(r.mean);
   b.rounding = std::ldexp(magnitude, -20);
