@@ -124,14 +124,9 @@ TEST(LadderAnalytic, OpaqueFurnaceSpecularConeRungsAgree) {
   EXPECT_NEAR(vct.mean, expected, 1e-5 * expected);
 }
 
-// In the furnace every GGX-lobe ray returns L, so the rung is L x the specular lobe's directional
-// albedo integral f_s cos over the hemisphere. An independent estimate of that integral (uniform
-// hemisphere directions, 2 pi f_s cos, 200000 samples) must agree within 4 combined SE: a wrong pdf
-// in the importance-sampled rung would not.
-TEST(LadderAnalytic, OpaqueFurnaceGgxRaysGiveTheLobeAlbedo) {
-  const OnePixel o = one_pixel(ceiling(16, 0), vec3(0.5f, 0.5f, 0.5f));
-  const LadderContext ctx(o.scene, o.settings, o.frame, 4096);
-  const MeanSe ggx = masked_mean(gather_ggx_rays(ctx, kStreamA), ctx.mask());
+// An independent estimate of L x the integral of one lobe's f cos over the hemisphere at the
+// one pixel (uniform hemisphere directions, 2 pi f cos, 200000 samples): mean and SE.
+MeanSe uniform_lobe_albedo(const OnePixel& o, bool specular) {
   const GBuffer& g = o.frame.gbuffer;
   const sh::SurfacePbr pbr = sh::surface_pbr(g.albedo.rgb(0, 0), g.material.at(0, 0, 0), g.material.at(0, 0, 1),
                                              g.material.at(0, 0, 2), g.specular_color.rgb(0, 0));
@@ -144,15 +139,33 @@ TEST(LadderAnalytic, OpaqueFurnaceGgxRaysGiveTheLobeAlbedo) {
     const vec2 u = rng.next_2d();
     const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
     const vec3 l(r * std::cos(phi), r * std::sin(phi), z);  // uniform on the upper hemisphere
-    const double y = luminance(pt::eval_bsdf(bsdf, l).specular) * double(z) * 2.0 * double(kPi) * double(kRadiance);
+    const pt::BsdfValue f = pt::eval_bsdf(bsdf, l);
+    const double y = luminance(specular ? f.specular : f.diffuse) * double(z) * 2.0 * double(kPi) * double(kRadiance);
     sum += y;
     sum2 += y * y;
   }
-  const double mean = sum / count, se = std::sqrt((sum2 / count - mean * mean) / (count - 1));
-  ASSERT_GT(mean, 0.01);
-  const double bound = 4.0 * std::sqrt(ggx.se * ggx.se + se * se);
-  EXPECT_NEAR(ggx.mean, mean, bound);
-  EXPECT_LT(bound, 0.05 * mean) << "too few samples to tell a wrong pdf (a factor of the lobe's scale)";
+  MeanSe m;
+  m.mean = sum / count;
+  m.se = std::sqrt((sum2 / count - m.mean * m.mean) / (count - 1));
+  return m;
+}
+
+// In the furnace every ray returns L, so the importance-sampled gathering rungs are L x their
+// lobe's directional albedo: the GGX-lobe rung (visible-normal sampling, its pdf) and the
+// exact-gathering rung (cosine sampling, pi f_d). Each must agree with the uniform estimate within
+// 4 combined SE, a bound under 5 % of the value, so a wrong pdf or weight would not pass.
+TEST(LadderAnalytic, OpaqueFurnaceImportanceSampledRungsGiveTheLobeAlbedos) {
+  const OnePixel o = one_pixel(ceiling(16, 0), vec3(0.5f, 0.5f, 0.5f));
+  const LadderContext ctx(o.scene, o.settings, o.frame, 4096);
+  const std::pair<MeanSe, MeanSe> cases[] = {
+      {masked_mean(gather_ggx_rays(ctx, kStreamA), ctx.mask()), uniform_lobe_albedo(o, true)},
+      {masked_mean(gather_cosine_rays(ctx, kStreamA, false), ctx.mask()), uniform_lobe_albedo(o, false)}};
+  for (const auto& [rung, reference] : cases) {
+    ASSERT_GT(reference.mean, 0.01);
+    const double bound = 4.0 * std::sqrt(rung.se * rung.se + reference.se * reference.se);
+    EXPECT_NEAR(rung.mean, reference.mean, bound);
+    EXPECT_LT(bound, 0.05 * reference.mean) << "too few samples to tell a wrong pdf";
+  }
 }
 
 // An opaque ceiling (z >= 1/2) over a point at z = 0.1 in the middle of a 64^3 volume: the
