@@ -119,7 +119,7 @@ void register_attribute(CLI::App& app, int& exit_code) {
   cmd->add_option("--components", o->components, "indirect_diffuse, indirect_specular, direct (default all)")
       ->delimiter(',');
   cmd->add_option("--sweep", o->sweeps,
-                  "KEY=V1,V2,... the budget per value (grid, cones, aperture, quality or any vct.* key); repeatable");
+                  "KEY=V1,V2,... the budget per value (grid, diffuse_cone_count, aperture, quality or any vct.* key); repeatable");
   cmd->callback([o, &exit_code]() { exit_code = run_attribute(*o); });
 }
 
