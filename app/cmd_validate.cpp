@@ -2,11 +2,13 @@
 // Exit: 0 when every GPU stage passes (warnings included), 1 when one fails or the GL frame
 // errors, 2 bad input, 3 only with --require-gl and no GL context; without --require-gl a
 // missing GL context is reported ("gl: unavailable") and the ref/pt parts still run.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "commands.h"
 #include "facts_notes.h"
+#include "attribution_outputs.h"
 #include "compare/bias.h"
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
@@ -37,6 +39,8 @@ struct ValidateOptions {
   std::vector<std::string> sweeps;
   bool require_gl = false;
   bool no_report = false;
+  bool attribute = false;  // --attribute: the error budget section (docs/attribution.md)
+  int attribute_rays = 16;
   std::string flip = "full";
   GlFlags gl;
 };
@@ -127,6 +131,35 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
     rows.push_back(row);
   }
   return {{"key", key}, {"values", values}, {"rows", rows}};
+}
+
+// The error budget on the reference's own frame (docs/attribution.md): attribution.json and its
+// pictures in the run directory, named in run.json for the report. Informational: a budget that
+// does not add up is printed, it does not change validate's exit code.
+void write_validate_attribution(RunDir& run, const Scene& scene, const Settings& s, const FrameResult& frame,
+                                const ValidateOptions& o) {
+  attr::AttributionOptions opt;
+  opt.rays_per_pixel = o.attribute_rays;
+  const attr::Attribution a = attr::attribute_frame(scene, s, frame, opt);
+  nlohmann::json doc;
+  doc["scene"] = scene.source;
+  doc["rays_per_pixel"] = o.attribute_rays;
+  doc["components"] = write_attribution(run, a, frame.gbuffer.coverage);
+  doc["sums_to_totals"] = a.sums_to_totals();
+  write_text_atomically(run.file("attribution.json"), doc.dump(2) + "\n");
+  run.json()["attribution"] = "attribution.json";
+  // One line per component for the report's first screen (vct_report/glance.py): the largest term.
+  for (const attr::ComponentBudget& b : a.components) {
+    const attr::Term* top = &b.terms.front();
+    for (const attr::Term& t : b.terms)
+      if (std::abs(t.value.mean) > std::abs(top->value.mean)) top = &t;
+    char line[160];
+    std::snprintf(line, sizeof line, "largest term %s %+.3g of total %+.3g", top->name.c_str(), top->value.mean,
+                  b.total.value.mean);
+    run.json()["error_budget"][b.component] = line;
+  }
+  std::printf("error budget (vct attribute), mean luminance +- SE:\n");
+  for (const attr::ComponentBudget& b : a.components) print_budget(b, "  ");
 }
 
 int run(const ValidateOptions& o) {
@@ -228,6 +261,8 @@ int run(const ValidateOptions& o) {
   }
   progress.end();
   run.save();
+  if (o.attribute && ref.ok())
+    phases.time("attribution (error budget)", [&] { write_validate_attribution(run, scene, ref_settings, *ref.frame, o); });
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
     for (const auto& spec : o.sweeps)
@@ -274,6 +309,10 @@ void register_validate(CLI::App& app, int& exit_code) {
                   "bounces, light_model or any vct.* key); repeatable");
   cmd->add_flag("--require-gl", o->require_gl, "Exit 3 when no GL context is available (default: report and go on)");
   cmd->add_flag("--no-report", o->no_report, "Skip the HTML report");
+  cmd->add_flag("--attribute", o->attribute,
+                "Add the error budget per component (vct attribute) to the run and the report");
+  cmd->add_option("--attribute-rays", o->attribute_rays, "Rays per pixel of the budget's gathering rungs")
+      ->check(CLI::Range(1, 4096));
   cmd->add_option("--flip", o->flip,
                   "FLIP maps in the report: full (the full image, default), all (every component; HDR-FLIP costs "
                   "seconds per map) or none")

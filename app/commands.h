@@ -16,5 +16,6 @@ void register_bench(CLI::App& app, int& exit_code);
 void register_settings(CLI::App& app, int& exit_code);
 void register_stages(CLI::App& app, int& exit_code);
 void register_metamorphic(CLI::App& app, int& exit_code);
+void register_attribute(CLI::App& app, int& exit_code);
 
 }  // namespace vct::app

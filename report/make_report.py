@@ -12,7 +12,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vct_report import flip_batch, registry, runio, svg  # noqa: E402
+from vct_report import attribution, flip_batch, registry, runio, svg  # noqa: E402
 from vct_report.glance import glance  # noqa: E402
 from vct_report.part_times import TIMES  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
@@ -449,11 +449,12 @@ def build(run_dir):
     sections = [TIMES.run(name, fn, p) for name, fn in (("first screen", lambda page: glance(page, verdicts)),
                                                         ("summary and verdicts", summary), ("final images", final_images),
                                                         ("bias tables and heat maps", bias_section),
+                                                        ("error budget", lambda page: attribution.section(page, missing)),
                                                         ("walkthrough", walkthrough), ("performance", performance))]
     doc = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>VCT Oracle: %s</title><style>%s</style></head><body>" % (E(str(scene)), css),
            "<header><h1>VCT Oracle report: %s</h1><div class='sub' title='%s'>run %s</div></header>" % (
                E(str(scene)), E(run.path), E(os.path.basename(run.path))),
-           "<nav><a href='#glance'>at a glance</a><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a>"
+           "<nav><a href='#glance'>at a glance</a><a href='#summary'>summary</a><a href='#verdicts'>verdicts</a><a href='#final'>final images</a><a href='#bias'>bias</a><a href='#attribution'>error budget</a>"
            "<a href='#walkthrough'>walkthrough</a><a href='#performance'>performance</a></nav><main>",
            "".join(sections),
            "<p>Report status (for tests): <code id='status' data-ok='pending'>pending</code></p>",
