@@ -45,6 +45,11 @@ BackendFacts frame_facts(const GlContext& context, const VctSettings& s, const s
     facts.reduction = "fixed_point";
     facts.reduction_note = "GL has no exact mean; the fixed-point sum is its deterministic twin";
   }
+  if (s.reduction == Reduction::RunningMeanHalf) {
+    // The racy running mean is another engine's convention (stages/running_mean.h), not ours.
+    facts.reduction = "fixed_point";
+    facts.reduction_note = "GL does not run the racy running mean; the fixed-point sum is its deterministic twin";
+  }
   return facts;
 }
 

@@ -12,7 +12,9 @@ namespace vct {
 enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
 enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
 enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
-enum class Reduction { ExactMean, FixedPoint, CasRgba8 };  // how fragments in a voxel combine
+// How fragments in a voxel combine. RunningMeanHalf models an engine's non-atomic running mean
+// (stages/running_mean.h): the reference keeps the exact mean and states the interval of values.
+enum class Reduction { ExactMean, FixedPoint, CasRgba8, RunningMeanHalf };
 enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).

@@ -37,7 +37,8 @@ const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
 template <>
 const std::vector<std::pair<Reduction, const char*>>& enum_names() {
   static const std::vector<std::pair<Reduction, const char*>> m{
-      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"}};
+      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"},
+      {Reduction::RunningMeanHalf, "running_mean"}};
   return m;
 }
 template <>
