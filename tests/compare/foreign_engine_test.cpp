@@ -92,6 +92,23 @@ TEST(ForeignEngine, LostUpdatesDifferFromTheExactMean) {
   EXPECT_GT(differ, 100u);
 }
 
+TEST(ForeignEngine, ReferenceStatesTheIntervalAroundItsExactMean) {
+  // Reduction::RunningMeanHalf: the reference keeps the exact mean (binary16), which lies in the
+  // interval it states in voxel.cas_lo / cas_hi, for every occupied voxel.
+  const VoxelGrid& g = fixture().frame.voxels;
+  ASSERT_EQ(g.cas_lo.voxel_count(), g.radiance.voxel_count());
+  size_t occupied = 0;
+  for (size_t i = 0; i < g.radiance.voxel_count(); ++i) {
+    if (g.radiance.data[i * 4 + 3] <= 0.0f) continue;
+    ++occupied;
+    for (size_t c = 0; c < 3; ++c) {
+      ASSERT_LE(g.cas_lo.data[i * 4 + c], g.radiance.data[i * 4 + c]) << i;
+      ASSERT_GE(g.cas_hi.data[i * 4 + c], g.radiance.data[i * 4 + c]) << i;
+    }
+  }
+  EXPECT_GT(occupied, 1000u);
+}
+
 TEST(ForeignEngine, DeclaredConventionsPass) {
   const Report r = compare_stage_sets(fixture().ref, engine_set(fixture().engine_voxels, 1.0, "running_mean", false));
   EXPECT_NE(test::find(r, "voxel.radiance").verdict, Verdict::Fail) << test::find(r, "voxel.radiance").note;
