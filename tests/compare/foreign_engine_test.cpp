@@ -155,6 +155,29 @@ TEST(ForeignEngine, MipScaleOtherThanDeclaredIsNotExplained) {
   EXPECT_EQ(test::find(r, "mip.iso.1").extra.value("explained_by_declared_mip_scale", true), false);
 }
 
+// The engine's spot frustum (issue 21's: 110 degrees, near 0.01): its shadow map, judged against a
+// reference that keeps the oracle's own frustum, fails at shadow_map.0; against a reference
+// rendered with the same settings (the engine's manifest "settings"), it passes.
+TEST(ForeignEngine, ShadowFrustumFailsUndeclaredAndPassesReproduced) {
+  const Fixture& f = fixture();
+  Settings engine = f.s;
+  engine.vct.shadow_fov_deg = 110.0f;
+  engine.vct.shadow_near = 0.01f;
+  const Scene scene = load_scene("");
+  const FrameResult ef = render_ref_frame(scene, engine);
+  StageSet e = stage_set_from_frame(ef, engine.vct);
+  e.backend = "engine";
+  // Only the shadow map comes from the engine here: the rest of the frame is judged elsewhere.
+  StageSet shadow_only;
+  shadow_only.backend = "engine";
+  shadow_only.images["shadow_map.0"] = e.images.at("shadow_map.0");
+  const Report undeclared = compare_stage_sets(f.ref, shadow_only);
+  EXPECT_EQ(undeclared.first_failing(), "shadow_map.0");
+  StageSet reproduced = stage_set_from_frame(render_ref_frame(scene, engine), engine.vct);
+  const Report declared = compare_stage_sets(reproduced, shadow_only);
+  EXPECT_EQ(test::find(declared, "shadow_map.0").verdict, Verdict::Pass);
+}
+
 TEST(ForeignEngine, ConventionsRoundTripThroughTheManifest) {
   StageSet e = engine_set(fixture().engine_voxels, 1.9, "running_mean", true);
   const std::string dir = (std::filesystem::temp_directory_path() / "vct_foreign_engine_test").string();
