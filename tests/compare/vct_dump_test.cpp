@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "compare/stage_compare.h"
 #include "find_verdict.h"
@@ -113,7 +114,9 @@ TEST(VctDump, JudgedByVctCompare) {
   // A convention the oracle does not know is bad input, not a silent pass.
   const std::string odd = dump("odd", vox);
   std::ifstream in(odd + "/vct-stages.json");
-  std::string m((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string m = ss.str();
   m.replace(m.find("\"mip_scale\""), 11, "\"mip_scael\"");
   std::ofstream(odd + "/vct-stages.json") << m;
   EXPECT_EQ(run_compare(ref_dir, odd), 2);
