@@ -23,6 +23,7 @@ std::string reduction_name(Reduction r) {
     case Reduction::ExactMean: return "exact_mean";
     case Reduction::FixedPoint: return "fixed_point";
     case Reduction::CasRgba8: return "cas_rgba8";
+    case Reduction::RunningMeanHalf: return "running_mean";
   }
   return "exact_mean";
 }
@@ -87,6 +88,7 @@ void write_stage_set(const std::string& dir, StageSet& set) {
                       {"storage", set.storage}, {"reduction", set.reduction}, {"settings", set.settings},
                       {"info", set.info},       {"stages", stages}};
   if (!set.facts.empty()) m["facts"] = set.facts;
+  if (!set.conventions.empty()) m["conventions"] = to_json(set.conventions);
   write_text_atomically(rd.file("vct-stages.json"), m.dump(2) + "\n");
 }
 
@@ -124,12 +126,13 @@ StageSet read_stage_set_unguarded(const std::string& path) {
   set.storage = m.value("storage", "rgba32f");
   set.reduction = m.value("reduction", "exact_mean");
   static const std::set<std::string> kStorages = {"rgba8", "rgba16f", "rgba32f"};
-  static const std::set<std::string> kReductions = {"exact_mean", "fixed_point", "cas_rgba8"};
+  static const std::set<std::string> kReductions = {"exact_mean", "fixed_point", "cas_rgba8", "running_mean"};
   if (!kStorages.count(set.storage)) throw InputError(manifest.string(), "unknown storage '" + set.storage + "'");
   if (!kReductions.count(set.reduction)) throw InputError(manifest.string(), "unknown reduction '" + set.reduction + "'");
   if (m.contains("settings")) set.settings = m["settings"];
   if (m.contains("info")) set.info = m["info"];
   if (m.contains("facts")) set.facts = m["facts"].get<BackendFacts>();
+  if (m.contains("conventions")) set.conventions = read_conventions(manifest.string(), m["conventions"]);
   for (const auto& [name, entry] : m["stages"].items()) {
     if (!entry.is_object() || !entry.contains("file") || !entry["file"].is_string())
       throw InputError(manifest.string(), "stage '" + name + "' needs a \"file\" string");

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/conventions.h"
 #include "core/image.h"
 #include "core/settings.h"
 #include "core/volume.h"
@@ -21,10 +22,12 @@ struct StageSet {
   std::map<std::string, Image> images;  // "shadow_map.0", "gbuffer.normal", "image.final", ...
   std::map<std::string, Volume> volumes;  // "voxel.radiance", "mip.iso.1", "mip.posx.1", ...
   // How the voxels were stored and reduced (selects the voxel radiance tolerance model):
-  // storage "rgba8" | "rgba16f" | "rgba32f"; reduction "exact_mean" | "fixed_point" | "cas_rgba8".
+  // storage "rgba8" | "rgba16f" | "rgba32f"; reduction "exact_mean" | "fixed_point" | "cas_rgba8" |
+  // "running_mean".
   std::string storage = "rgba32f", reduction = "exact_mean";
   nlohmann::json settings = nlohmann::json::object();  // free-form, copied from the manifest
   nlohmann::json info = nlohmann::json::object();      // free-form notes
+  Conventions conventions;  // declared by the manifest (compare/conventions.h)
   BackendFacts facts;  // typed: what ran, the driver's facts (manifest "facts", backend_facts.h)
   std::string root;  // directory the files live in (empty when built in memory)
   std::map<std::string, std::string> files;  // stage -> file relative to root (PNG preview beside)

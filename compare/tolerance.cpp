@@ -189,6 +189,11 @@ VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
             "exact reduction; each fragment's float shading and 8-bit texture filtering weights, then the storage rounding"};
   if (reduction == "cas_rgba8")
     return {V::CasInterval, "cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, 0.0, true, "any fragment order"};
+  if (reduction == "running_mean")
+    // The interval (stages/running_mean.h) already holds binary16 rounding of every step in any
+    // rounding mode; RGBA8 storage would round once more.
+    return {V::RunningMeanInterval, "running-mean-half-interval", unorm8, 0.0, 0.0, 0.0, true,
+            "non-atomic running mean: any order, any non-empty subset (lost updates), binary16 each step"};
   if (storage == "rgba8")
     return {V::Rgba8Quantised, "rgba8-quantised", 1.0 / 255.0, 0.0, 0.0, 0.0, false, "8-bit UNORM: rounding vs truncation"};
   if (storage == "rgba16f")

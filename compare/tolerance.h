@@ -52,7 +52,15 @@ int texture_slack_channel(const std::string& stage, const Image& slack);
 int alpha_tie_channel(const Image& slack);
 
 /// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.
-enum class VoxelModelId { FixedPointVsExact, FixedPointExactShading, CasInterval, Rgba8Quantised, Rgba16fUlp, Rgba32fSum };
+enum class VoxelModelId {
+  FixedPointVsExact,
+  FixedPointExactShading,
+  CasInterval,
+  RunningMeanInterval,
+  Rgba8Quantised,
+  Rgba16fUlp,
+  Rgba32fSum
+};
 
 struct VoxelModel {
   VoxelModelId id = VoxelModelId::Rgba32fSum;
@@ -60,7 +68,7 @@ struct VoxelModel {
   double abs = 0.0, rel = 0.0;
   double per_fragment_rel = 0.0;  // float summation order: n * 2^-23 * |ref|
   double half_ulps = 0.0;         // binary16 storage: this many half-ulps of |ref|
-  bool cas_interval = false;      // use the reference's [cas_lo, cas_hi] +- abs
+  bool cas_interval = false;      // use the reference's interval [cas_lo, cas_hi] +- abs (CAS or running mean)
   std::string source;
 
   /// |test - ref| allowed for a voxel channel of value `ref` reduced from `fragments` fragments.

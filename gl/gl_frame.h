@@ -56,7 +56,7 @@ struct GlFrame {
 // The passes, in frame order.
 /// The shadow layers' world -> clip matrices, light by light (the CPU's definitions, shared by
 /// call: both backends render from the same matrices), and each light's first layer.
-std::vector<mat4> shadow_layer_view_proj(const Scene& scene, std::vector<int>* light_layer);
+std::vector<mat4> shadow_layer_view_proj(const Scene& scene, const VctSettings& settings, std::vector<int>* light_layer);
 void shadow_pass(GlFrame& f);
 void gbuffer_pass(GlFrame& f);
 void upload_diffuse_cone_block(GlFrame& f);  // the cone set's shared block, before any cone pass

@@ -10,7 +10,7 @@ namespace vct::gl {
 
 void shadow_pass(GlFrame& f) {
   const int size = f.s.shadow_map_size;
-  f.layer_view_proj = shadow_layer_view_proj(f.scene, &f.light_layer);  // at most kMaxLights (render_gl_frame)
+  f.layer_view_proj = shadow_layer_view_proj(f.scene, f.s, &f.light_layer);  // at most kMaxLights (render_gl_frame)
   const int layers = int(f.layer_view_proj.size());
   f.shadow_maps = make_texture_2d_array(GL_DEPTH_COMPONENT32F, size, size, std::max(layers, 1));
   const Program prog = f.programs.build({"scene.vert", "depth_only.frag"});

@@ -15,7 +15,7 @@
 
 namespace vct::gl {
 
-std::vector<mat4> shadow_layer_view_proj(const Scene& scene, std::vector<int>* light_layer) {
+std::vector<mat4> shadow_layer_view_proj(const Scene& scene, const VctSettings& settings, std::vector<int>* light_layer) {
   std::vector<mat4> layers;
   for (const Light& light : scene.lights) {
     light_layer->push_back(int(layers.size()));
@@ -25,7 +25,7 @@ std::vector<mat4> shadow_layer_view_proj(const Scene& scene, std::vector<int>* l
     } else if (light.is_directional()) {
       layers.push_back(directional_light_view_proj(light, scene.volume));
     } else {
-      layers.push_back(spot_light_view_proj(light, scene.bounds));
+      layers.push_back(spot_light_view_proj(light, scene.bounds, settings));
     }
   }
   return layers;
@@ -44,6 +44,11 @@ BackendFacts frame_facts(const GlContext& context, const VctSettings& s, const s
   if (s.reduction == Reduction::ExactMean) {
     facts.reduction = "fixed_point";
     facts.reduction_note = "GL has no exact mean; the fixed-point sum is its deterministic twin";
+  }
+  if (s.reduction == Reduction::RunningMeanHalf) {
+    // The racy running mean is another engine's convention (stages/running_mean.h), not ours.
+    facts.reduction = "fixed_point";
+    facts.reduction_note = "GL does not run the racy running mean; the fixed-point sum is its deterministic twin";
   }
   return facts;
 }

@@ -41,8 +41,9 @@ uint64_t voxel_bytes(const VctSettings& v) {
   // 1-channel float volumes alive all frame: Voxelization::occupancy, the FrameResult's copy of
   // the conservative occupancy and, with the GPU rule, the hole map.
   const uint64_t occupancy = n3 * (4 + 4 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0));
-  // VoxelGrid: RGBA float radiance + fragment count; the CAS model adds its lo/hi RGBA bounds.
-  const uint64_t grid = n3 * (16 + 4 + (v.reduction == Reduction::CasRgba8 ? 32 : 0));
+  // VoxelGrid: RGBA float radiance + fragment count; the CAS and running-mean models add
+  // their lo/hi RGBA bounds.
+  const uint64_t grid = n3 * (16 + 4 + (v.reduction == Reduction::CasRgba8 || v.reduction == Reduction::RunningMeanHalf ? 32 : 0));
   const uint64_t mips = mip_bytes(n3, v.anisotropic);
   uint64_t bytes = occupancy + grid + mips + kFragmentsPerSlice * n * n * kBytesPerFragment;
   // Solid voxelization / thickening (stages/voxel_fill.cpp), during injection: byte masks for the

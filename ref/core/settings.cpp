@@ -112,6 +112,9 @@ void validate_settings(const Settings& s) {
   for (const auto& f : vct_setting_fields()) check_setting_range(f, s.vct, "");
   for (const auto& f : pt_setting_fields()) check_setting_range(f, s.pt, "path tracer ");
   require(s.threads >= 0 && s.threads <= 1024, "threads must be in 0..1024");
+  // A frustum with near >= far projects nothing (both given; 0 = the oracle's own rule).
+  require(s.vct.shadow_near <= 0.0f || s.vct.shadow_far <= 0.0f || s.vct.shadow_near < s.vct.shadow_far,
+          "shadow_near must be below shadow_far");
   check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }
 

@@ -12,7 +12,9 @@ namespace vct {
 enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
 enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
 enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
-enum class Reduction { ExactMean, FixedPoint, CasRgba8 };  // how fragments in a voxel combine
+// How fragments in a voxel combine. RunningMeanHalf models an engine's non-atomic running mean
+// (stages/running_mean.h): the reference keeps the exact mean and states the interval of values.
+enum class Reduction { ExactMean, FixedPoint, CasRgba8, RunningMeanHalf };
 enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
@@ -27,6 +29,11 @@ struct VctSettings {
   int shadow_map_size = 2048;
   int pcf_kernel = 3;            // PCF taps per side (seed report: 3x3)
   float shadow_bias = 0.0005f;   // constant depth bias in NDC-depth [0,1] units
+  // A spot light's shadow frustum (an engine's convention, issue 21): 0 = the oracle's own choice
+  // (fov twice the outer cone angle; far = farthest scene corner x1.01, near = far/20).
+  float shadow_fov_deg = 0.0f;
+  float shadow_near = 0.0f;
+  float shadow_far = 0.0f;
   LightModel light_model = LightModel::Gltf;
 
   // Voxelization.

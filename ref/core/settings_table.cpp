@@ -37,7 +37,8 @@ const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
 template <>
 const std::vector<std::pair<Reduction, const char*>>& enum_names() {
   static const std::vector<std::pair<Reduction, const char*>> m{
-      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"}};
+      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"},
+      {Reduction::RunningMeanHalf, "running_mean"}};
   return m;
 }
 template <>
@@ -153,6 +154,9 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_map_size", &V::shadow_map_size, closed(16, 16384), "shadow map side in texels", "u_shadow_size"),
     field("pcf_kernel", &V::pcf_kernel, closed(1, 9), "PCF taps per side (seed report: 3)", "u_pcf_kernel"),
     field("shadow_bias", &V::shadow_bias, any(), "constant depth bias in window-depth [0,1] units", "u_shadow_bias"),
+    field("shadow_fov_deg", &V::shadow_fov_deg, closed(0, 179), "spot shadow map field of view, degrees (0 = twice the outer cone)"),
+    field("shadow_near", &V::shadow_near, at_least(0), "spot shadow map near plane (0 = far / 20)"),
+    field("shadow_far", &V::shadow_far, at_least(0), "spot shadow map far plane (0 = farthest scene corner x1.01)"),
     choice("light_model", &V::light_model, "KHR_lights_punctual (gltf) or the seed's falloff (docs/scenes.md)"),
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),

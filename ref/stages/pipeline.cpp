@@ -12,7 +12,9 @@
 #include "stages/indirect_pass.h"
 #include "stages/multibounce.h"
 #include "stages/particles.h"
+#include "stages/inject.h"
 #include "stages/raster.h"
+#include "stages/running_mean.h"
 #include "stages/shadow_map.h"
 #include "stages/soft_shadow.h"
 #include "stages/voxelize.h"
@@ -37,6 +39,21 @@ Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, const std:
   timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, positions); });
   timed(r, "holes", [&] { r.holes = hole_map(conservative, gpu); });
   return gpu;
+}
+
+// Reduction::RunningMeanHalf: the voxels keep the exact mean (a value the racy running mean can
+// leave), and the interval of every value it can leave goes where the CAS interval goes, for the
+// comparison (stages/running_mean.h). The fragments' light is that of the first frame: with
+// bounces > 1 the interval is left out (the verdict then says it has none).
+void add_running_mean_interval(const Scene& scene, const Voxelization& vox, const VctSettings& s, FrameResult& r) {
+  if (s.bounces > 1) {
+    r.info["running_mean_interval"] = "not computed: bounces > 1";
+    return;
+  }
+  timed(r, "running_mean_interval", [&] {
+    const std::vector<vec3> values = fragment_radiance(scene, vox, r.shadow_maps, s);
+    running_mean_interval_volumes(vox, values, r.voxels.cas_lo, r.voxels.cas_hi);
+  });
 }
 }  // namespace
 
@@ -82,6 +99,7 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const
     r.multibounce_energy = std::move(mb.energy);
     r.info["multibounce_frames"] = std::to_string(mb.frames);
   }
+  if (s.reduction == Reduction::RunningMeanHalf) add_running_mean_interval(scene, vox, s, r);
   r.info["fragments"] = std::to_string(vox.fragments.size());
   r.info["covered_voxels"] = std::to_string(vox.covered);
   FrameImages& im = r.images;

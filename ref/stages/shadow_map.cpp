@@ -52,10 +52,18 @@ float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
 }  // namespace
 
 mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds) {
+  return spot_light_view_proj(light, scene_bounds, VctSettings{});
+}
+
+mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds, const VctSettings& settings) {
   const vec3 dir = glm::normalize(light.direction);
   const mat4 view = glm::lookAt(light.position, light.position + dir, light_up(dir));
-  const vec2 range = light_depth_range(light, scene_bounds);  // near = far / 20
-  const float fov = std::clamp(2.0f * light.outer_cone_angle, glm::radians(1.0f), glm::radians(170.0f));
+  vec2 range = light_depth_range(light, scene_bounds);  // near = far / 20
+  if (settings.shadow_far > 0.0f) range.y = settings.shadow_far;
+  if (settings.shadow_near > 0.0f) range.x = settings.shadow_near;
+  const float fov = settings.shadow_fov_deg > 0.0f
+                        ? glm::radians(settings.shadow_fov_deg)
+                        : std::clamp(2.0f * light.outer_cone_angle, glm::radians(1.0f), glm::radians(170.0f));
   return glm::perspective(fov, 1.0f, range.x, range.y) * view;
 }
 
@@ -99,7 +107,7 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
       }
     } else {
       m.view_proj = light.is_directional() ? directional_light_view_proj(light, scene.volume)
-                                           : spot_light_view_proj(light, scene.bounds);
+                                           : spot_light_view_proj(light, scene.bounds, settings);
       // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
       m.depth =
           depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene));

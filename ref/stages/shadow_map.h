@@ -19,6 +19,9 @@ namespace vct {
 /// (clamped to [1, 170] degrees). far = distance to the farthest corner of `scene_bounds` (x1.01),
 /// near = far / 20 (keeps the constant NDC depth bias meaningful; see docs).
 mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds);
+/// The same with an engine's frustum where the settings give one (shadow_fov_deg, shadow_near,
+/// shadow_far; 0 keeps the rule above for that parameter). Both backends call this.
+mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds, const VctSettings& settings);
 
 /// World -> light clip space for a directional light: the view looks along the light's direction
 /// (the spot's up rule) from outside the voxel volume, and an orthographic box is fitted to the

@@ -84,3 +84,38 @@ TEST(ShadowMap, PcfCountsLitTapsOnAHandMadeMap) {
 
 }  // namespace
 }  // namespace vct
+
+namespace vct {
+namespace {
+// An engine's spot frustum (issue 21: fov 110 degrees, near 0.01, far 3) replaces the oracle's
+// rule: a point on the axis at distance d maps to window depth of a GL perspective with those
+// planes, z_w = (f (d - n)) / (d (f - n)), and a point 54 degrees off the axis (inside 55) lands
+// inside the map although the oracle's own fov (twice a 30 degree cone) would put it outside.
+TEST(ShadowConventions, EngineFrustumFromSettings) {
+  Light l;
+  l.position = vec3(0.0f);
+  l.direction = vec3(0.0f, 0.0f, -1.0f);
+  l.outer_cone_angle = glm::radians(30.0f);
+  Bounds3 b;
+  b.lo = vec3(-1.0f);
+  b.hi = vec3(1.0f);
+  VctSettings s;
+  s.shadow_fov_deg = 110.0f;
+  s.shadow_near = 0.01f;
+  s.shadow_far = 3.0f;
+  const mat4 vp = spot_light_view_proj(l, b, s);
+  const float d = 1.5f, n = 0.01f, f = 3.0f;
+  const vec4 c = vp * vec4(0.0f, 0.0f, -d, 1.0f);
+  EXPECT_NEAR(c.z / c.w * 0.5f + 0.5f, f * (d - n) / (d * (f - n)), 1e-6f);
+  const float off = std::tan(glm::radians(54.0f));
+  const vec4 e = vp * vec4(off, 0.0f, -1.0f, 1.0f);
+  EXPECT_LT(std::abs(e.x / e.w), 1.0f);
+  const vec4 e0 = spot_light_view_proj(l, b) * vec4(off, 0.0f, -1.0f, 1.0f);
+  EXPECT_GT(std::abs(e0.x / e0.w), 1.0f);
+  // Zero keeps the oracle's rule: the default settings give the two-argument matrix.
+  const mat4 a = spot_light_view_proj(l, b, VctSettings{}), a2 = spot_light_view_proj(l, b);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(a[i][j], a2[i][j]);
+}
+}  // namespace
+}  // namespace vct

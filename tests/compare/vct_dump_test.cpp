@@ -1,0 +1,126 @@
+// tools/vct_dump/vct_dump.h: a stage set written from CPU buffers (as an engine would after its
+// read-backs) reads back value for value through the stage-set reader, rows the right way up,
+// and `vct compare` judges it: exit 0 against a reference holding the same values, 1 with one
+// voxel off, 2 for a manifest naming a convention that does not exist.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "compare/stage_compare.h"
+#include "find_verdict.h"
+#include "vct_dump.h"
+
+namespace vct::cmp {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kW = 4, kH = 3, kN = 4;
+
+// A 4x3 RGB image given bottom row first (a GL read-back): value = 100*row_from_top + 10*x + c.
+std::vector<float> bottom_first_rgb() {
+  std::vector<float> v(size_t(kW * kH * 3));
+  for (int yb = 0; yb < kH; ++yb)
+    for (int x = 0; x < kW; ++x)
+      for (int c = 0; c < 3; ++c) v[size_t((yb * kW + x) * 3 + c)] = float(100 * (kH - 1 - yb) + 10 * x + c);
+  return v;
+}
+
+// RGBA voxels: occupied on the x = 1 plane with light depending on (y, z).
+std::vector<float> voxels() {
+  std::vector<float> v(size_t(kN * kN * kN * 4), 0.0f);
+  for (int z = 0; z < kN; ++z)
+    for (int y = 0; y < kN; ++y) {
+      float* p = &v[size_t((((z * kN + y) * kN) + 1) * 4)];
+      p[0] = 0.1f * float(y), p[1] = 0.05f * float(z), p[2] = 0.25f, p[3] = 1.0f;
+    }
+  return v;
+}
+
+std::string dump(const std::string& name, const std::vector<float>& vox) {
+  const std::string dir = (fs::temp_directory_path() / ("vct_dump_test_" + name)).string();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  vct_dump::StageSetWriter w(dir, "dump-test");
+  w.set_storage("rgba32f");
+  w.set_reduction("exact_mean");
+  w.set_setting("grid", kN);
+  w.set_fact("renderer", "unit test");
+  w.set_fact("msaa_samples", 4);
+  w.set_convention("mip_scale", 1.0);
+  const std::vector<float> rgb = bottom_first_rgb();
+  EXPECT_TRUE(w.image("image.final", kW, kH, 3, rgb.data(), vct_dump::Rows::BottomFirst)) << w.error();
+  const std::vector<float> depth(size_t(kW * kH), 0.5f);
+  EXPECT_TRUE(w.image("shadow_map.0", kW, kH, 1, depth.data(), vct_dump::Rows::TopFirst)) << w.error();
+  EXPECT_TRUE(w.volume("voxel.radiance", kN, kN, kN, 4, vox.data())) << w.error();
+  EXPECT_TRUE(w.finish()) << w.error();
+  return dir;
+}
+
+TEST(VctDump, ReadsBackValueForValueRowZeroOnTop) {
+  const std::vector<float> vox = voxels();
+  const StageSet s = read_stage_set(dump("values", vox));
+  EXPECT_EQ(s.backend, "dump-test");
+  EXPECT_EQ(s.facts.msaa_samples, 4);
+  EXPECT_EQ(s.facts.renderer, "unit test");
+  EXPECT_EQ(s.settings.value("grid", 0), kN);
+  const Image& img = s.images.at("image.final");
+  ASSERT_EQ(img.width, kW);
+  ASSERT_EQ(img.height, kH);
+  ASSERT_EQ(img.channels, 3);
+  // Row 0 = top: the value 100*0 + 10*x + c there; the bottom row is 200 + ...
+  EXPECT_EQ(img.at(2, 0, 1), 21.0f);
+  EXPECT_EQ(img.at(3, kH - 1, 2), 232.0f);
+  EXPECT_EQ(s.images.at("shadow_map.0").at(1, 1, 0), 0.5f);
+  const Volume& v = s.volumes.at("voxel.radiance");
+  ASSERT_EQ(v.channels, 4);
+  EXPECT_EQ(v.data, vox);
+}
+
+TEST(VctDump, RejectsChannelCountsPfmCannotHold) {
+  vct_dump::StageSetWriter w(fs::temp_directory_path().string(), "x");
+  const std::vector<float> rgba(16, 0.0f);
+  EXPECT_FALSE(w.image("gbuffer.material", 2, 2, 4, rgba.data(), vct_dump::Rows::TopFirst));
+  EXPECT_FALSE(w.finish());
+  EXPECT_NE(w.error().find("1 or 3 channels"), std::string::npos);
+}
+
+int run_compare(const std::string& ref, const std::string& test) {
+  const std::string cmd = std::string(VCT_BINARY) + " compare " + ref + " " + test + " > /dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+TEST(VctDump, JudgedByVctCompare) {
+  const std::vector<float> vox = voxels();
+  // The reference: the same values written by the project's own stage-set writer.
+  StageSet ref;
+  ref.backend = "ref";
+  const StageSet dumped = read_stage_set(dump("same", vox));
+  ref.images = dumped.images;
+  ref.volumes = dumped.volumes;
+  const std::string ref_dir = (fs::temp_directory_path() / "vct_dump_test_ref").string();
+  fs::remove_all(ref_dir);
+  write_stage_set(ref_dir, ref);
+  EXPECT_EQ(run_compare(ref_dir, dump("same", vox)), 0);
+  std::vector<float> bad = vox;
+  bad[size_t((((2 * kN + 2) * kN) + 1) * 4)] += 0.2f;  // one voxel's red off
+  const Report r = compare_stage_sets(ref, read_stage_set(dump("bad", bad)));
+  EXPECT_EQ(r.first_failing(), "voxel.radiance");
+  EXPECT_EQ(run_compare(ref_dir, dump("bad", bad)), 1);
+  // A convention the oracle does not know is bad input, not a silent pass.
+  const std::string odd = dump("odd", vox);
+  std::ifstream in(odd + "/vct-stages.json");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string m = ss.str();
+  m.replace(m.find("\"mip_scale\""), 11, "\"mip_scael\"");
+  std::ofstream(odd + "/vct-stages.json") << m;
+  EXPECT_EQ(run_compare(ref_dir, odd), 2);
+}
+
+}  // namespace
+}  // namespace vct::cmp
