@@ -246,12 +246,18 @@ def bias_section(p):
     return "".join(out)
 
 
+def backend_timings(j):
+    """run.json's per-backend stage times ({"ref": {...}, "gl": {...}}); other commands' run.json
+    (vct metamorphic, vct attribute) keep scalars such as a total there, which are not per stage."""
+    return {b: t for b, t in (j.get("timings_ms") or {}).items() if isinstance(t, dict)}
+
+
 # ---------------------------------------------------------------- walkthrough
 def walkthrough(p):
     run = p.run
     j = run.json
     vct = j.get("settings", {}).get("vct", {})
-    times = j.get("timings_ms", {})
+    times = backend_timings(j)
     verdicts = {s["stage"]: s for s in (j.get("verdicts") or {}).get("stages", [])}
     out = ['<h2 id="walkthrough">Walkthrough: the pipeline stage by stage</h2>']
     reg = registry.from_run(j)
@@ -341,7 +347,7 @@ def seed_tables():
 
 def performance(p):
     j = p.run.json
-    times = j.get("timings_ms", {})
+    times = backend_timings(j)
     out = ['<h2 id="performance">Performance</h2>']
     stages = sorted({k for b in times.values() for k in b})
     if stages:
