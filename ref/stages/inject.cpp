@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 #include "stages/direct.h"
+#include "stages/fragment_exactness.h"
 #include "stages/fragment_slack.h"
 #include "stages/reduction.h"
 #include "stages/voxel_fill.h"

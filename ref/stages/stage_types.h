@@ -61,7 +61,7 @@ struct VoxelGrid {
   // stages/fragment_slack.h).
   Volume shading_slack;
   // Reference only: 1 where every fragment's light is computed bit for bit by any correct GL
-  // (stages/fragment_slack.h, fragment_light_is_exact), so the fixed-point reduction must agree
+  // (stages/fragment_exactness.h), so the fixed-point reduction must agree
   // exactly there.
   Volume exact;
 };

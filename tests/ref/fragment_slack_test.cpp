@@ -9,6 +9,7 @@
 #include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
 #include "stage_test_scene.h"
+#include "stages/fragment_exactness.h"
 #include "stages/fragment_slack.h"
 #include "stages/inject.h"
 #include "stages/shadow_map.h"
