@@ -52,7 +52,9 @@ double DisplayTransform::apply(double linear) const {
   return gamma == 1.0 ? y : std::pow(y, 1.0 / gamma);
 }
 
-double DisplayTransform::half_step() const { return bits > 0 ? 0.5 / (std::exp2(double(bits)) - 1.0) : 0.0; }
+double DisplayTransform::quantisation_allowance() const {
+  return bits > 0 ? 1.0 / (std::exp2(double(bits)) - 1.0) : 0.0;
+}
 
 double DisplayTransform::encode(double linear) const {
   const double y = apply(linear);
@@ -63,7 +65,7 @@ double DisplayTransform::encode(double linear) const {
 
 double DisplayTransform::carry_bound(double r, double b) const {
   const double at = apply(r);
-  return std::max(apply(r + b) - at, at - apply(r - b)) + half_step();
+  return std::max(apply(r + b) - at, at - apply(r - b)) + quantisation_allowance();
 }
 
 DisplayTransform read_display_transform(const std::string& manifest, const nlohmann::json& j) {

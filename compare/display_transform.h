@@ -30,10 +30,12 @@ struct DisplayTransform {
   double encode(double linear) const;
   /// A linear bound b around reference value r carried into display space: the transform's
   /// change over [r - b, r + b] (its secant slope times b, exact for a monotone transform, finite
-  /// where gamma's derivative is not) plus half a quantisation step.
+  /// where gamma's derivative is not) plus the quantisation allowance.
   double carry_bound(double r, double b) const;
-  /// Half a quantisation step (0 when not quantised).
-  double half_step() const;
+  /// What storing to `bits` may add: one step 1/(2^bits - 1), because GL 4.5 §2.3.5.1 lets the
+  /// conversion return either of the two nearest values (it only recommends rounding to nearest,
+  /// which would need half a step); 0 when not quantised.
+  double quantisation_allowance() const;
 };
 
 /// Reads conventions.display; InputError naming `manifest` and the key on anything wrong.
