@@ -185,7 +185,6 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
     v.bound += "; carried through the declared display transform (" + to_string(display->op) + ", exposure " +
                std::to_string(display->exposure) + ", gamma " + std::to_string(display->gamma) + ", " +
                std::to_string(display->bits) + " bits): its change over [r - b, r + b] + half a step";
-    v.extra["display_transform"] = to_json(*display);
   }
   const Image& judged = displayed ? shown : ref;
   auto pixel_bound = [&](int x, int y, int c) {
@@ -256,7 +255,6 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
               " outside the reference's 3x3 range plus the bound (not a value a tie can give)";
-  const nlohmann::json declared = v.extra.value("display_transform", nlohmann::json());
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},
@@ -264,7 +262,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
              {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", edge_pixels ? allowed_edge_pixels / double(edge_pixels) : 0.0},
              {"allowed_interior_fraction", allow_i}};
-  if (!declared.is_null()) v.extra["display_transform"] = declared;
+  if (displayed) v.extra["display_transform"] = to_json(*display);
   if (allow_i > m.interior_fraction && v.out_of_bound) v.note += "; allowance widened by upstream voxel ties";
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "compare/isolated_stages.h"
 #include "compare/partial_gbuffer.h"
@@ -60,7 +61,10 @@ StageVerdict isolated(const StageSet& e, const std::string& stage) {
   Report rep = compare_stage_sets(f.ref, e);
   judge_cones_on_test_inputs(rep, f.scene, test, f.s.vct, e);
   for (const StageVerdict& v : rep.stages)
-    if (v.stage == stage) return v;
+    if (v.stage == stage) {
+      std::printf("[partial gbuffer] %s: %s, %s\n", stage.c_str(), to_string(v.verdict).c_str(), v.note.c_str());
+      return v;
+    }
   ADD_FAILURE() << "no verdict for " << stage;
   return {};
 }
