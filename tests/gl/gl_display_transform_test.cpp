@@ -70,20 +70,7 @@ cmp::StageVerdict final_verdict(const Frames& f, const cmp::StageSet& engine) {
 
 }  // namespace
 
-TEST(GlDisplayTransform, HandValuesOfTheTransform) {
-  const cmp::DisplayTransform d = engine_transform();
-  // Reinhard 1 -> 0.5; 0.5^(1/2.2) = 0.72974; 8 bits: round(186.08) / 255 = 186 / 255.
-  EXPECT_NEAR(d.apply(1.0), 0.7297400, 1e-6);
-  EXPECT_DOUBLE_EQ(d.encode(1.0), 186.0 / 255.0);
-  EXPECT_DOUBLE_EQ(d.quantisation_allowance(), 1.0 / 255.0);
-  // The carried bound is the transform's change over [r - b, r + b] plus one 8-bit step:
-  // (1.1/2.1)^(1/2.2) - 0.5^(1/2.2) = 0.0155 at r = 1, b = 0.1.
-  EXPECT_NEAR(d.carry_bound(1.0, 0.1), std::pow(1.1 / 2.1, 1.0 / 2.2) - std::pow(0.5, 1.0 / 2.2) + 1.0 / 255.0,
-              1e-12);
-  // Near black the change over the interval is finite where the slope of gamma is not.
-  EXPECT_NEAR(d.carry_bound(0.0, 1e-4), std::pow(1e-4 / (1.0 + 1e-4), 1.0 / 2.2) + 1.0 / 255.0, 1e-12);
-}
-
+// Hand values of the transform and its bound: tests/compare/display_transform_test.cpp.
 TEST(GlDisplayTransform, DeclaredToneMappedFinalPasses) {
   const Frames* f = frames();
   if (!f) GTEST_SKIP() << "no OpenGL 4.5 context";
