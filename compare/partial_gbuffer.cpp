@@ -8,7 +8,7 @@ namespace st = stage_names;
 
 bool is_partial_gbuffer(const StageSet& set) {
   return set.images.count(st::kGbufferDepth) && set.images.count(st::kGbufferNormal) &&
-         !set.images.count(st::kGbufferPosition);
+         !set.has(st::kGbufferPosition);
 }
 
 vec3 position_from_depth(const Scene& scene, int w, int h, float px, float py, float depth) {

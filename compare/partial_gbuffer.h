@@ -16,7 +16,8 @@
 
 namespace vct::cmp {
 
-/// True when `set` has gbuffer.depth and gbuffer.normal but no gbuffer.position.
+/// True when `set` has gbuffer.depth and gbuffer.normal but no gbuffer.position of any kind (one
+/// listed as a volume is a wrong input, named as missing, not a partial G-buffer).
 bool is_partial_gbuffer(const StageSet& set);
 
 /// `set` completed for the cone re-trace: gbuffer.coverage (depth < 1) when absent,
