@@ -2,6 +2,7 @@
 // normal) on GL against the CPU on GL's own G-buffer and mips: cone.glsl reads the offsets the
 // host computed (MarchParams::from_settings), so only the marching mechanism may differ. The
 // convention must also matter on this scene, or the test could not tell GL ignoring it.
+#include <cmath>
 #include <cstdio>
 
 #include "gl_test_util.h"
@@ -60,6 +61,29 @@ TEST(GlConeStart, NormalStartMatchesTheCpuOnTheSameInputs) {
   // Decisive: the conventions differ by far more than that bound (GL on `axis` would fail).
   EXPECT_GT(conv_d.diff, 0.05 * dd.total);
   EXPECT_GT(conv_s.diff, 0.05 * ds.total);
+}
+
+TEST(GlConeStart, MultibounceWithNormalStartFollowsTheCpu) {
+  VCT_REQUIRE_GL();
+  // The bounce cones are traced in the voxelization shader (voxel_value.glsl, trace_diffuse) from
+  // voxel normals: the same origin rule reaches them. Bound as GlConeSet's multibounce test.
+  Settings s = small_settings(32, 64);
+  s.vct.cone_start = ConeStart::Normal;
+  s.vct.cone_offset_voxels = 4.0f;
+  s.vct.bounces = 2;
+  const FrameResult g = render_gl_frame(*ctx, cornell_box(), s);
+  const FrameResult r = render_ref_frame(cornell_box(), s);
+  Settings axis = s;
+  axis.vct.cone_start = ConeStart::Axis;
+  const FrameResult ra = render_ref_frame(cornell_box(), axis);
+  ASSERT_EQ(g.multibounce_energy.size(), 2u);
+  ASSERT_EQ(r.multibounce_energy.size(), 2u);
+  ASSERT_EQ(ra.multibounce_energy.size(), 2u);
+  std::printf("[gl vs ref] cone_start normal, multibounce frame 1 energy: gl %.6g ref %.6g (ref axis %.6g)\n",
+              g.multibounce_energy[1], r.multibounce_energy[1], ra.multibounce_energy[1]);
+  EXPECT_NEAR(g.multibounce_energy[1], r.multibounce_energy[1], 0.005 * r.multibounce_energy[1]);
+  // Decisive: the bounce energy under the other convention is outside that bound.
+  EXPECT_GT(std::abs(ra.multibounce_energy[1] - r.multibounce_energy[1]), 0.005 * r.multibounce_energy[1]);
 }
 
 }  // namespace vct::gl::test
