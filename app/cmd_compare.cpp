@@ -77,7 +77,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
                   "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
     return code;
   }
-  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load);
+  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load, &ref);
   cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
   cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
   note_driver_facts(rep, test.facts, ref.facts);

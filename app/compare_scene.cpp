@@ -59,10 +59,13 @@ void check_sizes(const nlohmann::json& layer, const nlohmann::json& data, const 
 
 nlohmann::json data_sizes(const cmp::StageSet& test) {
   nlohmann::json sizes = nlohmann::json::object();
-  if (test.images.count(stage_names::kGbufferCoverage)) {
-    sizes["width"] = test.images.at(stage_names::kGbufferCoverage).width;
-    sizes["height"] = test.images.at(stage_names::kGbufferCoverage).height;
-  }
+  // A partial G-buffer (compare/partial_gbuffer.h) has no coverage: its depth gives the size.
+  for (const char* stage : {stage_names::kGbufferCoverage, stage_names::kGbufferDepth})
+    if (test.images.count(stage)) {
+      sizes["width"] = test.images.at(stage).width;
+      sizes["height"] = test.images.at(stage).height;
+      break;
+    }
   if (test.volumes.count(stage_names::kVoxelRadiance)) sizes["grid"] = test.volumes.at(stage_names::kVoxelRadiance).nx;
   return sizes;
 }
@@ -90,12 +93,12 @@ VctSettings settings_of_test_set(const cmp::StageSet& test, const std::string& c
 }
 
 IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string& scene_arg,
-                                    const std::string& config,
-                                    const SceneLoadOptions& scene_load) {
+                                    const std::string& config, const SceneLoadOptions& scene_load,
+                                    const cmp::StageSet* reference) {
   IsolatedInputs in;
   in.scene = load_scene_and_warn(scene_arg == kBuiltinSceneName ? std::string() : scene_arg, scene_load);
   in.settings = settings_of_test_set(test, config);
-  in.frame = cmp::frame_from_stage_set(test, in.scene, in.settings);
+  in.frame = cmp::frame_from_stage_set(test, in.scene, in.settings, reference);
   return in;
 }
 

@@ -28,8 +28,10 @@ struct IsolatedInputs {
 };
 
 /// `scene_arg` is a glTF path or "builtin:cornell_box". Throws InputError on a missing scene, a
-/// missing cone input (named), a size mismatch or a scene that cannot be B's.
+/// missing cone input (named), a size mismatch or a scene that cannot be B's. `reference`: A's set,
+/// which fills a partial G-buffer's missing stages (compare/partial_gbuffer.h).
 IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string& scene_arg,
-                                    const std::string& config, const SceneLoadOptions& scene_load = {});
+                                    const std::string& config, const SceneLoadOptions& scene_load = {},
+                                    const cmp::StageSet* reference = nullptr);
 
 }  // namespace vct::app

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/display_transform.h"
+
 namespace vct::cmp {
 
 struct Conventions {
@@ -16,8 +18,11 @@ struct Conventions {
   // bug), but their verdicts say whether the declared scale explains the difference; cone stages
   // judged with --scene use the engine's own mips, so they are not blamed for it.
   double mip_scale = 1.0;
+  // How the engine wrote its image outputs (tone operator, exposure, gamma, bit depth): a
+  // convention, reproduced on the reference's linear image before judging (display_transform.h).
+  DisplayTransform display;
 
-  bool empty() const { return mip_scale == 1.0; }
+  bool empty() const { return mip_scale == 1.0 && !display.declared(); }
 };
 
 /// Reads the manifest's "conventions" object. Unknown keys and values out of range are an

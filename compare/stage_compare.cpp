@@ -125,7 +125,8 @@ bool admissible_tie(const Image& ref, const Image& test, int x, int y, int chann
 }  // namespace
 
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
-                                 const CompareOptions& opt, const Image* texture_slack) {
+                                 const CompareOptions& opt, const Image* texture_slack,
+                                 const DisplayTransform* display) {
   StageVerdict v;
   v.stage = stage;
   if (ref.width != test.width || ref.height != test.height) {
@@ -165,11 +166,30 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<Offender> offenders;
   double se = 0;
   size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0;
-  auto pixel_bound = [&](int x, int y, int c) {
+  auto linear_bound = [&](int x, int y, int c) {
     double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs;
     if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
     if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
     return bound;
+  };
+  // A declared display transform: the reference is judged as the engine would have written it
+  // (colour channels only), with its bound carried through the transform (docs/compare.md,
+  // "Display transform").
+  const bool displayed = display && display->declared();
+  Image shown;
+  if (displayed) {
+    shown = ref;
+    for (int y = 0; y < ref.height; ++y)
+      for (int x = 0; x < ref.width; ++x)
+        for (int c = 0; c < std::min(ref.channels, 3); ++c) shown.at(x, y, c) = float(display->apply(ref.at(x, y, c)));
+    v.bound += "; carried through the declared display transform (" + to_string(display->op) + ", exposure " +
+               std::to_string(display->exposure) + ", gamma " + std::to_string(display->gamma) + ", " +
+               std::to_string(display->bits) + " bits): its change over [r - b, r + b] + half a step";
+  }
+  const Image& judged = displayed ? shown : ref;
+  auto pixel_bound = [&](int x, int y, int c) {
+    const double b = linear_bound(x, y, c);
+    return displayed && c < 3 ? display->carry_bound(ref.at(x, y, c), b) : b;
   };
   for (int y = 0; y < ref.height; ++y)
     for (int x = 0; x < ref.width; ++x) {
@@ -178,7 +198,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       double worst_ratio = 0;
       float worst_err = 0, worst_bound = 0;
       for (int c = 0; c < ch; ++c) {
-        const double r = ref.at(x, y, c), t = test.at(x, y, c), d = std::abs(t - r);
+        const double r = judged.at(x, y, c), t = test.at(x, y, c), d = std::abs(t - r);
         const double bound = pixel_bound(x, y, c);
         se += d * d;
         v.max_abs = std::max(v.max_abs, std::isfinite(d) ? d : 1e30);
@@ -194,14 +214,14 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       // Not for shading stages: their inputs (the G-buffer) carry texture freedom that their
       // bound does not propagate, so a value outside the range is no proof of a bug there yet.
       const auto bound_of = [&](int c) { return pixel_bound(x, y, c); };
-      if (strict_ties && !admissible_tie(ref, test, x, y, ch, bound_of)) {
+      if (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of)) {
         ++inadmissible, state[i] = 2;
       } else if (edge[i]) {
         ++edge_bad, state[i] = 1;
       } else {
         ++interior_bad, state[i] = 2;
       }
-      offenders.push_back(pixel_offender(ref, test, x, y, worst_err, worst_bound));
+      offenders.push_back(pixel_offender(judged, test, x, y, worst_err, worst_bound));
     }
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const double n = double(std::max<size_t>(1, v.checked));
@@ -242,6 +262,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
              {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", edge_pixels ? allowed_edge_pixels / double(edge_pixels) : 0.0},
              {"allowed_interior_fraction", allow_i}};
+  if (displayed) v.extra["display_transform"] = to_json(*display);
   if (allow_i > m.interior_fraction && v.out_of_bound) v.note += "; allowance widened by upstream voxel ties";
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
@@ -801,8 +822,10 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       // A shadow map is its own depth: the camera's depth says nothing about its edges.
       const bool light_space =
           ref && (ref->row->index == StageIndex::Light || ref->row->index == StageIndex::CubeFace);
+      const DisplayTransform& shown = ts.conventions.display;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               light_space ? nullptr : depth_hint, opt, slack));
+                                               light_space ? nullptr : depth_hint, opt, slack,
+                                               shown.applies_to(stage) ? &shown : nullptr));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {

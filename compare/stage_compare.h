@@ -27,11 +27,15 @@ Report compare_stage_sets(const StageSet& reference, const StageSet& test, const
 /// bound; any other value fails (docs/compare.md, "Ties are admissible values"). Shading stages
 /// (image.direct, image.emission) keep the counted allowance until their inputs' freedom is in
 /// their bound.
+/// `display`: the engine's declared display transform of this stage (compare/display_transform.h):
+/// the reference's linear colour is mapped through it and each pixel's bound carried into display
+/// space; nullptr = linear.
 /// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
 /// bound of the textured G-buffer stages; nullptr = none (bare images, external references).
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
                                  const Image* edge_hint, const CompareOptions& opt,
-                                 const Image* texture_slack = nullptr);
+                                 const Image* texture_slack = nullptr,
+                                 const DisplayTransform* display = nullptr);
 
 /// Two bare volumes, element-wise with abs/rel bound (vct compare A.nrrd B.nrrd).
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "compare/partial_gbuffer.h"
 #include "core/error.h"
 #include "stages/stage_registry.h"
 
@@ -106,7 +107,8 @@ void require_stages(const StageSet& set, const Scene& scene, const VctSettings& 
     if (!(is_volume_stage(stage) ? set.volumes.count(stage) : set.images.count(stage)))
       throw InputError(manifest_of(set), "stage '" + stage +
                                              "' is missing; --scene re-traces the cone stages from the test's own "
-                                             "G-buffer, direct light and mips (docs/external_format.md)");
+                                             "G-buffer (or gbuffer.depth + gbuffer.normal, the rest from the "
+                                             "reference), direct light and mips (docs/external_format.md)");
 }
 
 // The images the marcher and the composite index pixel by pixel: the G-buffer, direct light and
@@ -197,7 +199,10 @@ std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings
   return stages;
 }
 
-FrameResult frame_from_stage_set(const StageSet& set, const Scene& scene, const VctSettings& s) {
+FrameResult frame_from_stage_set(const StageSet& given, const Scene& scene, const VctSettings& s,
+                                 const StageSet* reference) {
+  const bool partial = is_partial_gbuffer(given);
+  const StageSet set = partial ? complete_partial_gbuffer(given, scene, reference, cone_input_stages(scene, s)) : given;
   require_stages(set, scene, s);
   FrameResult f;
   fill_everything(set, f);

@@ -25,6 +25,10 @@ std::vector<std::string> cone_input_stages(const Scene& scene, const VctSettings
 /// that does not match `s` (width x height, grid^3, GL level sizes), or a scene that cannot be the
 /// one B rendered (G-buffer positions that do not project to their pixels through the scene's
 /// camera; a shadow-map count other than the scene's spot-light count).
-FrameResult frame_from_stage_set(const StageSet& set, const Scene& scene, const VctSettings& s);
+/// A partial G-buffer (gbuffer.depth + gbuffer.normal, no gbuffer.position) is completed first
+/// (compare/partial_gbuffer.h): position from depth, the other missing cone inputs from `reference`
+/// (nullptr: none, so they are named as missing).
+FrameResult frame_from_stage_set(const StageSet& set, const Scene& scene, const VctSettings& s,
+                                 const StageSet* reference = nullptr);
 
 }  // namespace vct::cmp

@@ -184,7 +184,10 @@ void bind_voxels(const GlFrame& f, const Program& p, GLuint radiance, const std:
   for (GLuint d = 0; d < 6; ++d) glBindTextureUnit(6 + d, f.s.anisotropic ? aniso[d] : radiance);
   set_setting_uniforms(p, f.s);
   // Derived from settings: texture units and radians.
-  p.set("u_cone_start", f.s.cone_offset_voxels / float(f.s.grid));
+  const MarchParams march = MarchParams::from_settings(f.s, f.s.grid);  // the CPU's floats
+  p.set("u_cone_start", march.start_offset);
+  p.set("u_cone_normal_offset", march.normal_offset);
+  p.set("u_shadow_cone_start", MarchParams::shadow_from_settings(f.s, f.s.grid).start_offset);
   p.set("u_diffuse_aperture", f.s.diffuse_aperture_deg * (kPi / 180.0f));
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, f.diffuse_cone_ubo);
 }

@@ -10,7 +10,11 @@ layout(binding = 10) uniform sampler3D u_aniso_pz;
 layout(binding = 11) uniform sampler3D u_aniso_nz;
 uniform int u_anisotropic;
 uniform int u_grid;
-uniform float u_cone_start;     // texture units
+uniform float u_cone_start;     // texture units (MarchParams::start_offset)
+uniform float u_shadow_cone_start;  // texture units (MarchParams::shadow_from_settings)
+// cone_start = normal: diffuse and specular origins move this far along the surface normal
+// (MarchParams::normal_offset, texture units; 0 for cone_start = axis).
+uniform float u_cone_normal_offset;
 uniform float u_cone_max_distance;
 uniform float u_cone_quality;
 uniform int u_opacity_step_correction;
@@ -43,13 +47,14 @@ vec4 sample_voxels(vec3 uvw, float lod, vec3 dir) {
 
 bool inside_unit_cube(vec3 p) { return all(greaterThanEqual(p, vec3(0.0f))) && all(lessThanEqual(p, vec3(1.0f))); }
 
-// Returns (radiance, opacity) accumulated front to back (rgb premultiplied).
-vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float max_distance, float min_lod) {
+// Returns (radiance, opacity) accumulated front to back (rgb premultiplied); the first sample at
+// distance t0 (u_cone_start, or u_shadow_cone_start for the soft-shadow cones).
+vec4 trace_cone(vec3 origin, vec3 dir, float aperture, float t0, float max_distance, float min_lod) {
   float voxel = 1.0f / float(u_grid);
   float tan_half = tan(0.5f * aperture);
   vec3 color = vec3(0.0f);
   float alpha = 0.0f;
-  float t = u_cone_start;
+  float t = t0;
 #ifdef VCT_FAULT_CONE_STEP
   t += max(voxel, 2.0f * t * tan_half) * u_cone_quality;  // fault: the march starts one step late
 #endif
@@ -78,11 +83,12 @@ layout(std140, binding = 1) uniform DiffuseConeUbo { DiffuseConeBlock u_diffuse_
 // The diffuse cone set at texture-space point `origin` with unit normal n.
 vec3 trace_diffuse(vec3 origin, vec3 n, float rotation, float min_lod) {
   Frame f = frame_from_normal(n);
+  origin += n * u_cone_normal_offset;
   vec3 sum = vec3(0.0f);
   int count = diffuse_cone_count(u_diffuse_set);
   for (int i = 0; i < count; ++i) {
     vec3 dir = normalize(frame_to_world(f, diffuse_cone_direction(i, rotation, u_diffuse_set)));
-    vec4 c = trace_cone(origin, dir, u_diffuse_aperture, u_cone_max_distance, min_lod);
+    vec4 c = trace_cone(origin, dir, u_diffuse_aperture, u_cone_start, u_cone_max_distance, min_lod);
     sum += diffuse_cone_weight(i, u_diffuse_set) * c.rgb;
   }
   return sum;

@@ -14,12 +14,12 @@ layout(location = 1) out vec4 o_soft_shadow;
 float cone_visibility(int i, vec3 p) {
   vec3 origin = to_volume(p);
   if (u_light_kind[i] == LIGHT_KIND_DIRECTIONAL) {
-    return 1.0f - trace_cone(origin, -normalize(u_light_direction[i]), u_shadow_aperture, u_cone_max_distance, 0.0f).a;
+    return 1.0f - trace_cone(origin, -normalize(u_light_direction[i]), u_shadow_aperture, u_shadow_cone_start, u_cone_max_distance, 0.0f).a;
   }
   vec3 to_light = to_volume(u_light_position[i]) - origin;
   float dist = length(to_light);
   if (dist <= 0.0f) return 1.0f;
-  return 1.0f - trace_cone(origin, to_light / dist, u_shadow_aperture, min(u_cone_max_distance, dist), 0.0f).a;
+  return 1.0f - trace_cone(origin, to_light / dist, u_shadow_aperture, u_shadow_cone_start, min(u_cone_max_distance, dist), 0.0f).a;
 }
 
 void main() {

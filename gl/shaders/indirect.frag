@@ -39,7 +39,7 @@ void main() {
   if (u_specular_cones != 0) {
     vec3 dir = normalize(reflect(-v, g.normal));
     float aperture = specular_cone_aperture(max(g.pbr.roughness, MIN_ROUGHNESS));
-    specular = trace_cone(origin, dir, aperture, u_cone_max_distance, 0.0f).rgb;
+    specular = trace_cone(origin + g.normal * u_cone_normal_offset, dir, aperture, u_cone_start, u_cone_max_distance, 0.0f).rgb;
   }
   vec3 f = fresnel_schlick(g.pbr.f0, g.pbr.f90, max(dot(g.normal, v), 0.0f));
   vec3 diffuse_term = diffuse_weight(g.pbr, f) * g.pbr.albedo * diffuse;

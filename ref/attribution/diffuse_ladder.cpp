@@ -25,7 +25,7 @@ RungImage gather_cosine_rays(const LadderContext& ctx, uint32_t stream, bool com
     pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, composite_kd ? kSaltCosineKd : kSaltCosine), stream);
     const sh::Frame frame = sh::frame_from_normal(s.n);
     const pt::BsdfPoint bsdf = pt::make_bsdf_point(s.pbr, s.n, s.n, s.v);
-    const vec3 origin = ctx.scene().volume.to_texture(s.p);
+    const vec3 origin = ctx.march().origin_at(ctx.scene().volume.to_texture(s.p), s.n);
     PixelSamples acc;
     for (int i = 0; i < ctx.rays_per_pixel(); ++i) {
       const vec3 l = glm::normalize(sh::frame_to_world(frame, pt::sample_cosine_hemisphere(rng.next_2d())));
@@ -49,7 +49,7 @@ RungImage gather_cone_set_rays(const LadderContext& ctx, uint32_t stream) {
     pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, kSaltCones), stream);
     const sh::Frame frame = sh::frame_from_normal(s.n);
     const float rotation = diffuse_rotation_for_pixel(vs, s.x, s.y);  // the frame's rotation
-    const vec3 origin = ctx.scene().volume.to_texture(s.p);
+    const vec3 origin = ctx.march().origin_at(ctx.scene().volume.to_texture(s.p), s.n);
     PixelSamples acc;
     // One sample = one ray in every cone, combined with the set's weights: an unbiased estimate
     // of the weighted sum of the cones' mean radiance (each cone's interior uniformly in solid angle).
@@ -79,7 +79,7 @@ RungImage cone_set_base_level_steps(const LadderContext& ctx) {
     vec3 sum(0.0f);
     for (int c = 0; c < count; ++c) {
       Cone cone;
-      cone.origin = ctx.scene().volume.to_texture(s.p);
+      cone.origin = ctx.march().origin_at(ctx.scene().volume.to_texture(s.p), s.n);
       cone.direction = glm::normalize(sh::frame_to_world(frame, sh::diffuse_cone_direction(c, rotation, block)));
       cone.aperture = aperture;
       sum += sh::diffuse_cone_weight(c, block) * base_level_cone_steps(ctx.mips(), ctx.march(), cone);

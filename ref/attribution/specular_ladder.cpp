@@ -26,7 +26,7 @@ RungImage gather_ggx_rays(const LadderContext& ctx, uint32_t stream) {
     pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, kSaltGgx), stream);
     const pt::BsdfPoint bsdf = pt::make_bsdf_point(s.pbr, s.n, s.n, s.v);
     const vec3 vl = to_local(bsdf.frame, s.v);
-    const vec3 origin = ctx.scene().volume.to_texture(s.p);
+    const vec3 origin = ctx.march().origin_at(ctx.scene().volume.to_texture(s.p), s.n);
     const float alpha = s.pbr.roughness * s.pbr.roughness;
     PixelSamples acc;
     for (int i = 0; i < ctx.rays_per_pixel(); ++i) {
@@ -54,7 +54,7 @@ RungImage gather_specular_cone_rays(const LadderContext& ctx, uint32_t stream) {
     if (!on) return;  // the frame traces no specular cone: nothing to stand in for
     pt::Pcg32 rng(pixel_seed(s.x, s.y, ctx.width(), stream, seed, kSaltSpecularCone), stream);
     // The frame's cone (stages/cone_sets.h): axis reflect(-v, n), aperture from roughness.
-    const Cone cone = specular_cone(ctx.scene().volume, s.p, s.n, s.v, s.pbr.roughness);
+    const Cone cone = specular_cone(ctx.scene().volume, s.p, s.n, s.v, s.pbr.roughness, ctx.march().normal_offset);
     PixelSamples acc;
     for (int i = 0; i < ctx.rays_per_pixel(); ++i) {
       const vec3 l = direction_in_cone(cone.direction, cone.aperture, rng.next_2d());
@@ -68,7 +68,7 @@ RungImage specular_cone_base_level_steps(const LadderContext& ctx) {
   const bool on = ctx.settings().vct.specular_cones;
   return ctx.for_each_pixel([&](const PixelSurface& s, RungImage& out) {
     if (!on) return;
-    const Cone cone = specular_cone(ctx.scene().volume, s.p, s.n, s.v, s.pbr.roughness);
+    const Cone cone = specular_cone(ctx.scene().volume, s.p, s.n, s.v, s.pbr.roughness, ctx.march().normal_offset);
     out.value.set_rgb(s.x, s.y, s.fresnel * base_level_cone_steps(ctx.mips(), ctx.march(), cone));
   });
 }

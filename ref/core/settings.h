@@ -16,6 +16,10 @@ enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
 // (stages/running_mean.h): the reference keeps the exact mean and states the interval of values.
 enum class Reduction { ExactMean, FixedPoint, CasRgba8, RunningMeanHalf };
 enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
+// Where a diffuse or specular cone starts (issue 21): `cone_offset_voxels` along each cone's own
+// axis (ours), or the origin moved that far along the surface normal and marched from t = 0 (the
+// source design's, righier/gidemo voxelcone.frag). docs/pipeline.md, "Cone marching".
+enum class ConeStart { Axis, Normal };
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
@@ -58,6 +62,7 @@ struct VctSettings {
   bool random_rotation = false;
   float cone_quality = 0.5f;      // step = diameter * quality  (smaller = more steps)
   float cone_offset_voxels = 1.5f;  // start offset, in voxels of level 0
+  ConeStart cone_start = ConeStart::Axis;  // along each cone's axis, or along the surface normal
   float max_distance = 1.7320508f;  // in voxel-texture units ([0,1]^3 cube diagonal)
   float soft_shadow_aperture_deg = 10.0f;
   // Sample opacity corrected for the step length: 1 - (1 - a)^(step / voxel size at the lod)
@@ -117,5 +122,6 @@ std::string to_string(Voxelizer v);
 std::string to_string(VoxelStorage v);
 std::string to_string(Reduction r);
 std::string to_string(DiffuseWeighting w);
+std::string to_string(ConeStart c);
 
 }  // namespace vct

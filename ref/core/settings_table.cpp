@@ -47,6 +47,12 @@ const std::vector<std::pair<DiffuseWeighting, const char*>>& enum_names() {
                                                                        {DiffuseWeighting::SeedSum, "seed"}};
   return m;
 }
+template <>
+const std::vector<std::pair<ConeStart, const char*>>& enum_names() {
+  static const std::vector<std::pair<ConeStart, const char*>> m{{ConeStart::Axis, "axis"},
+                                                                {ConeStart::Normal, "normal"}};
+  return m;
+}
 
 template <typename Enum>
 std::string enum_name(Enum e) {
@@ -145,6 +151,7 @@ std::string to_string(Voxelizer v) { return enum_name(v); }
 std::string to_string(VoxelStorage v) { return enum_name(v); }
 std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
+std::string to_string(ConeStart c) { return enum_name(c); }
 
 const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
   // clang-format off
@@ -176,6 +183,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("random_rotation", &V::random_rotation, any(), "rotate the diffuse cones per pixel (hash of pixel, frame)", "u_random_rotation"),
     field("cone_quality", &V::cone_quality, {0.01, 4.0, true, false}, "step = diameter x quality (smaller = more steps)", "u_cone_quality"),
     field("cone_offset_voxels", &V::cone_offset_voxels, any(), "cone start offset, in voxels of level 0"),
+    choice("cone_start", &V::cone_start, "offset along each cone's axis, or the origin moved along the surface normal (march from t = 0)"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),

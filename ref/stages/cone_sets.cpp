@@ -51,6 +51,7 @@ ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const Vct
   count_ = sh::diffuse_cone_count(block_);
   base_params_ = MarchParams::from_settings(s, grid_of(mips));
   params_ = base_params_;
+  shadow_params_ = MarchParams::shadow_from_settings(s, grid_of(mips));
   params_.min_lod = min_lod;
   diffuse_aperture_ = radians(s.diffuse_aperture_deg);
   shadow_aperture_ = radians(s.soft_shadow_aperture_deg);
@@ -74,7 +75,7 @@ DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
   DiffuseConeSet set;
   set.count = count_;
   if (records) records->assign(size_t(set.count), {});
-  const vec3 origin = volume_.to_texture(p);
+  const vec3 origin = params_.origin_at(volume_.to_texture(p), n);
   // rotation == 0 (also -0: phi = rotation + k step is then the same float) is the unrotated set.
   const bool unrotated = rotation == 0.0f;
   for (int i = 0; i < set.count; ++i) {
@@ -100,14 +101,14 @@ float ConeFrame::rotation_for_pixel(int x, int y) const {
 
 vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
                          std::vector<ConeSample>* record) const {
-  return trace(specular_cone(volume_, p, n, v, roughness), base_params_, record);
+  return trace(specular_cone(volume_, p, n, v, roughness, base_params_.normal_offset), base_params_, record);
 }
 
 Cone ConeFrame::shadow_cone(const vec3& p, const Light& light, float* max_distance) const {
   Cone cone;
   cone.origin = volume_.to_texture(p);
   cone.aperture = shadow_aperture_;
-  *max_distance = base_params_.max_distance;
+  *max_distance = shadow_params_.max_distance;
   if (light.is_directional()) {
     // The sun is infinitely far: the cone runs against its direction (a world direction is the
     // same in texture space, a uniform scale) until the marcher leaves the volume.
@@ -122,7 +123,7 @@ Cone ConeFrame::shadow_cone(const vec3& p, const Light& light, float* max_distan
 }
 
 float ConeFrame::shadow(const vec3& p, const Light& light, std::vector<ConeSample>* record) const {
-  MarchParams params = base_params_;
+  MarchParams params = shadow_params_;
   const Cone cone = shadow_cone(p, light, &params.max_distance);
   if (!(params.max_distance > 0.0f)) return 1.0f;
   return 1.0f - trace(cone, params, record).a;
@@ -139,9 +140,10 @@ float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y) {
   return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), uint32_t(s.frame), diffuse_cone_block(s));
 }
 
-Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness) {
+Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness,
+                  float normal_offset) {
   Cone cone;
-  cone.origin = volume.to_texture(p);
+  cone.origin = volume.to_texture(p) + n * normal_offset;
   cone.direction = glm::normalize(glm::reflect(-v, n));
   // Same clamp as sh::surface_pbr, so the cone matches the roughness the BRDF uses.
   cone.aperture = sh::specular_cone_aperture(std::max(roughness, sh::MIN_ROUGHNESS));
@@ -150,8 +152,8 @@ Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, cons
 
 vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                          const vec3& n, const vec3& v, float roughness, std::vector<ConeSample>* record) {
-  return trace_cone(mips, specular_cone(volume, p, n, v, roughness), MarchParams::from_settings(s, grid_of(mips)),
-                    record);
+  const MarchParams params = MarchParams::from_settings(s, grid_of(mips));
+  return trace_cone(mips, specular_cone(volume, p, n, v, roughness, params.normal_offset), params, record);
 }
 
 float trace_shadow_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,

@@ -69,7 +69,8 @@ class ConeFrame {
   sh::DiffuseConeBlock block_;
   int count_ = 0;
   MarchParams params_;       // diffuse and specular
-  MarchParams base_params_;  // without min_lod: the shadow cone's
+  MarchParams base_params_;  // without min_lod: the specular cone's
+  MarchParams shadow_params_;  // MarchParams::shadow_from_settings
   float diffuse_aperture_ = 0.0f, shadow_aperture_ = 0.0f;
   bool random_rotation_ = false;
   uint32_t frame_ = 0;
@@ -86,8 +87,10 @@ DiffuseConeSet trace_diffuse_cones(const VoxelMips& mips, const VoxelVolume& vol
 /// The cone rotation of pixel (x, y) (row 0 = top) for this frame, or 0 when rotation is off.
 float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y);
 
-/// Specular cone at p: along reflect(-v, n), aperture sh::specular_cone_aperture(roughness).
-Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness);
+/// Specular cone at p: along reflect(-v, n), aperture sh::specular_cone_aperture(roughness); its
+/// origin moved `normal_offset` (texture units, MarchParams::normal_offset) along n.
+Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness,
+                   float normal_offset = 0.0f);
 vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                          const vec3& n, const vec3& v, float roughness, std::vector<ConeSample>* record = nullptr);
 

@@ -11,10 +11,22 @@ namespace vct {
 
 MarchParams MarchParams::from_settings(const VctSettings& s, int grid) {
   MarchParams p;
-  p.start_offset = s.cone_offset_voxels / float(grid);
+  const float offset = s.cone_offset_voxels / float(grid);
+  // Both conventions put the first sample cone_offset_voxels from the surface along the normal
+  // cone; they differ for tilted cones (axis: offset x cos(tilt) above the surface) and in the
+  // first sample's diameter (axis: 2 t tan(aperture/2); normal: one voxel, t = 0).
+  if (s.cone_start == ConeStart::Normal) p.normal_offset = offset;
+  else p.start_offset = offset;
   p.max_distance = s.max_distance;
   p.quality = s.cone_quality;
   p.step_correction = s.opacity_step_correction;
+  return p;
+}
+
+MarchParams MarchParams::shadow_from_settings(const VctSettings& s, int grid) {
+  MarchParams p = from_settings(s, grid);
+  p.start_offset = s.cone_offset_voxels / float(grid);
+  p.normal_offset = 0.0f;
   return p;
 }
 

@@ -19,11 +19,18 @@ struct Cone {
 /// How far and how finely to march; from_settings() fills it from VctSettings.
 struct MarchParams {
   float start_offset = 0.0f;  // first sample distance (texture units)
+  // cone_start = normal: the origin moves this far along the surface normal (texture units) and
+  // start_offset is 0; axis: 0. Cones without a surface normal (soft shadows) ignore it.
+  float normal_offset = 0.0f;
   float max_distance = 1.7320508f;
   float quality = 0.5f;       // step = diameter * quality
   float min_lod = 0.0f;       // multibounce traces start at level >= 1
   bool step_correction = false;  // sh::step_corrected_sample with dt / dt0 = step / (2^lod / N)
   static MarchParams from_settings(const VctSettings& s, int grid);
+  /// The soft-shadow cone's: no surface normal, so it starts along its axis under either cone_start.
+  static MarchParams shadow_from_settings(const VctSettings& s, int grid);
+  /// Where a cone leaving texture-space point p with unit surface normal n starts.
+  vec3 origin_at(const vec3& p, const vec3& n) const { return p + n * normal_offset; }
 };
 
 /// One sample of the march, for --explain.

@@ -60,7 +60,8 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
     cones.push_back({"diffuse", i, set.geometry[size_t(i)], set.weights[size_t(i)], set.cones[size_t(i)],
                      std::move(records[size_t(i)])});
   }
-  TracedCone spec{"specular", 0, specular_cone(scene.volume, p, n, view_vector(scene, p), g.material.at(x, y, 1)),
+  TracedCone spec{"specular", 0, specular_cone(scene.volume, p, n, view_vector(scene, p), g.material.at(x, y, 1),
+                                                MarchParams::from_settings(s, f.mips.iso.empty() ? 1 : f.mips.iso[0].nx).normal_offset),
                   1.0f, vec4(0.0f), {}};
   spec.result = trace_specular_cone(f.mips, scene.volume, s, p, n, view_vector(scene, p), g.material.at(x, y, 1),
                                     &spec.samples);
