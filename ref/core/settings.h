@@ -16,6 +16,10 @@ enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
 // (stages/running_mean.h): the reference keeps the exact mean and states the interval of values.
 enum class Reduction { ExactMean, FixedPoint, CasRgba8, RunningMeanHalf };
 enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean vs the seed's sum
+// How one PCF tap compares: the texel its position falls in (ours), or GL's LINEAR filter on a
+// shadow sampler -- the bilinear weighting of the four nearest texels' comparisons (GL 4.5
+// section 8.23.1), an engine's convention (issue 21).
+enum class ShadowCompare { Nearest, Linear };
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
@@ -34,6 +38,10 @@ struct VctSettings {
   float shadow_fov_deg = 0.0f;
   float shadow_near = 0.0f;
   float shadow_far = 0.0f;
+  // An engine's PCF (issue 21): its compare filtering, and its taps as texel offsets
+  // "dx,dy dx,dy ..." (fractional allowed; core/pcf_taps.h). Empty = the pcf_kernel square.
+  ShadowCompare shadow_compare = ShadowCompare::Nearest;
+  std::string pcf_taps;
   LightModel light_model = LightModel::Gltf;
 
   // Voxelization.
@@ -117,5 +125,6 @@ std::string to_string(Voxelizer v);
 std::string to_string(VoxelStorage v);
 std::string to_string(Reduction r);
 std::string to_string(DiffuseWeighting w);
+std::string to_string(ShadowCompare c);
 
 }  // namespace vct
