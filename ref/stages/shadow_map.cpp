@@ -22,7 +22,8 @@ vec3 box_corner(const vec3& lo, const vec3& hi, int c) {
   return vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
 }
 
-Image depth_image(int size, std::vector<float> data) {
+Image depth_image(int size, std::vector<float> data, ShadowDepthFormat format) {
+  for (float& z : data) z = stored_window_depth(z, format);
   Image img;
   img.width = img.height = size;
   img.channels = 1;
@@ -86,6 +87,23 @@ float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
 
 }  // namespace
 
+double depth_quantum(ShadowDepthFormat format) {
+  switch (format) {
+    case ShadowDepthFormat::Depth24: return 1.0 / double((1u << 24) - 1u);
+    case ShadowDepthFormat::Depth16: return 1.0 / double((1u << 16) - 1u);
+    case ShadowDepthFormat::Depth32f: break;
+  }
+  return 0.0;
+}
+
+float stored_window_depth(float z, ShadowDepthFormat format) {
+  const double q = depth_quantum(format);
+  if (q == 0.0) return z;
+  // In double: 2^24 - 1 steps do not fit a float's mantissa exactly at the rounding.
+  const double steps = std::nearbyint(std::clamp(double(z), 0.0, 1.0) / q);
+  return float(steps * q);
+}
+
 mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds) {
   return spot_light_view_proj(light, scene_bounds, VctSettings{});
 }
@@ -138,14 +156,16 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
       for (int f = 0; f < 6; ++f) {
         m.cube_view_proj[size_t(f)] = cube_face_view_proj(f, light.position, range.x, range.y);
         m.cube[size_t(f)] =
-            depth_image(size, render_depth(scene.positions, scene.triangles, m.cube_view_proj[size_t(f)], size, size, &scene));
+            depth_image(size, render_depth(scene.positions, scene.triangles, m.cube_view_proj[size_t(f)], size, size, &scene),
+                        settings.shadow_depth_format);
       }
     } else {
       m.view_proj = light.is_directional() ? directional_light_view_proj(light, scene.volume)
                                            : spot_light_view_proj(light, scene.bounds, settings);
       // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
       m.depth =
-          depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene));
+          depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene),
+                      settings.shadow_depth_format);
     }
     maps.push_back(std::move(m));
   }

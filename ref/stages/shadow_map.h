@@ -33,9 +33,17 @@ mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume);
 /// farthest corner of `scene_bounds` x1.01, near = far / 20).
 vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds);
 
+/// Window depth z as a map of `format` stores it: unchanged for depth32f; for b-bit UNORM
+/// (depth24, depth16) clamped to [0, 1] and rounded to the nearest multiple of 1 / (2^b - 1)
+/// (GL 4.5 section 2.3.5.2 lets an implementation take either neighbour, preferring the nearest).
+float stored_window_depth(float z, ShadowDepthFormat format);
+
+/// One step of `format`'s stored depth: 1 / (2^b - 1), 0 for float.
+double depth_quantum(ShadowDepthFormat format);
+
 /// One entry per light, in the scene's order (settings.shadow_map_size squared per map or face,
-/// GL_LESS, cleared to 1): `depth` for spot and directional lights, six `cube` faces for point
-/// lights.
+/// GL_LESS, cleared to 1, stored as settings.shadow_depth_format): `depth` for spot and directional
+/// lights, six `cube` faces for point lights.
 std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings);
 
 /// How many square depth images the scene's lights need (one per spot or directional light, six

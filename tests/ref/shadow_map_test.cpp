@@ -188,3 +188,34 @@ TEST(ShadowConventions, MalformedTapListIsBadInput) {
 }
 }  // namespace
 }  // namespace vct
+
+namespace vct {
+namespace {
+// An engine's depth format (issue 21): UNORM depth is the float window depth rounded to the
+// nearest multiple of 1 / (2^b - 1); values worked by hand, then a rendered map checked texel by
+// texel against its float twin (within half a step, and every texel on the grid).
+TEST(ShadowConventions, DepthFormatRoundsToTheUnormGrid) {
+  const double q16 = 1.0 / 65535.0;
+  EXPECT_EQ(stored_window_depth(0.3f, ShadowDepthFormat::Depth32f), 0.3f);
+  EXPECT_EQ(stored_window_depth(0.3f, ShadowDepthFormat::Depth16), float(19661.0 * q16));  // 0.3f * 65535 = 19660.5008 -> 19661
+  EXPECT_EQ(stored_window_depth(1.5f, ShadowDepthFormat::Depth16), 1.0f);
+  EXPECT_EQ(stored_window_depth(-0.1f, ShadowDepthFormat::Depth24), 0.0f);
+  EXPECT_DOUBLE_EQ(depth_quantum(ShadowDepthFormat::Depth24), 1.0 / 16777215.0);
+  const Scene s = plane_under_spot();
+  VctSettings f32, f16;
+  f32.shadow_map_size = f16.shadow_map_size = 32;
+  f16.shadow_depth_format = ShadowDepthFormat::Depth16;
+  const Image a = render_shadow_maps(s, f32)[0].depth, b = render_shadow_maps(s, f16)[0].depth;
+  ASSERT_EQ(a.data.size(), b.data.size());
+  size_t moved = 0;
+  for (size_t i = 0; i < a.data.size(); ++i) {
+    EXPECT_LE(std::abs(double(a.data[i]) - double(b.data[i])), 0.5 * q16 + 1e-9) << i;
+    // On the grid: the float nearest to k / 65535 for an integer k.
+    const double steps = std::round(double(b.data[i]) / q16);
+    EXPECT_EQ(b.data[i], float(steps * q16)) << i;
+    moved += a.data[i] != b.data[i];
+  }
+  EXPECT_GT(moved, a.data.size() / 2);  // not vacuous: most texels are off the grid in float
+}
+}  // namespace
+}  // namespace vct
