@@ -60,6 +60,12 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " lights, the scene has " +
                                        std::to_string(scene.lights.size()));
   check_gl_fault(options.fault, "--gl-fault");
+  if (!settings.vct.pcf_taps.empty() || settings.vct.shadow_compare != ShadowCompare::Nearest ||
+      settings.vct.shadow_depth_format != ShadowDepthFormat::Depth32f)
+    // An engine's PCF (issue 21) is reproduced by the reference only; GL runs the oracle's own.
+    throw InputError("settings", "the GL backend runs the pcf_kernel square with nearest compare; "
+                                 "pcf_taps, shadow_compare=linear and "
+                                 "shadow_depth_format other than depth32f are for the reference");
   FrameResult result;
   result.backend = "gl";
   result.facts = frame_facts(context, settings.vct, options.fault);

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/memory_budget.h"
+#include "core/pcf_taps.h"
 #include "core/settings_table.h"
 
 namespace vct {
@@ -115,6 +116,7 @@ void validate_settings(const Settings& s) {
   // A frustum with near >= far projects nothing (both given; 0 = the oracle's own rule).
   require(s.vct.shadow_near <= 0.0f || s.vct.shadow_far <= 0.0f || s.vct.shadow_near < s.vct.shadow_far,
           "shadow_near must be below shadow_far");
+  (void)parse_pcf_taps(s.vct.pcf_taps);  // throws for a malformed tap list
   check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }
 

@@ -20,6 +20,13 @@ enum class DiffuseWeighting { Cosine, SeedSum };       // cosine-weighted mean v
 // axis (ours), or the origin moved that far along the surface normal and marched from t = 0 (the
 // source design's, righier/gidemo voxelcone.frag). docs/pipeline.md, "Cone marching".
 enum class ConeStart { Axis, Normal };
+// How one PCF tap compares: the texel its position falls in (ours), or GL's LINEAR filter on a
+// shadow sampler -- the bilinear weighting of the four nearest texels' comparisons (GL 4.5
+// section 8.23.1), an engine's convention (issue 21).
+enum class ShadowCompare { Nearest, Linear };
+// How a shadow map stores depth: float (ours), or 24/16-bit UNORM -- an engine's depth texture
+// format (issue 21); the reference quantises its window depth as GL 4.5 section 2.3.5.2 converts.
+enum class ShadowDepthFormat { Depth32f, Depth24, Depth16 };
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
@@ -38,6 +45,11 @@ struct VctSettings {
   float shadow_fov_deg = 0.0f;
   float shadow_near = 0.0f;
   float shadow_far = 0.0f;
+  // An engine's PCF (issue 21): its compare filtering, and its taps as texel offsets
+  // "dx,dy dx,dy ..." (fractional allowed; core/pcf_taps.h). Empty = the pcf_kernel square.
+  ShadowCompare shadow_compare = ShadowCompare::Nearest;
+  std::string pcf_taps;
+  ShadowDepthFormat shadow_depth_format = ShadowDepthFormat::Depth32f;
   LightModel light_model = LightModel::Gltf;
 
   // Voxelization.
@@ -123,5 +135,7 @@ std::string to_string(VoxelStorage v);
 std::string to_string(Reduction r);
 std::string to_string(DiffuseWeighting w);
 std::string to_string(ConeStart c);
+std::string to_string(ShadowCompare c);
+std::string to_string(ShadowDepthFormat f);
 
 }  // namespace vct

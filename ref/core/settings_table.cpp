@@ -54,6 +54,21 @@ const std::vector<std::pair<ConeStart, const char*>>& enum_names() {
   return m;
 }
 
+template <>
+const std::vector<std::pair<ShadowCompare, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowCompare, const char*>> m{{ShadowCompare::Nearest, "nearest"},
+                                                                    {ShadowCompare::Linear, "linear"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<ShadowDepthFormat, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowDepthFormat, const char*>> m{
+      {ShadowDepthFormat::Depth32f, "depth32f"}, {ShadowDepthFormat::Depth24, "depth24"},
+      {ShadowDepthFormat::Depth16, "depth16"}};
+  return m;
+}
+
 template <typename Enum>
 std::string enum_name(Enum e) {
   for (const auto& [value, name] : enum_names<Enum>())
@@ -152,6 +167,8 @@ std::string to_string(VoxelStorage v) { return enum_name(v); }
 std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
 std::string to_string(ConeStart c) { return enum_name(c); }
+std::string to_string(ShadowCompare c) { return enum_name(c); }
+std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
 
 const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
   // clang-format off
@@ -164,6 +181,9 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_fov_deg", &V::shadow_fov_deg, closed(0, 179), "spot shadow map field of view, degrees (0 = twice the outer cone)"),
     field("shadow_near", &V::shadow_near, at_least(0), "spot shadow map near plane (0 = far / 20)"),
     field("shadow_far", &V::shadow_far, at_least(0), "spot shadow map far plane (0 = farthest scene corner x1.01)"),
+    choice("shadow_compare", &V::shadow_compare, "a PCF tap's compare: its texel (nearest) or GL LINEAR's bilinear weighting of 4 compares"),
+    field("pcf_taps", &V::pcf_taps, any(), "PCF taps as texel offsets \"dx,dy dx,dy ...\" (empty = the pcf_kernel square)"),
+    choice("shadow_depth_format", &V::shadow_depth_format, "stored shadow depth: float, or 24/16-bit UNORM rounded to nearest"),
     choice("light_model", &V::light_model, "KHR_lights_punctual (gltf) or the seed's falloff (docs/scenes.md)"),
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),

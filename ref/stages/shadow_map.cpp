@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/pcf_taps.h"
 #include "stages/cube_map.h"
 #include "stages/depth_raster.h"
 
@@ -21,7 +22,8 @@ vec3 box_corner(const vec3& lo, const vec3& hi, int c) {
   return vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
 }
 
-Image depth_image(int size, std::vector<float> data) {
+Image depth_image(int size, std::vector<float> data, ShadowDepthFormat format) {
+  for (float& z : data) z = stored_window_depth(z, format);
   Image img;
   img.width = img.height = size;
   img.channels = 1;
@@ -30,26 +32,77 @@ Image depth_image(int size, std::vector<float> data) {
   return img;
 }
 
+// The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
+// u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
+// or the engine's offsets (core/pcf_taps.h).
+std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings) {
+  std::vector<vec2> out;
+  if (settings.pcf_taps.empty()) {
+    const int k = std::max(1, settings.pcf_kernel);
+    const float half = 0.5f * float(k - 1);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
+    return out;
+  }
+  // Parsed once per thread and tap text: a lookup runs per fragment and per pixel.
+  thread_local std::string parsed_text;
+  thread_local std::vector<vec2> offsets;
+  if (parsed_text != settings.pcf_taps) {
+    offsets = parse_pcf_taps(settings.pcf_taps);
+    parsed_text = settings.pcf_taps;
+  }
+  for (const vec2& o : offsets) out.emplace_back(u + o.x, v + o.y);
+  return out;
+}
+
+// One tap at texel position `t` (continuous, y up): `lit(ix, iy)` of the texel it falls in
+// (nearest), or GL's LINEAR on a shadow sampler -- the four texels around t - 0.5 weighted
+// bilinearly, each compared on its own (GL 4.5 section 8.23.1; equations 8.9-8.11 for i0, alpha).
+template <typename LitTexel>
+float tap_visibility(const vec2& t, ShadowCompare compare, const LitTexel& lit) {
+  if (compare == ShadowCompare::Nearest) return lit(int(std::floor(t.x)), int(std::floor(t.y))) ? 1.0f : 0.0f;
+  const vec2 s = t - 0.5f;
+  const vec2 i0 = glm::floor(s);
+  const vec2 a = s - i0;
+  const int x = int(i0.x), y = int(i0.y);
+  return (1.0f - a.x) * (1.0f - a.y) * float(lit(x, y)) + a.x * (1.0f - a.y) * float(lit(x + 1, y)) +
+         (1.0f - a.x) * a.y * float(lit(x, y + 1)) + a.x * a.y * float(lit(x + 1, y + 1));
+}
+
 // PCF over one 2D depth image: the taps and the test of shadow_visibility (header).
 float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
   const float z = ndc.z * 0.5f + 0.5f;
   const int w = depth.width, h = depth.height;
   // Texel coordinates with y up (GL texture space); the image stores row 0 = top.
   const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
-  const int k = std::max(1, settings.pcf_kernel);
-  const float half = 0.5f * float(k - 1);
-  int lit = 0;
-  for (int j = 0; j < k; ++j) {
-    for (int i = 0; i < k; ++i) {
-      const int tx = std::clamp(int(std::floor(u + float(i) - half)), 0, w - 1);
-      const int ty = std::clamp(int(std::floor(v + float(j) - half)), 0, h - 1);
-      if (z <= depth.at(tx, h - 1 - ty, 0) + settings.shadow_bias) ++lit;
-    }
-  }
-  return float(lit) / float(k * k);
+  // Clamp to edge: a texel past the border reads the border texel.
+  const auto lit = [&](int tx, int ty) {
+    return z <= depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0) + settings.shadow_bias;
+  };
+  const std::vector<vec2> taps = tap_positions(u, v, settings);
+  float sum = 0.0f;
+  for (const vec2& t : taps) sum += tap_visibility(t, settings.shadow_compare, lit);
+  return sum / float(taps.size());
 }
 
 }  // namespace
+
+double depth_quantum(ShadowDepthFormat format) {
+  switch (format) {
+    case ShadowDepthFormat::Depth24: return 1.0 / double((1u << 24) - 1u);
+    case ShadowDepthFormat::Depth16: return 1.0 / double((1u << 16) - 1u);
+    case ShadowDepthFormat::Depth32f: break;
+  }
+  return 0.0;
+}
+
+float stored_window_depth(float z, ShadowDepthFormat format) {
+  const double q = depth_quantum(format);
+  if (q == 0.0) return z;
+  // In double: 2^24 - 1 steps do not fit a float's mantissa exactly at the rounding.
+  const double steps = std::nearbyint(std::clamp(double(z), 0.0, 1.0) / q);
+  return float(steps * q);
+}
 
 mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds) {
   return spot_light_view_proj(light, scene_bounds, VctSettings{});
@@ -103,14 +156,16 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
       for (int f = 0; f < 6; ++f) {
         m.cube_view_proj[size_t(f)] = cube_face_view_proj(f, light.position, range.x, range.y);
         m.cube[size_t(f)] =
-            depth_image(size, render_depth(scene.positions, scene.triangles, m.cube_view_proj[size_t(f)], size, size, &scene));
+            depth_image(size, render_depth(scene.positions, scene.triangles, m.cube_view_proj[size_t(f)], size, size, &scene),
+                        settings.shadow_depth_format);
       }
     } else {
       m.view_proj = light.is_directional() ? directional_light_view_proj(light, scene.volume)
                                            : spot_light_view_proj(light, scene.bounds, settings);
       // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
       m.depth =
-          depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene));
+          depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene),
+                      settings.shadow_depth_format);
     }
     maps.push_back(std::move(m));
   }
@@ -138,35 +193,27 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
   const int size = map.cube[0].width;
   const int home = cube_face(r);
   const vec2 st = cube_face_st(home, r);
-  const float u = st.x * float(size), v = st.y * float(size);
-  const int k = std::max(1, settings.pcf_kernel);
-  const float half = 0.5f * float(k - 1);
-  int lit = 0;
-  for (int j = 0; j < k; ++j) {
-    for (int i = 0; i < k; ++i) {
-      int face = home;
-      int tx = int(std::floor(u + float(i) - half)), ty = int(std::floor(v + float(j) - half));
-      if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
-        // Past the edge: the direction through this virtual texel's centre picks the face and
-        // texel it reads (GL's own selection, so a tap lands where a cube lookup would).
-        const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
-        face = cube_face(d);
-        const vec2 nst = cube_face_st(face, d);
-        tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
-        ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
-      }
-      // The point's depth in the face this tap reads; outside that face's depth range it is lit.
-      const vec4 c = map.cube_view_proj[size_t(face)] * vec4(world_pos, 1.0f);
-      const float z = c.z / c.w * 0.5f + 0.5f;
-      if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) {
-        ++lit;
-        continue;
-      }
-      const Image& img = map.cube[size_t(face)];
-      if (z <= img.at(tx, size - 1 - ty, 0) + settings.shadow_bias) ++lit;
+  const auto lit = [&](int tx, int ty) {
+    int face = home;
+    if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
+      // Past the edge: the direction through this virtual texel's centre picks the face and
+      // texel it reads (GL's own selection, so a tap lands where a cube lookup would).
+      const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
+      face = cube_face(d);
+      const vec2 nst = cube_face_st(face, d);
+      tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
+      ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
     }
-  }
-  return float(lit) / float(k * k);
+    // The point's depth in the face this texel is on; outside that face's depth range it is lit.
+    const vec4 c = map.cube_view_proj[size_t(face)] * vec4(world_pos, 1.0f);
+    const float z = c.z / c.w * 0.5f + 0.5f;
+    if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return true;
+    return z <= map.cube[size_t(face)].at(tx, size - 1 - ty, 0) + settings.shadow_bias;
+  };
+  const std::vector<vec2> taps = tap_positions(st.x * float(size), st.y * float(size), settings);
+  float sum = 0.0f;
+  for (const vec2& t : taps) sum += tap_visibility(t, settings.shadow_compare, lit);
+  return sum / float(taps.size());
 }
 
 float light_visibility(const ShadowMap& map, const Light& light, const vec3& world_pos, const VctSettings& settings) {

@@ -33,25 +33,37 @@ mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume);
 /// farthest corner of `scene_bounds` x1.01, near = far / 20).
 vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds);
 
+/// Window depth z as a map of `format` stores it: unchanged for depth32f; for b-bit UNORM
+/// (depth24, depth16) clamped to [0, 1] and rounded to the nearest multiple of 1 / (2^b - 1)
+/// (GL 4.5 section 2.3.5.2 lets an implementation take either neighbour, preferring the nearest).
+float stored_window_depth(float z, ShadowDepthFormat format);
+
+/// One step of `format`'s stored depth: 1 / (2^b - 1), 0 for float.
+double depth_quantum(ShadowDepthFormat format);
+
 /// One entry per light, in the scene's order (settings.shadow_map_size squared per map or face,
-/// GL_LESS, cleared to 1): `depth` for spot and directional lights, six `cube` faces for point
-/// lights.
+/// GL_LESS, cleared to 1, stored as settings.shadow_depth_format): `depth` for spot and directional
+/// lights, six `cube` faces for point lights.
 std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings);
 
 /// How many square depth images the scene's lights need (one per spot or directional light, six
 /// per point light): what the memory estimate and the GL texture array count.
 int shadow_map_layers(const Scene& scene);
 
-/// PCF visibility in [0,1] (1 = lit) of a world point for one light: settings.pcf_kernel^2 taps at
-/// texel offsets (i - (k-1)/2), nearest texel, clamp to edge; a tap is lit when the point's
-/// window depth <= stored depth + settings.shadow_bias. Points outside the light's frustum are lit
+/// PCF visibility in [0,1] (1 = lit) of a world point for one light: the mean over the taps --
+/// settings.pcf_kernel^2 at texel offsets (i - (k-1)/2), or the engine's settings.pcf_taps
+/// (core/pcf_taps.h) -- of each tap's compare: its texel (shadow_compare nearest) or GL LINEAR's
+/// bilinear weighting of the four texels around it (linear); clamp to edge; a texel is lit when
+/// the point's window depth <= stored depth + settings.shadow_bias. Points outside the light's frustum are lit
 /// (the spot falloff is zero there anyway). Cube maps: cube_shadow_visibility.
 float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSettings& settings);
 
-/// A point light's PCF over its cube: the taps are the k x k texels around the point on the face
-/// its direction selects (cube_map.h); a tap past that face's edge takes the direction through
-/// its (virtual) texel centre and reads the texel that direction selects on the neighbouring face.
-/// Each tap compares the point's window depth in the face it reads (+ settings.shadow_bias).
+/// A point light's PCF over its cube: the taps (as above) around the point on the face its
+/// direction selects (cube_map.h), each compared as above; a texel past that face's edge takes
+/// the direction through its (virtual) centre and reads the texel that direction selects on the
+/// neighbouring face, comparing the point's window depth in that face (+ settings.shadow_bias).
+/// With linear compare this stands in for GL's seamless cube filtering (at a cube corner GL may
+/// blend differently: not judged against GL, which does not run the engine's PCF).
 float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, const vec3& world_pos,
                              const VctSettings& settings);
 

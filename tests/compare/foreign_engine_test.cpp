@@ -198,3 +198,86 @@ TEST(ForeignEngine, UnknownConventionIsBadInput) {
 
 }  // namespace
 }  // namespace vct::cmp
+
+namespace vct::cmp {
+namespace {
+// The engine's PCF (issue 21: gidemo's GL LINEAR compare on a shadow sampler and taps at +-1/3
+// and +-1 texel on both axes). Its frame is the reference rendered with those settings; undeclared
+// (judged by a reference that runs the oracle's 3x3 nearest PCF) it fails where the taps act --
+// image.direct first, and light injection (voxel.radiance) -- with the shadow map itself passing; declared (its manifest
+// "settings" carry shadow_compare and pcf_taps, so the reference reproduces them) it passes; and a
+// real fault under the declared PCF still fails at voxel.radiance.
+constexpr const char* kGidemoTaps =
+    "-1,-1 -0.3333333,-1 0.3333333,-1 1,-1 -1,-0.3333333 -0.3333333,-0.3333333 0.3333333,-0.3333333 1,-0.3333333 "
+    "-1,0.3333333 -0.3333333,0.3333333 0.3333333,0.3333333 1,0.3333333 -1,1 -0.3333333,1 0.3333333,1 1,1";
+
+Settings engine_pcf_settings() {
+  Settings s = fixture().s;
+  s.vct.shadow_compare = ShadowCompare::Linear;
+  s.vct.pcf_taps = kGidemoTaps;
+  s.vct.reduction = Reduction::ExactMean;
+  return s;
+}
+
+struct PcfEngine {
+  StageSet engine;      // what the engine dumps
+  StageSet reproduced;  // the reference under the engine's declared settings
+};
+
+const PcfEngine& pcf_engine() {
+  static const PcfEngine p = [] {
+    PcfEngine x;
+    const Settings s = engine_pcf_settings();
+    const FrameResult f = render_ref_frame(load_scene(""), s);
+    x.reproduced = stage_set_from_frame(f, s.vct);
+    FrameResult e = f;
+    e.backend = "engine";
+    x.engine = stage_set_from_frame(e, s.vct);
+    return x;
+  }();
+  return p;
+}
+
+StageSet oracle_default_reference() {
+  Settings s = fixture().s;
+  s.vct.reduction = Reduction::ExactMean;
+  return stage_set_from_frame(render_ref_frame(load_scene(""), s), s.vct);
+}
+
+TEST(ForeignEngine, EnginePcfUndeclaredFailsWhereTheTapsAct) {
+  // The map itself is the oracle's; the first stage that looks up through it (image.direct, in
+  // pipeline order) fails, and so does light injection (voxel.radiance).
+  const Report r = compare_stage_sets(oracle_default_reference(), pcf_engine().engine);
+  EXPECT_EQ(test::find(r, "shadow_map.0").verdict, Verdict::Pass);
+  EXPECT_EQ(r.first_failing(), "image.direct") << test::find(r, "image.direct").note;
+  EXPECT_EQ(test::find(r, "voxel.radiance").verdict, Verdict::Fail) << test::find(r, "voxel.radiance").note;
+}
+
+TEST(ForeignEngine, EnginePcfDeclaredPasses) {
+  const Report r = compare_stage_sets(pcf_engine().reproduced, pcf_engine().engine);
+  EXPECT_NE(r.overall(), Verdict::Fail) << r.first_failing();
+}
+
+TEST(ForeignEngine, VoxelFaultUnderTheDeclaredPcfFails) {
+  StageSet bad = pcf_engine().engine;
+  Volume& v = bad.volumes.at("voxel.radiance");
+  size_t occupied = 0;
+  for (size_t i = 0; i < v.voxel_count(); ++i)
+    if (v.data[i * 4 + 3] > 0.0f && occupied++ % 50 == 0)
+      for (int c = 0; c < 3; ++c) v.data[i * 4 + size_t(c)] = v.data[i * 4 + size_t(c)] * 1.1f + 0.01f;
+  const Report r = compare_stage_sets(pcf_engine().reproduced, bad);
+  EXPECT_EQ(r.first_failing(), "voxel.radiance");
+}
+
+TEST(ForeignEngine, EnginePcfRoundTripsThroughTheManifestSettings) {
+  const std::string dir = (std::filesystem::temp_directory_path() / "vct_foreign_engine_pcf_test").string();
+  std::filesystem::remove_all(dir);
+  StageSet copy = pcf_engine().engine;
+  write_stage_set(dir, copy);
+  const StageSet back = read_stage_set(dir);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(back.settings.value("pcf_taps", ""), kGidemoTaps);
+  EXPECT_EQ(back.settings.value("shadow_compare", ""), "linear");
+}
+}  // namespace
+}  // namespace vct::cmp
