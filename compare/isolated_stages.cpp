@@ -48,8 +48,12 @@ void replace_with_isolated(StageVerdict& v, const StageVerdict& iso, const char*
   nlohmann::json e2e = {{"verdict", to_string(v.verdict)}, {"note", v.note}, {"rms", v.rms}, {"max_abs", v.max_abs}};
   const std::string e2e_note = v.note;
   const Verdict e2e_verdict = v.verdict;
+  std::string e2e_mask = v.mask;
   v = iso;
   v.extra["end_to_end"] = e2e;
+  // The isolated re-judgement writes no mask; a warn that only the end-to-end difference explains
+  // is shown by the end-to-end mask (the report's first screen shows the warned stage's mask).
+  if (v.mask.empty()) v.mask = std::move(e2e_mask);
   v.note = std::string("on ") + inputs + ": " + iso.note + " | end to end: " + to_string(e2e_verdict) + " (" +
            e2e_note + ")";
   // Upstream ties explain an end-to-end difference only as far as the isolated stage passes.
