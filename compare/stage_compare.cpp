@@ -7,6 +7,7 @@
 
 #include "compare/fill_ties.h"
 #include "compare/image_edges.h"
+#include "compare/mip_rounding.h"
 #include "compare/tolerance.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
@@ -731,6 +732,25 @@ void explain_by_declared_mip_scale(StageVerdict& v, const Volume& ref, const Vol
   v.extra["explained_by_declared_mip_scale"] = explained;
 }
 
+// Our GL backend's isotropic mip step, judged on the test's own level below: exact up to the float
+// sum's rounding (compare/mip_rounding.h), so a wrong rounding fails here even where it hides in
+// the end-to-end bound.
+void judge_mip_step_rounding(StageVerdict& v, const StageRow& row, int level, const StageSet& ts) {
+  if (ts.backend != "gl" || level < 1) return;
+  const std::string below = level == 1 ? std::string(st::kVoxelRadiance) : stage_name(row, level - 1);
+  if (!ts.volumes.count(below)) return;
+  const MipRoundingCheck r = check_iso_mip_rounding(ts.volumes.at(below), ts.volumes.at(stage_name(row, level)), ts.storage);
+  if (!r.checked) return;
+  v.extra["step_rounding_checked"] = r.checked;
+  v.extra["step_rounding_violations"] = r.violations;
+  if (!r.violations) return;
+  v.verdict = Verdict::Fail;
+  v.note += "; " + std::to_string(r.violations) + " of " + std::to_string(r.checked) +
+            " values are not the box filter of the test's own " + below + " rounded as the storage rounds (first at (" +
+            std::to_string(r.worst_x) + ", " + std::to_string(r.worst_y) + ", " + std::to_string(r.worst_z) +
+            "); docs/compare.md \"Mip rounding\")";
+}
+
 StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const StageSet& ts, const CompareOptions& opt,
                          const Taint& taint) {
   const StageRef ref = *find_stage(stage);  // a mip.<dir>.<level> row: the caller dispatched on it
@@ -774,6 +794,7 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
   v.extra["alpha_out_of_range"] = bad_alpha;
   v.extra["level"] = level;
   if (ts.conventions.mip_scale != 1.0) explain_by_declared_mip_scale(v, rs.volumes.at(stage), t, level, b, ts.conventions.mip_scale, opt, lt, slack);
+  if (!aniso) judge_mip_step_rounding(v, *ref.row, level, ts);
   return v;
 }
 

@@ -192,6 +192,10 @@ for name in sorted(os.listdir(os.path.join(res, "sets"))):
         same = first == blamed or family(first) == family(blamed) or (
             blamed.startswith("mip.") and not blamed.startswith("mip.iso") and first.startswith("mip.")
             and not first.startswith("mip.iso")) or (blamed.startswith("image.indirect") and first.startswith("image.indirect"))
+        # half_truncate lives in the one rounding function every store uses: voxel.radiance proves
+        # it only through exact voxels that carry light; on scenes without them the first stage
+        # that can is the mip step judged on the test's own level 0 (docs/compare.md "Mip rounding").
+        same = same or (fault == "half_truncate" and first == "mip.iso.1")
         ok, expect = v["overall"] == "fail" and same, blamed
     bad += 0 if ok else 1
     f = runner["facts"]
