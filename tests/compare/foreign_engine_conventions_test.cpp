@@ -15,6 +15,7 @@
 
 #include "compare/stage_compare.h"
 #include "compare/tolerance.h"
+#include "core/error.h"
 #include "core/light_matrices.h"
 #include "find_verdict.h"
 #include "scene/gltf_loader.h"
