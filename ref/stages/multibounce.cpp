@@ -7,6 +7,7 @@
 #include "stages/cone_sets.h"
 #include "stages/mips.h"
 #include "stages/particles.h"
+#include "stages/running_mean.h"
 
 namespace vct {
 
@@ -31,11 +32,15 @@ double total_energy(const Volume& radiance) {
 
 namespace {
 // Particle light is float arithmetic on both sides (positions from a hash, falloff): a voxel it
-// reaches is no longer exact (VoxelGrid::exact).
+// reaches is no longer exact (VoxelGrid::exact). The CAS interval moves with it: GL's resolve adds
+// the particles to the unpacked CAS value and stores the sum (gl/shaders/voxel_resolve.comp), so
+// an interval without them failed every voxel near a fire (demo_room; docs/compare.md, the `cas-rgba8-interval` row).
 void add_particles(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
   if (scene.emitters.empty()) return;
   const Volume before = g.radiance;
   add_particles_to_voxels(scene, s, g.radiance);
+  if (g.cas_lo.voxel_count() == g.radiance.voxel_count() && g.cas_hi.voxel_count() == g.radiance.voxel_count())
+    add_light_to_interval(particle_voxel_light(scene, s, g.radiance.nx), g.cas_lo, g.cas_hi);
   if (g.exact.voxel_count() != g.radiance.voxel_count()) return;
   for (size_t i = 0; i < g.exact.voxel_count(); ++i)
     for (int c = 0; c < 3; ++c)
