@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "compare/stage_compare.h"
@@ -65,6 +66,8 @@ const StageSet& cone_engine() {
 
 TEST(ForeignEngineConventions, ConeSetUndeclaredFailsAtTheConeStage) {
   const Report r = compare_stage_sets(oracle_reference(), cone_engine());
+  std::printf("[foreign engine] gidemo cone set undeclared: image.indirect_diffuse %s\n",
+              test::find(r, "image.indirect_diffuse").note.c_str());
   // Everything before the cones is the oracle's: the voxels and mips pass.
   EXPECT_NE(test::find(r, "voxel.radiance").verdict, Verdict::Fail);
   EXPECT_EQ(r.first_failing(), "image.indirect_diffuse") << test::find(r, "image.indirect_diffuse").note;
@@ -146,6 +149,8 @@ TEST(ForeignEngineConventions, MatrixUndeclaredFailsAtTheShadowMap) {
   shadow_only.backend = "engine";
   shadow_only.images["shadow_map.0"] = engine.images.at("shadow_map.0");
   const Report r = compare_stage_sets(oracle_reference(), shadow_only);
+  std::printf("[foreign engine] rolled light matrix undeclared: shadow_map.0 %s\n",
+              test::find(r, "shadow_map.0").note.c_str());
   EXPECT_EQ(r.first_failing(), "shadow_map.0");
 }
 
@@ -197,6 +202,7 @@ TEST(ForeignEngineConventions, Depth16MapAtTheBoundsEdgePassesOnlyWithTwoQ) {
     map.data[i] = float(std::min(1.0, std::ceil(shifted / q) * q));
     beyond_float_bound += std::abs(double(map.data[i]) - double(r.data[i])) > std::ldexp(1.0, -14);
   }
+  std::printf("[foreign engine] depth16 engine map: %zu texels beyond 2^-14 of the reference\n", beyond_float_bound);
   EXPECT_GT(beyond_float_bound, 100u);  // the case is at the edge: the float bound alone is not enough
   engine.images["shadow_map.0"] = map;
   EXPECT_EQ(test::find(compare_stage_sets(reference, engine), "shadow_map.0").verdict, Verdict::Pass);
@@ -234,7 +240,49 @@ TEST(ForeignEngineConventions, LinearCompareWeightsTermIsWhatAdmitsTheEdgeCase) 
   const Report with_term = compare_stage_sets(reference, engine);
   EXPECT_NE(test::find(with_term, "image.direct").verdict, Verdict::Fail) << test::find(with_term, "image.direct").note;
   const Report no_term = compare_stage_sets(without, engine);
+  std::printf("[foreign engine] linear compare, image.direct +0.9 of the weight term: with it %s; without it %s\n",
+              test::find(with_term, "image.direct").note.c_str(), test::find(no_term, "image.direct").note.c_str());
   EXPECT_EQ(test::find(no_term, "image.direct").verdict, Verdict::Fail) << test::find(no_term, "image.direct").note;
+}
+
+// The same term in the voxels: each fragment's slack adds 2^-7 x its unshadowed diffuse light, so
+// a voxel's mean may move by 2^-7 x its fragments' mean unshadowed light. Unshadowed light per
+// voxel = (every tap lit) - (lights off: emission alone). An engine off by 0.9 of that passes;
+// with the term taken out of the reference's voxel.shading_slack it fails.
+TEST(ForeignEngineConventions, LinearCompareWeightsTermInTheVoxels) {
+  Settings linear = small_settings();
+  linear.vct.shadow_compare = ShadowCompare::Linear;
+  const Scene scene = load_scene("");
+  const StageSet reference = stage_set_from_frame(render_ref_frame(scene, linear), linear.vct);
+  Settings open = linear;
+  open.vct.shadow_bias = 10.0f;
+  const Volume lit = render_ref_frame(scene, open).voxels.radiance;
+  Scene dark = scene;
+  for (Light& l : dark.lights) l.intensity = 0.0f;
+  const Volume emission = render_ref_frame(dark, linear).voxels.radiance;
+  StageSet engine = reference;
+  engine.backend = "engine";
+  Volume& v = engine.volumes.at("voxel.radiance");
+  StageSet without = reference;
+  Volume& slack = without.volumes.at("voxel.shading_slack");
+  size_t moved = 0;
+  for (size_t i = 0; i < v.voxel_count(); ++i) {
+    if (v.data[i * 4 + 3] <= 0.0f) continue;
+    float u = 0.0f;
+    for (size_t c = 0; c < 3; ++c) u = std::max(u, lit.data[i * 4 + c] - emission.data[i * 4 + c]);
+    const float term = u / 128.0f;
+    if (term <= 0.0f) continue;
+    ++moved;
+    for (size_t c = 0; c < 3; ++c) v.data[i * 4 + c] += 0.9f * term;
+    slack.data[i] = std::max(0.0f, slack.data[i] - term);
+  }
+  EXPECT_GT(moved, 1000u);
+  const Report with_term = compare_stage_sets(reference, engine);
+  const Report no_term = compare_stage_sets(without, engine);
+  std::printf("[foreign engine] linear compare, voxels +0.9 of the weight term: with it %s; without it %s\n",
+              test::find(with_term, "voxel.radiance").note.c_str(), test::find(no_term, "voxel.radiance").note.c_str());
+  EXPECT_NE(test::find(with_term, "voxel.radiance").verdict, Verdict::Fail);
+  EXPECT_EQ(test::find(no_term, "voxel.radiance").verdict, Verdict::Fail);
 }
 
 }  // namespace
