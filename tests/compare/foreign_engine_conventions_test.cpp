@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
+#include <string>
 
 #include "compare/stage_compare.h"
 #include "compare/tolerance.h"
@@ -283,6 +285,39 @@ TEST(ForeignEngineConventions, LinearCompareWeightsTermInTheVoxels) {
               test::find(with_term, "voxel.radiance").note.c_str(), test::find(no_term, "voxel.radiance").note.c_str());
   EXPECT_NE(test::find(with_term, "voxel.radiance").verdict, Verdict::Fail);
   EXPECT_EQ(test::find(no_term, "voxel.radiance").verdict, Verdict::Fail);
+}
+
+// A directional light's ortho box (shadow_ortho_box): sun_room's sun with a box 1.5x the fitted
+// one in x and y (an engine that fits its scene bounds, not the voxel volume). Undeclared, its
+// map fails at shadow_map.0; declared, the reference renders the same box and it passes.
+TEST(ForeignEngineConventions, OrthoBoxUndeclaredFailsDeclaredPasses) {
+  const Scene scene = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/sun_room.gltf");
+  ASSERT_TRUE(scene.lights.at(0).is_directional());
+  const mat4 fitted = directional_light_view_proj(scene.lights[0], scene.volume);
+  // The fitted box from its ortho matrix (x' = 2/(r-l) x - (r+l)/(r-l), likewise y; z' =
+  // -2/(f-n) z - (f+n)/(f-n)), widened 1.5x about its centre.
+  const mat4 view = directional_light_view(scene.lights[0], scene.volume);
+  const mat4 proj = fitted * glm::inverse(view);
+  const float x0 = (-1.0f - proj[3][0]) / proj[0][0], x1 = (1.0f - proj[3][0]) / proj[0][0];
+  const float y0 = (-1.0f - proj[3][1]) / proj[1][1], y1 = (1.0f - proj[3][1]) / proj[1][1];
+  const float n = (proj[3][2] + 1.0f) / proj[2][2], f = (proj[3][2] - 1.0f) / proj[2][2];
+  const float cx = 0.5f * (x0 + x1), cy = 0.5f * (y0 + y1), hx = 0.75f * (x1 - x0), hy = 0.75f * (y1 - y0);
+  std::ostringstream box;
+  box.precision(9);
+  box << "0:" << cx - hx << "," << cx + hx << "," << cy - hy << "," << cy + hy << "," << n << "," << f;
+  Settings engine_settings = small_settings();
+  engine_settings.vct.shadow_ortho_box = box.str();
+  const StageSet engine = stage_set_from_frame(render_ref_frame(scene, engine_settings), engine_settings.vct);
+  StageSet shadow_only;
+  shadow_only.backend = "engine";
+  shadow_only.images["shadow_map.0"] = engine.images.at("shadow_map.0");
+  const StageSet oracle = stage_set_from_frame(render_ref_frame(scene, small_settings()), small_settings().vct);
+  const Report undeclared = compare_stage_sets(oracle, shadow_only);
+  std::printf("[foreign engine] sun ortho box 1.5x undeclared: shadow_map.0 %s\n",
+              test::find(undeclared, "shadow_map.0").note.c_str());
+  EXPECT_EQ(test::find(undeclared, "shadow_map.0").verdict, Verdict::Fail);
+  const Report declared = compare_stage_sets(engine, shadow_only);
+  EXPECT_EQ(test::find(declared, "shadow_map.0").verdict, Verdict::Pass);
 }
 
 }  // namespace
