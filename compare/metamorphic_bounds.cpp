@@ -1,6 +1,7 @@
 #include "compare/metamorphic_bounds.h"
 
 #include "compare/tolerance.h"
+#include "core/declared_cones.h"
 #include "shared/voxel_fixed_point.h"
 
 namespace vct::cmp {
@@ -44,6 +45,13 @@ double max_cone_steps(const VctSettings& s) {
 }
 
 double diffuse_weight_sum(const VctSettings& s) {
+  // An engine's declared set (core/declared_cones.h) weighs its cones as it says.
+  const std::vector<DeclaredCone> declared = parse_declared_cones(s.diffuse_cone_set);
+  if (!declared.empty()) {
+    double sum = 0.0;
+    for (const DeclaredCone& c : declared) sum += double(c.weight);
+    return sum;
+  }
   return s.diffuse_weighting == DiffuseWeighting::SeedSum ? double(s.diffuse_cone_count) : 1.0;
 }
 

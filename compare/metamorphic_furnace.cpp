@@ -116,8 +116,7 @@ RelationResult check_furnace(const MetamorphicContext& c) {
   const Material& m = scene.materials.at(0);
   const double le = m.emission().x, rho = m.base_color_factor.x;
   const StageSet set = stage_set_from_frame(c.render(scene, s), s.vct);
-  const double w =
-      s.vct.diffuse_weighting == DiffuseWeighting::SeedSum ? double(s.vct.diffuse_cone_count) : 1.0;
+  const double w = diffuse_weight_sum(s.vct);
   RelationResult r;
   r.name = "furnace";
   // Level 0 stores the mean of equal values Le: one fixed-point quantum (round(Le 2^-14)) and one

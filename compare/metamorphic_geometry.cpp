@@ -97,6 +97,14 @@ const StageSet& turn_base(const MetamorphicContext& c, const TurnScene& t) {
   return it->second;
 }
 
+// The diffuse cone count whose quarter-turn symmetry keep_turn_invariant_cones may rely on: an
+// engine's declared set or the source design's tangent frame promises none (0: every pixel's
+// cones are left out of the turn relation).
+int turn_symmetric_cone_count(const VctSettings& s) {
+  if (!s.diffuse_cone_set.empty() || s.cone_tangent_frame != ConeTangentFrame::Branchless) return 0;
+  return s.diffuse_cone_count;
+}
+
 RelationResult check_turn(const MetamorphicContext& c, int axis, const char* name) {
   const TurnScene t = turn_scene(c, axis);
   const StageSet& base = turn_base(c, t);
@@ -104,7 +112,7 @@ RelationResult check_turn(const MetamorphicContext& c, int axis, const char* nam
       stage_set_from_frame(c.render(turned90(t.scene, axis), t.settings), t.settings.vct), axis);
   const size_t left_out =
       c.settings.vct.diffuse_cones
-          ? keep_turn_invariant_cones(mapped, base, c.settings.vct.diffuse_cone_count)
+          ? keep_turn_invariant_cones(mapped, base, turn_symmetric_cone_count(c.settings.vct))
           : 0;
   RelationResult r = judge_against_base(name, base, mapped);
   r.extra["axis"] = std::string(1, "xyz"[axis]);

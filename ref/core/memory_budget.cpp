@@ -1,3 +1,4 @@
+#include "core/declared_cones.h"
 #include "core/memory_budget.h"
 
 #include <sys/resource.h>
@@ -69,7 +70,9 @@ uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
   // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
   // the soft-shadow visibility.
-  const uint64_t cone_images = 2 * 16 * uint64_t(v.diffuse_cones ? v.diffuse_cone_count : 0);
+  const size_t declared = parse_declared_cones(v.diffuse_cone_set).size();  // an engine's set, if given
+  const uint64_t cones = declared > 0 ? uint64_t(declared) : uint64_t(v.diffuse_cone_count);
+  const uint64_t cone_images = 2 * 16 * (v.diffuse_cones ? cones : 0);
   const uint64_t per_pixel = 84 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
   return shadow + pixels * per_pixel;
 }
