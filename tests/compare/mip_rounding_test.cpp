@@ -78,6 +78,7 @@ StageSet two_levels(const std::string& backend, float red) {
   const Pair p = pair(kAbove, red);
   StageSet s;
   s.backend = backend;
+  s.facts.renderer = "a driver";  // rendered, not simulated: the step check applies to backend gl
   s.storage = "rgba16f";
   s.reduction = "fixed_point";
   s.volumes["voxel.radiance"] = p.child;
