@@ -7,6 +7,7 @@
 
 #include "compare/fill_ties.h"
 #include "compare/image_edges.h"
+#include "compare/tie_range.h"
 #include "compare/tolerance.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
@@ -126,7 +127,7 @@ bool admissible_tie(const Image& ref, const Image& test, int x, int y, int chann
 
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
                                  const CompareOptions& opt, const Image* texture_slack,
-                                 const DisplayTransform* display) {
+                                 const DisplayTransform* display, const Image* tie_range) {
   StageVerdict v;
   v.stage = stage;
   if (ref.width != test.width || ref.height != test.height) {
@@ -146,6 +147,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
         "admissible texture LOD)";
   const int ch = std::min(ref.channels, test.channels);
   const bool strict_ties = m.id != ToleranceModel::Shading;
+  const TieRangeChannels alt_ch = tie_range && tie_range->width == ref.width && tie_range->height == ref.height
+                                      ? tie_range_channels(stage, *tie_range, ch)
+                                      : TieRangeChannels();
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -165,7 +169,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
   std::vector<Offender> offenders;
   double se = 0;
-  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0;
+  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0, alternatives = 0;
   auto linear_bound = [&](int x, int y, int c) {
     double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs;
     if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
@@ -214,7 +218,22 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       // Not for shading stages: their inputs (the G-buffer) carry texture freedom that their
       // bound does not propagate, so a value outside the range is no proof of a bug there yet.
       const auto bound_of = [&](int c) { return pixel_bound(x, y, c); };
-      if (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of)) {
+      // A raster alternative: a value a correct GL shows here when an edge or a facing ties the
+      // other way (compare/tie_range.h). The bound is the pixel's, plus its relative term on the
+      // alternative's larger magnitude.
+      const auto is_alternative = [&] {
+        if (alt_ch.empty() || displayed) return false;
+        for (int c = 0; c < ch; ++c) {
+          const double lo = tie_range->at(x, y, alt_ch.lo[size_t(c)]), hi = tie_range->at(x, y, alt_ch.hi[size_t(c)]);
+          const double b = bound_of(c) + m.rel * std::max(0.0, std::max(std::abs(lo), std::abs(hi)) -
+                                                                   std::abs(double(ref.at(x, y, c))));
+          if (!within_tie_range(*tie_range, alt_ch, x, y, c, test.at(x, y, c), b)) return false;
+        }
+        return true;
+      };
+      if (is_alternative()) {
+        ++alternatives, state[i] = 1;
+      } else if (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of)) {
         ++inadmissible, state[i] = 2;
       } else if (edge[i]) {
         ++edge_bad, state[i] = 1;
@@ -241,7 +260,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
     interior_bad += inadmissible;
     inadmissible = 0;
   }
-  v.allowed = edge_bad + interior_bad;
+  v.allowed = edge_bad + interior_bad + alternatives;
   const double fi = double(interior_bad) / n;
   if (inadmissible > 0 || fi > allow_i || double(edge_bad) > allowed_edge_pixels)
     v.verdict = Verdict::Fail;
@@ -252,6 +271,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%zu of %zu edge pixels = %.2f%%, %.3f%% interior)",
                 v.out_of_bound, v.checked, edge_bad, edge_pixels, 100 * fe, 100 * fi);
   v.note = buf;
+  if (alternatives)
+    v.note += "; " + std::to_string(alternatives) +
+              " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)";
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
               " outside the reference's 3x3 range plus the bound (not a value a tie can give)";
@@ -259,6 +281,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
              {"edge_fraction", fe},
              {"interior_fraction", fi},
              {"inadmissible", inadmissible},
+             {"raster_alternatives", alternatives},
              {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", edge_pixels ? allowed_edge_pixels / double(edge_pixels) : 0.0},
              {"allowed_interior_fraction", allow_i}};
@@ -786,6 +809,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
   Taint taint, radiance_taint;
   const Image* depth_hint = rs.images.count(st::kGbufferDepth) ? &rs.images.at(st::kGbufferDepth) : nullptr;
   const Image* slack = rs.images.count(st::kGbufferTextureSlack) ? &rs.images.at(st::kGbufferTextureSlack) : nullptr;
+  const Image* tie_range = rs.images.count(st::kGbufferTieRange) ? &rs.images.at(st::kGbufferTieRange) : nullptr;
   for (const std::string& stage : pipeline_order(rs, ts)) {
     const auto ref = find_stage(stage);
     const ToleranceModel model = ref ? ref->row->model : ToleranceModel::None;
@@ -825,7 +849,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       const DisplayTransform& shown = ts.conventions.display;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
                                                light_space ? nullptr : depth_hint, opt, slack,
-                                               shown.applies_to(stage) ? &shown : nullptr));
+                                               shown.applies_to(stage) ? &shown : nullptr, tie_range));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {
