@@ -66,12 +66,12 @@ uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   const uint64_t shadow =
       uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;
   // G-buffer 21 floats (84 B), its texture slack (6 floats, 24 B) and raster-alternative range
-  // (44 floats, 176 B: stages/gbuffer_ties.h); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
+  // (42 floats, 168 B: stages/gbuffer_ties.h); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
   // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
   // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
   // the soft-shadow visibility.
   const uint64_t cone_images = 2 * 16 * uint64_t(v.diffuse_cones ? v.diffuse_cone_count : 0);
-  const uint64_t per_pixel = 84 + 24 + 176 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
+  const uint64_t per_pixel = 84 + 24 + 168 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
   return shadow + pixels * per_pixel;
 }
 

@@ -90,9 +90,10 @@ VisibilityBuffer depth_tied_surfaces(const Scene& scene, const mat4& view_proj, 
       });
     }
   });
+  // No tie: the front surface itself (widen_by skips it; -1 would mean an empty pixel).
   for (size_t i = 0; i < alt.triangle.size(); ++i)
-    if (alt.triangle[i] >= 0 && (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i])))
-      alt.triangle[i] = -1;
+    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
+      alt.triangle[i] = front.triangle[i];
   return alt;
 }
 
