@@ -34,15 +34,20 @@ GBufferSample sample_of(const Scene& scene, const mat4& view_proj, const Visibil
                         vb.depth[i], vb.front_facing[i] != 0);
 }
 
-// The reference's own values at every pixel (lo = hi), widened by its facing alternative.
-void start_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
-  const int w = vb.width;
+// The reference's own values at every pixel (lo = hi, read back from the G-buffer's images in
+// GBufferSample order), widened by its facing alternative.
+void start_ranges(const VisibilityBuffer& vb, GBuffer& g) {
+  const Image* images[] = {&g.coverage, &g.depth, &g.position, &g.normal, &g.albedo, &g.material, &g.specular_color, &g.emission};
   parallel_rows(vb.height, [&](int row) {
-    for (int x = 0; x < w; ++x) {
-      const GBufferSample own = sample_of(scene, view_proj, vb, x, row);
+    for (int x = 0; x < vb.width; ++x) {
+      GBufferSample own;
+      float* v = own.values;
+      for (const Image* im : images)
+        for (int c = 0; c < im->channels; ++c) *v++ = im->at(x, row, c);
       float* p = g.tie_range.pixel(x, row);
       for (int k = 0; k < kGbufferSampleValues; ++k) p[2 * k] = p[2 * k + 1] = own.values[k];
-      if (vb.facing_tie[vb.index(x, row)]) widen(g.tie_range, x, row, negated_normal(own));
+      if (vb.triangle[vb.index(x, row)] >= 0 && vb.facing_tie[vb.index(x, row)])
+        widen(g.tie_range, x, row, negated_normal(own));
     }
   });
 }
@@ -133,7 +138,7 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
   for (const TieRangeGroup& group : kTieRangeGroups)
     for (int c = 0; c < group.channels; ++c)
       for (bool upper : {false, true}) g.tie_range.channel_names.push_back(tie_range_channel_name(group.stage, c, upper));
-  start_ranges(scene, view_proj, vb, g);
+  start_ranges(vb, g);
   // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
   const Scene* alpha_scene = &scene;
   for (int k = 0; k < 4; ++k) {
