@@ -6,6 +6,7 @@
 #include "core/parallel.h"
 #include "scene/alpha_mask.h"
 #include "stages/gbuffer.h"
+#include "stages/texture_slack.h"
 
 namespace vct {
 
@@ -48,6 +49,32 @@ void start_ranges(const VisibilityBuffer& vb, GBuffer& g) {
       for (int k = 0; k < kGbufferSampleValues; ++k) p[2 * k] = p[2 * k + 1] = own.values[k];
       if (vb.triangle[vb.index(x, row)] >= 0 && vb.facing_tie[vb.index(x, row)])
         widen(g.tie_range, x, row, negated_normal(own));
+    }
+  });
+}
+
+constexpr int kPositionOffset = 2;  // first position value in GBufferSample (after coverage, depth)
+
+// The front surface's own position under the snap: its plane's points at the four (+-2^-8,
+// +-2^-8) sample shifts (the texture slack's shifted_surface_points, extrapolated on the plane).
+// A nearly edge-on triangle's position moves far along the view ray under a one-step snap, more
+// than the position model's slope term, taken from the image's 3x3 differences across other
+// surfaces, allows there.
+void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x) {
+      const size_t i = vb.index(x, row);
+      if (vb.triangle[i] < 0) continue;
+      SurfacePoint points[kSlackShifts];
+      const int n = shifted_surface_points(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], points);
+      float* p = g.tie_range.pixel(x, row);
+      for (int k = 0; k < n; ++k)
+        for (int c = 0; c < 3; ++c) {
+          const int v = kPositionOffset + c;
+          p[2 * v] = std::min(p[2 * v], points[k].position[c]);
+          p[2 * v + 1] = std::max(p[2 * v + 1], points[k].position[c]);
+        }
     }
   });
 }
@@ -139,6 +166,7 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
     for (int c = 0; c < group.channels; ++c)
       for (bool upper : {false, true}) g.tie_range.channel_names.push_back(tie_range_channel_name(group.stage, c, upper));
   start_ranges(vb, g);
+  widen_by_own_plane(scene, view_proj, vb, g);
   // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
   const Scene* alpha_scene = &scene;
   for (int k = 0; k < 4; ++k) {

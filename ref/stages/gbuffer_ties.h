@@ -49,7 +49,8 @@ inline constexpr TieRangeGroup kTieRangeGroups[] = {{"coverage", 1}, {"depth", 1
 std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 
 /// Fills g.tie_range from the reference's visibility `vb` (centre sample) and G-buffer `g`:
-/// re-rasterizes the scene with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens
+/// widens the position by the front surface's own plane at the four shifts (a nearly edge-on
+/// triangle's position moves along the view ray under a one-step snap), re-rasterizes the scene with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens
 /// each pixel's range by the values of any other front surface (or of an empty pixel) found
 /// there, by the surface whose depth at the centre ties with the front one's (the other
 /// fragment with the smallest depth minus margin, when that is within the front's depth plus

@@ -116,10 +116,17 @@ TEST(RasterTies, SilhouetteThroughAPixelCentreAdmitsTheSurfaceBehind) {
     EXPECT_NEAR(g.tie_range.at(10, row, z_lo), -4.0f, 1e-4f) << row;
     EXPECT_NEAR(g.tie_range.at(10, row, z_hi), -2.0f, 1e-4f) << row;
     // One column off the edge (half a pixel from it, 128 sub-pixel steps): only the quads' own
-    // diagonals may be crossed there, which show the same plane and material (float rounding).
+    // diagonals may be crossed there, which show the same plane and material (float rounding);
+    // the position spans its own plane at the (+-2^-8, +-2^-8) shifts: 2 x 2^-8 pixel in x and y
+    // (the quad at depth 2 left of the edge, the wall at depth 4 right of it).
+    const int x_lo = channel(g.tie_range, "position.0.lo"), y_lo = channel(g.tie_range, "position.1.lo");
     for (int x : {5, 9, 11})
-      for (int c = 0; c < g.tie_range.channels; c += 2)
-        EXPECT_NEAR(g.tie_range.at(x, row, c), g.tie_range.at(x, row, c + 1), 1e-5f) << x << "," << row << " " << c;
+      for (int c = 0; c < g.tie_range.channels; c += 2) {
+        const float shift_span = 2.0f * pixel_world(x < 10 ? 2.0f : 4.0f) / 256.0f;
+        const float span = g.tie_range.at(x, row, c + 1) - g.tie_range.at(x, row, c);
+        if (c == x_lo || c == y_lo) EXPECT_NEAR(span, shift_span, 1e-5f) << x << "," << row << " " << c;
+        else EXPECT_NEAR(span, 0.0f, 1e-5f) << x << "," << row << " " << c;
+      }
   }
 }
 
