@@ -89,11 +89,12 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   e.voxels = voxel_bytes(v);
   e.images = image_bytes(v, shadow_layers);
   // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing, facing tie
-  // (22 B/pixel), and while the raster alternatives are found (stages/gbuffer_ties.h) one more
-  // (a shifted sample's or the depth-tied surfaces') with two doubles per pixel for the depth
-  // ties' margins, all freed when the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
+  // (22 B/pixel), and while the raster alternatives are found (stages/gbuffer_ties.h) up to two
+  // more (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
+  // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
+  // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images.
-  e.raster_scratch = (2 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
+  e.raster_scratch = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel.
   e.path_tracer = uint64_t(s.pt.width) * uint64_t(s.pt.height) * 16 * 8;
   return e;

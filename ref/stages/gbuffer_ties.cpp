@@ -5,6 +5,7 @@
 
 #include "core/parallel.h"
 #include "scene/alpha_mask.h"
+#include "stages/alpha_ties.h"
 #include "stages/gbuffer.h"
 #include "stages/texture_slack.h"
 
@@ -80,14 +81,17 @@ void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const Visibil
 }
 
 // Per pixel, the fragment other than the reference's front one (a different source triangle) whose
-// depth minus margin is smallest, kept when it ties with the front: z - m <= z_front + m_front.
-// Rasterized as render_visibility does (bands, triangles in index order, alpha test), so the
-// result does not depend on the thread count.
-VisibilityBuffer depth_tied_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front) {
+// key is smallest. Depth ties (`depth_ties`): key = depth minus margin, kept when it ties with the
+// front, z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key =
+// depth: the surface behind the front one (or none). Rasterized as render_visibility does (bands,
+// triangles in index order, alpha test), so the result does not depend on the thread count.
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
+                                bool depth_ties) {
   const int w = front.width, h = front.height;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   std::vector<double> margins(binned.triangles.size());
-  for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
+  if (depth_ties)
+    for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
   // The front fragment's margin, found again by its source triangle at the pixel.
   std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
   VisibilityBuffer alt;
@@ -122,6 +126,7 @@ VisibilityBuffer depth_tied_surfaces(const Scene& scene, const mat4& view_proj, 
       });
     }
   });
+  if (!depth_ties) return alt;
   // No tie: the front surface itself (widen_by skips it; -1 would mean an empty pixel).
   for (size_t i = 0; i < alt.triangle.size(); ++i)
     if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
@@ -138,6 +143,26 @@ void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer&
       const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
       widen(g.tie_range, x, row, alt);
       if (other.triangle[i] >= 0 && other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+    }
+  });
+}
+
+// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface, masks ignored, may pass or
+// fail its alpha test in a correct GL, the other outcome is admissible: that surface where the
+// reference discarded it, what lies behind it where the reference kept it.
+void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  const int w = vb.width, h = vb.height;
+  const VisibilityBuffer unmasked = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  const VisibilityBuffer behind = other_surfaces(scene, view_proj, vb, false);
+  const WindowBarycentrics wb(view_proj, w, h);
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = vb.index(x, row);
+      const int32_t top = unmasked.triangle[i];
+      if (top < 0 || !alpha_test_may_flip(scene, wb, x, row, uint32_t(top), unmasked.bary[i])) continue;
+      const GBufferSample alt = vb.triangle[i] != top ? sample_of(scene, view_proj, unmasked, x, row)
+                                                      : sample_of(scene, view_proj, behind, x, row);
+      widen(g.tie_range, x, row, alt);
     }
   });
 }
@@ -175,7 +200,8 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
     widen_by(scene, view_proj, vb,
              render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample), g);
   }
-  widen_by(scene, view_proj, vb, depth_tied_surfaces(scene, view_proj, vb), g);
+  widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
+  if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);
 }
 
 }  // namespace vct

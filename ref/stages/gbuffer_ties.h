@@ -54,7 +54,8 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 /// each pixel's range by the values of any other front surface (or of an empty pixel) found
 /// there, by the surface whose depth at the centre ties with the front one's (the other
 /// fragment with the smallest depth minus margin, when that is within the front's depth plus
-/// its margin), and by the negated normal where a front surface's facing may flip.
+/// its margin), by the negated normal where a front surface's facing may flip, and, where an
+/// alpha test may go either way (stages/alpha_ties.h), by its other outcome.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
 
 }  // namespace vct

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "alpha_card_scene.h"
 #include "stage_test_scene.h"
 #include "stages/gbuffer.h"
 #include "stages/gbuffer_ties.h"
@@ -155,6 +156,32 @@ TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
   // The wall two rows down keeps its facing: lo = hi = +1.
   EXPECT_EQ(g.tie_range.at(3, 8, n_lo), 1.0f);
   EXPECT_EQ(g.tie_range.at(3, 8, n_hi), 1.0f);
+}
+
+}  // namespace
+}  // namespace vct
+
+namespace vct {
+namespace {
+
+TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
+  // The half-masked card (alpha_card_scene.h): alpha = cutoff exactly on x = 0, which an odd
+  // image width puts on the centre column's pixel centres; the backdrop (albedo 0.8) behind.
+  Scene s = test::half_masked_card(true);
+  VctSettings st;
+  st.width = st.height = 33;
+  const GBuffer g = render_gbuffer(s, st);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  const float card = g.albedo.at(24, 16, 0), backdrop = g.albedo.at(2, 16, 0);
+  ASSERT_NEAR(backdrop, 0.8f, 1e-6f);
+  ASSERT_LT(card, 0.5f);  // the card's grey texel, decoded from sRGB
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LE(g.tie_range.at(16, row, lo), card + 1e-5f) << row;  // the same grey texel, filtered
+    EXPECT_GE(g.tie_range.at(16, row, hi), backdrop) << row;
+    // Two columns away the alpha is 2 pixels' worth from the cutoff: one outcome only.
+    EXPECT_EQ(g.tie_range.at(18, row, lo), g.tie_range.at(18, row, hi)) << row;
+    EXPECT_EQ(g.tie_range.at(14, row, lo), g.tie_range.at(14, row, hi)) << row;
+  }
 }
 
 }  // namespace

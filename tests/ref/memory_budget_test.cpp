@@ -30,20 +30,20 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   // Shadow map 50^2 floats; per pixel: G-buffer 84 + texture slack 24 + raster alternatives 168
   // + frame images 96 + cone images 2 x 80.
   EXPECT_EQ(e.images, 50ull * 50 * 4 + 100ull * 100 * 532);
-  EXPECT_EQ(e.raster_scratch, 100ull * 100 * 60);  // the camera's visibility buffer is larger
+  EXPECT_EQ(e.raster_scratch, 100ull * 100 * 82);  // the camera's visibility buffer is larger
   EXPECT_EQ(e.path_tracer, 100ull * 16 * 8);
   EXPECT_EQ(e.baseline, 136ull << 20);
   EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
   // Shadow maps are rasterized depth-only: a large map adds its floats, no scratch.
   s.vct.shadow_map_size = 2048;
   const MemoryEstimate big_map = estimate_memory(s);
-  EXPECT_EQ(big_map.raster_scratch, 100ull * 100 * 60);
+  EXPECT_EQ(big_map.raster_scratch, 100ull * 100 * 82);
   EXPECT_EQ(big_map.images, 2048ull * 2048 * 4 + 100ull * 100 * 532);
   // A large image's visibility buffer outweighs a small grid; only the larger counts.
   s.vct.grid = 16;
   s.vct.width = s.vct.height = 2048;
   const MemoryEstimate big_image = estimate_memory(s);
-  EXPECT_EQ(big_image.raster_scratch, 2048ull * 2048 * 60);
+  EXPECT_EQ(big_image.raster_scratch, 2048ull * 2048 * 82);
   EXPECT_GT(big_image.raster_scratch, big_image.voxels);
   EXPECT_EQ(big_image.total(), big_image.baseline + big_image.raster_scratch + big_image.images + big_image.path_tracer);
 }
