@@ -150,6 +150,9 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   const TieRangeChannels alt_ch = tie_range && tie_range->width == ref.width && tie_range->height == ref.height
                                       ? tie_range_channels(stage, *tie_range, ch)
                                       : TieRangeChannels();
+  const bool alternatives_only = !alt_ch.empty();
+  if (alternatives_only)
+    v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -218,9 +221,12 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       // Not for shading stages: their inputs (the G-buffer) carry texture freedom that their
       // bound does not propagate, so a value outside the range is no proof of a bug there yet.
       const auto bound_of = [&](int c) { return pixel_bound(x, y, c); };
-      // A raster alternative: a value a correct GL shows here when an edge or a facing ties the
-      // other way (compare/tie_range.h). The bound is the pixel's, plus its relative term on the
-      // alternative's larger magnitude.
+      // A raster alternative: a value a correct GL shows here when an edge, a depth order, a
+      // facing or an alpha test ties the other way (compare/tie_range.h). The bound is the
+      // pixel's, plus its relative term on the alternative's larger magnitude. Where the
+      // reference supplies them (its G-buffer stages), they are the only ties: the neighbourhood
+      // rule and the edge and interior shares are not used (docs/compare.md, "Raster
+      // alternatives": every G-buffer pixel beyond its bound on every scene at 64^2-256^2 was one).
       const auto is_alternative = [&] {
         if (alt_ch.empty() || displayed) return false;
         for (int c = 0; c < ch; ++c) {
@@ -233,7 +239,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       };
       if (is_alternative()) {
         ++alternatives, state[i] = 1;
-      } else if (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of)) {
+      } else if (alternatives_only || (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of))) {
         ++inadmissible, state[i] = 2;
       } else if (edge[i]) {
         ++edge_bad, state[i] = 1;
@@ -248,7 +254,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   // number grows with the length of the edges (~W) while the pixel count grows as W^2, so a share
   // of all pixels meant a different share of the edges at every size (3.2% of the built-in scene's
   // position edge pixels at 32^2, 41% at 512^2; docs/compare.md, "Edges").
-  double allow_i = m.interior_fraction, allowed_edge_pixels = m.edge_tie_fraction * double(edge_pixels);
+  double allow_i = alternatives_only ? 0.0 : m.interior_fraction,
+         allowed_edge_pixels = alternatives_only ? 0.0 : m.edge_tie_fraction * double(edge_pixels);
   if (is_cone_traced(stage, opt.soft_shadows) && opt.upstream_tie_fraction > 0) {
     // Voxels that legitimately differ (ties) are seen by many cones anywhere in the image, not at
     // edges: allow a proportional share of all pixels, at any value (a tied voxel moves a cone's
@@ -276,7 +283,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
               " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)";
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
-              " outside the reference's 3x3 range plus the bound (not a value a tie can give)";
+              (alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
+                                 : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},

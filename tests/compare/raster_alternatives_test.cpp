@@ -82,5 +82,26 @@ TEST(RasterAlternatives, NegatedNormalIsAdmittedWhereTheFacingTies) {
             Verdict::Fail);
 }
 
+TEST(RasterAlternatives, WithTheRangeANeighboursValueIsNoLongerATie) {
+  // Two flat halves (0.2 | 0.7) of a 64^2 image meeting between columns 31 and 32: pixel
+  // (31, 10) showing its right neighbour's value is an edge tie for the neighbourhood rule (one
+  // of 128 edge pixels, inside 2.5 %), but not a value the reference's raster alternatives allow
+  // there (no edge passes within 2^-8 pixel of its centre): with the range it fails.
+  Image ref(64, 64, 1);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) ref.at(x, y, 0) = x < 32 ? 0.2f : 0.7f;
+  Image test = ref;
+  test.at(31, 10, 0) = 0.7f;
+  CompareOptions opt;
+  EXPECT_EQ(compare_image_stage("gbuffer.coverage", ref, test, nullptr, opt).verdict, Verdict::Warn);
+  const Image range = own_range("coverage", ref);
+  const StageVerdict v = compare_image_stage("gbuffer.coverage", ref, test, nullptr, opt, nullptr, nullptr, &range);
+  EXPECT_EQ(v.verdict, Verdict::Fail);
+  EXPECT_EQ(v.extra.at("inadmissible").get<size_t>(), 1u);
+  // A one-pixel shift of the whole image, admissible pixel by pixel for the neighbourhood rule
+  // and caught there only by the count, fails here at its first pixel.
+  EXPECT_EQ(v.extra.at("allowed_edge_fraction").get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace vct::cmp
