@@ -7,10 +7,12 @@
 
 #include "compare/fill_ties.h"
 #include "compare/image_edges.h"
+#include "compare/mip_rounding.h"
 #include "compare/tie_range.h"
 #include "compare/tolerance.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
+#include "stages/shadow_map.h"
 
 namespace vct::cmp {
 
@@ -173,8 +175,12 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<Offender> offenders;
   double se = 0;
   size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0, alternatives = 0;
+  // A UNORM depth map: each side within a step q of its float depth (either neighbour, GL 4.5
+  // section 2.3.5.2), so two maps within the float bound stay within it + 2q.
+  const double depth_format = m.id == ToleranceModel::Depth ? 2.0 * opt.depth_quantum : 0.0;
+  if (depth_format > 0) v.bound += " + 2q of the UNORM depth format (" + std::to_string(depth_format) + ")";
   auto linear_bound = [&](int x, int y, int c) {
-    double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs;
+    double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs + depth_format;
     if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
     if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
     return bound;
@@ -762,6 +768,25 @@ void explain_by_declared_mip_scale(StageVerdict& v, const Volume& ref, const Vol
   v.extra["explained_by_declared_mip_scale"] = explained;
 }
 
+// Our GL backend's isotropic mip step, judged on the test's own level below: exact up to the float
+// sum's rounding (compare/mip_rounding.h), so a wrong rounding fails here even where it hides in
+// the end-to-end bound.
+void judge_mip_step_rounding(StageVerdict& v, const StageRow& row, int level, const StageSet& ts) {
+  if (ts.backend != "gl" || level < 1) return;
+  const std::string below = level == 1 ? std::string(st::kVoxelRadiance) : stage_name(row, level - 1);
+  if (!ts.volumes.count(below)) return;
+  const MipRoundingCheck r = check_iso_mip_rounding(ts.volumes.at(below), ts.volumes.at(stage_name(row, level)), ts.storage);
+  if (!r.checked) return;
+  v.extra["step_rounding_checked"] = r.checked;
+  v.extra["step_rounding_violations"] = r.violations;
+  if (!r.violations) return;
+  v.verdict = Verdict::Fail;
+  v.note += "; " + std::to_string(r.violations) + " of " + std::to_string(r.checked) +
+            " values are not the box filter of the test's own " + below + " rounded as the storage rounds (first at (" +
+            std::to_string(r.worst_x) + ", " + std::to_string(r.worst_y) + ", " + std::to_string(r.worst_z) +
+            "); docs/compare.md \"Mip rounding\")";
+}
+
 StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const StageSet& ts, const CompareOptions& opt,
                          const Taint& taint) {
   const StageRef ref = *find_stage(stage);  // a mip.<dir>.<level> row: the caller dispatched on it
@@ -805,7 +830,17 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
   v.extra["alpha_out_of_range"] = bad_alpha;
   v.extra["level"] = level;
   if (ts.conventions.mip_scale != 1.0) explain_by_declared_mip_scale(v, rs.volumes.at(stage), t, level, b, ts.conventions.mip_scale, opt, lt, slack);
+  if (!aniso) judge_mip_step_rounding(v, *ref.row, level, ts);
   return v;
+}
+
+// One step of the reference's shadow depth format (its manifest settings; absent = float).
+double depth_quantum_of(const StageSet& rs) {
+  if (!rs.settings.is_object() || !rs.settings.contains("shadow_depth_format")) return 0.0;
+  const nlohmann::json& format = rs.settings.at("shadow_depth_format");
+  for (ShadowDepthFormat f : {ShadowDepthFormat::Depth24, ShadowDepthFormat::Depth16})
+    if (format == to_string(f)) return depth_quantum(f);
+  return 0.0;
 }
 
 }  // namespace
@@ -855,8 +890,10 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       const bool light_space =
           ref && (ref->row->index == StageIndex::Light || ref->row->index == StageIndex::CubeFace);
       const DisplayTransform& shown = ts.conventions.display;
+      CompareOptions stage_opt = opt;
+      if (light_space) stage_opt.depth_quantum = depth_quantum_of(rs);
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               light_space ? nullptr : depth_hint, opt, slack,
+                                               light_space ? nullptr : depth_hint, stage_opt, slack,
                                                shown.applies_to(stage) ? &shown : nullptr, tie_range));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));

@@ -133,7 +133,7 @@ void Integrator::nee_punctual(const Vertex& v, const Throughput& tp, PathSample&
                                            glm::dot(light.direction, -l), spot_cos_[i].x, spot_cos_[i].y, light.range);
     if (e == vec3(0.0f)) continue;
     ++counts.shadow;
-    if (rt_.occluded(v.p, shadow_ray, 0.0f, 1.0f)) continue;
+    if (rt_.occluded(v.p, shadow_ray, leave_tnear(shadow_ray), 1.0f)) continue;
     credit_punctual(out, tp, v.depth, f.total() * e * glm::dot(v.bp.n, l));
   }
 }
@@ -157,7 +157,7 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng,
   const vec3 le = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
   if (le == vec3(0.0f)) return;
   ++counts.shadow;
-  if (rt_.occluded(v.p, lp.position - v.p, 0.0f, 1.0f - eps_ / dist)) return;
+  if (rt_.occluded(v.p, lp.position - v.p, leave_tnear(lp.position - v.p), 1.0f - eps_ / dist)) return;
   const float pdf_light = ls.pdf_area * dist2 / cos_l;
   const float w = power_heuristic(pdf_light, bsdf_pdf(v.bp, l));
   credit_nee(out, tp, v.depth, f, le * (glm::dot(v.bp.n, l) * w / pdf_light));
@@ -173,7 +173,7 @@ void Integrator::nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng
   const BsdfValue f = eval_bsdf(v.bp, l);
   if (f.total() == vec3(0.0f)) return;
   ++counts.shadow;
-  if (rt_.occluded(v.p, ps.position - v.p, 0.0f, 1.0f)) return;
+  if (rt_.occluded(v.p, ps.position - v.p, leave_tnear(ps.position - v.p), 1.0f)) return;
   credit_nee(out, tp, v.depth, f, ps.intensity * (glm::dot(v.bp.n, l) / (dist2 * ps.pmf)));
 }
 
@@ -253,7 +253,7 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     prev_pdf = bs.pdf;
     dir = bs.l;
     ++counts.secondary;
-    hit = rt_.intersect(v.p, dir, 0.0f, kInf);
+    hit = rt_.intersect(v.p, dir, leave_tnear(dir), kInf);
   }
 
   if (!finite(out)) {

@@ -71,6 +71,14 @@ class Integrator {
   PtSettings settings_;
   int light_model_;
   float eps_;  // ray offset, scaled to the scene's size
+  /// tnear of a ray that leaves a vertex from its lifted origin (Vertex::p) along `ray` (any
+  /// length): the first eps_ of its length is skipped. The lift alone does not clear a surface
+  /// that meets this one at a concave edge: a vertex exactly on the floor–wall corner of a box,
+  /// lifted along the floor's normal, starts *on* the wall, and a ray with tnear = 0 reports the
+  /// wall at t = 0 (Embree's hits are t >= tnear) — every such vertex came out in shadow. Camera
+  /// rays through pixel centres land on such edges exactly in symmetric views (the Cornell box's
+  /// floor corners lie on the image diagonals): docs/pathtracer.md "Leaving a surface".
+  float leave_tnear(const vec3& ray) const { return eps_ / glm::length(ray); }
   float sun_ray_length_;  // a directional light's shadow ray: leaves the scene from any vertex
   std::vector<vec2> spot_cos_;  // per light: cos(inner), cos(outer), computed once
 };
