@@ -8,6 +8,7 @@
 #include "compare/fill_ties.h"
 #include "compare/image_edges.h"
 #include "compare/mip_rounding.h"
+#include "compare/tie_range.h"
 #include "compare/tolerance.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
@@ -128,7 +129,7 @@ bool admissible_tie(const Image& ref, const Image& test, int x, int y, int chann
 
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test, const Image* edge_hint,
                                  const CompareOptions& opt, const Image* texture_slack,
-                                 const DisplayTransform* display) {
+                                 const DisplayTransform* display, const Image* tie_range) {
   StageVerdict v;
   v.stage = stage;
   if (ref.width != test.width || ref.height != test.height) {
@@ -148,6 +149,12 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
         "admissible texture LOD)";
   const int ch = std::min(ref.channels, test.channels);
   const bool strict_ties = m.id != ToleranceModel::Shading;
+  const TieRangeChannels alt_ch = tie_range && tie_range->width == ref.width && tie_range->height == ref.height
+                                      ? tie_range_channels(stage, *tie_range, ch)
+                                      : TieRangeChannels();
+  const bool alternatives_only = !alt_ch.empty();
+  if (alternatives_only)
+    v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -167,7 +174,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<uint8_t> state(edge.size(), 0);  // 0 ok, 1 tolerated edge, 2 beyond bound
   std::vector<Offender> offenders;
   double se = 0;
-  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0;
+  size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0, alternatives = 0;
   // A UNORM depth map: each side within a step q of its float depth (either neighbour, GL 4.5
   // section 2.3.5.2), so two maps within the float bound stay within it + 2q.
   const double depth_format = m.id == ToleranceModel::Depth ? 2.0 * opt.depth_quantum : 0.0;
@@ -220,7 +227,25 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       // Not for shading stages: their inputs (the G-buffer) carry texture freedom that their
       // bound does not propagate, so a value outside the range is no proof of a bug there yet.
       const auto bound_of = [&](int c) { return pixel_bound(x, y, c); };
-      if (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of)) {
+      // A raster alternative: a value a correct GL shows here when an edge, a depth order, a
+      // facing or an alpha test ties the other way (compare/tie_range.h). The bound is the
+      // pixel's, plus its relative term on the alternative's larger magnitude. Where the
+      // reference supplies them (its G-buffer stages), they are the only ties: the neighbourhood
+      // rule and the edge and interior shares are not used (docs/compare.md, "Raster
+      // alternatives": every G-buffer pixel beyond its bound on every scene at 64^2-256^2 was one).
+      const auto is_alternative = [&] {
+        if (alt_ch.empty() || displayed) return false;
+        for (int c = 0; c < ch; ++c) {
+          const double lo = tie_range->at(x, y, alt_ch.lo[size_t(c)]), hi = tie_range->at(x, y, alt_ch.hi[size_t(c)]);
+          const double b = bound_of(c) + m.rel * std::max(0.0, std::max(std::abs(lo), std::abs(hi)) -
+                                                                   std::abs(double(ref.at(x, y, c))));
+          if (!within_tie_range(*tie_range, alt_ch, x, y, c, test.at(x, y, c), b)) return false;
+        }
+        return true;
+      };
+      if (is_alternative()) {
+        ++alternatives, state[i] = 1;
+      } else if (alternatives_only || (strict_ties && !admissible_tie(judged, test, x, y, ch, bound_of))) {
         ++inadmissible, state[i] = 2;
       } else if (edge[i]) {
         ++edge_bad, state[i] = 1;
@@ -235,7 +260,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   // number grows with the length of the edges (~W) while the pixel count grows as W^2, so a share
   // of all pixels meant a different share of the edges at every size (3.2% of the built-in scene's
   // position edge pixels at 32^2, 41% at 512^2; docs/compare.md, "Edges").
-  double allow_i = m.interior_fraction, allowed_edge_pixels = m.edge_tie_fraction * double(edge_pixels);
+  double allow_i = alternatives_only ? 0.0 : m.interior_fraction,
+         allowed_edge_pixels = alternatives_only ? 0.0 : m.edge_tie_fraction * double(edge_pixels);
   if (is_cone_traced(stage, opt.soft_shadows) && opt.upstream_tie_fraction > 0) {
     // Voxels that legitimately differ (ties) are seen by many cones anywhere in the image, not at
     // edges: allow a proportional share of all pixels, at any value (a tied voxel moves a cone's
@@ -247,7 +273,7 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
     interior_bad += inadmissible;
     inadmissible = 0;
   }
-  v.allowed = edge_bad + interior_bad;
+  v.allowed = edge_bad + interior_bad + alternatives;
   const double fi = double(interior_bad) / n;
   if (inadmissible > 0 || fi > allow_i || double(edge_bad) > allowed_edge_pixels)
     v.verdict = Verdict::Fail;
@@ -258,13 +284,18 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%zu of %zu edge pixels = %.2f%%, %.3f%% interior)",
                 v.out_of_bound, v.checked, edge_bad, edge_pixels, 100 * fe, 100 * fi);
   v.note = buf;
+  if (alternatives)
+    v.note += "; " + std::to_string(alternatives) +
+              " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)";
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
-              " outside the reference's 3x3 range plus the bound (not a value a tie can give)";
+              (alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
+                                 : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},
              {"inadmissible", inadmissible},
+             {"raster_alternatives", alternatives},
              {"mean_abs_reference", mean_abs},
              {"allowed_edge_fraction", edge_pixels ? allowed_edge_pixels / double(edge_pixels) : 0.0},
              {"allowed_interior_fraction", allow_i}};
@@ -823,6 +854,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
   Taint taint, radiance_taint;
   const Image* depth_hint = rs.images.count(st::kGbufferDepth) ? &rs.images.at(st::kGbufferDepth) : nullptr;
   const Image* slack = rs.images.count(st::kGbufferTextureSlack) ? &rs.images.at(st::kGbufferTextureSlack) : nullptr;
+  const Image* tie_range = rs.images.count(st::kGbufferTieRange) ? &rs.images.at(st::kGbufferTieRange) : nullptr;
   for (const std::string& stage : pipeline_order(rs, ts)) {
     const auto ref = find_stage(stage);
     const ToleranceModel model = ref ? ref->row->model : ToleranceModel::None;
@@ -864,7 +896,7 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       if (light_space) stage_opt.depth_quantum = depth_quantum_of(rs);
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
                                                light_space ? nullptr : depth_hint, stage_opt, slack,
-                                               shown.applies_to(stage) ? &shown : nullptr));
+                                               shown.applies_to(stage) ? &shown : nullptr, tie_range));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
     } else {

@@ -36,10 +36,14 @@ Report compare_stage_sets(const StageSet& reference, const StageSet& test, const
 /// space; nullptr = linear.
 /// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
 /// bound of the textured G-buffer stages; nullptr = none (bare images, external references).
+/// `tie_range`: the reference's GBuffer::tie_range (stages/gbuffer_ties.h): a beyond-bound
+/// G-buffer pixel inside the range of the values a correct GL may show there (plus its bound) is
+/// admitted as a raster alternative, at any count (compare/tie_range.h); nullptr = none.
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
                                  const Image* edge_hint, const CompareOptions& opt,
                                  const Image* texture_slack = nullptr,
-                                 const DisplayTransform* display = nullptr);
+                                 const DisplayTransform* display = nullptr,
+                                 const Image* tie_range = nullptr);
 
 /// Two bare volumes, element-wise with abs/rel bound (vct compare A.nrrd B.nrrd).
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs,

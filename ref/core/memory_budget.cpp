@@ -66,14 +66,15 @@ uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
   const uint64_t shadow =
       uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;
-  // G-buffer 21 floats (84 B); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
+  // G-buffer 21 floats (84 B), its texture slack (6 floats, 24 B) and raster-alternative range
+  // (42 floats, 168 B: stages/gbuffer_ties.h); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
   // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
   // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
   // the soft-shadow visibility.
   const size_t declared = parse_declared_cones(v.diffuse_cone_set).size();  // an engine's set, if given
   const uint64_t cones = declared > 0 ? uint64_t(declared) : uint64_t(v.diffuse_cone_count);
   const uint64_t cone_images = 2 * 16 * (v.diffuse_cones ? cones : 0);
-  const uint64_t per_pixel = 84 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
+  const uint64_t per_pixel = 84 + 24 + 168 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
   return shadow + pixels * per_pixel;
 }
 
@@ -90,10 +91,13 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   e.baseline = kProcessBaseline;
   e.voxels = voxel_bytes(v);
   e.images = image_bytes(v, shadow_layers);
-  // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing (21 B/pixel), freed
-  // when the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
+  // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing, facing tie
+  // (22 B/pixel), and while the raster alternatives are found (stages/gbuffer_ties.h) up to two
+  // more (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
+  // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
+  // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images.
-  e.raster_scratch = 21 * uint64_t(v.width) * uint64_t(v.height);
+  e.raster_scratch = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel.
   e.path_tracer = uint64_t(s.pt.width) * uint64_t(s.pt.height) * 16 * 8;
   return e;

@@ -67,7 +67,7 @@ int64_t channel_count(const std::string& v) {
 
 void refuse(const std::string& path, const std::string& what) {
   throw InputError(path, "OpenEXR header: " + what + " (vct reads images up to 16384 per side, 16384 x 16384 x 4 "
-                                                     "values, 16 channels, tiles up to 4096 per side)");
+                                                     "values, 64 channels, tiles up to 4096 per side)");
 }
 
 void check_attribute(const std::string& path, const std::string& name, const std::string& type, const std::string& v,

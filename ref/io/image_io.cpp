@@ -54,7 +54,7 @@ void check_image_size(const std::string& path, const OIIO::ImageSpec& spec) {
   if (w < 1 || h < 1 || c < 1 || w > kMaxImageSide || h > kMaxImageSide || c > kMaxImageChannels ||
       w * h * c > kMaxImageValues)
     throw InputError(path, std::to_string(w) + " x " + std::to_string(h) + " x " + std::to_string(c) +
-                               " channel(s): vct reads images up to 16384 per side, 16 channels and 16384 x "
+                               " channel(s): vct reads images up to 16384 per side, 64 channels and 16384 x "
                                "16384 x 4 values");
 }
 }  // namespace

@@ -4,6 +4,7 @@
 #include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/alpha_ties.h"
+#include "stages/gbuffer_ties.h"
 #include "stages/raster.h"
 #include "stages/texture_slack.h"
 #include "stages/uv_derivatives.h"
@@ -49,7 +50,44 @@ void mark_alpha_ties(const Scene& scene, const mat4& view_proj, const WindowBary
   });
 }
 
+GBufferSample evaluate_pixel(const Scene& scene, const mat4& view_proj, int w, int h, int x, int row, uint32_t tri,
+                             const vec3& bary, float depth, bool front_facing, SurfaceMaterial& m, SurfaceLods& lods) {
+  const SurfacePoint sp = interpolate_surface(scene, tri, bary.y, bary.z);
+  // Texture LOD from the exact screen-space UV derivatives at the pixel centre (GL 4.5 §8.14).
+  lods = pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+  m = evaluate_material(scene, sp, lods.exact);
+  const vec3 n = front_facing ? m.shading_normal : -m.shading_normal;
+  GBufferSample s;
+  float* v = s.values;
+  *v++ = 1.0f;  // coverage
+  *v++ = depth;
+  for (int c = 0; c < 3; ++c) *v++ = sp.position[c];
+  for (int c = 0; c < 3; ++c) *v++ = n[c];
+  for (int c = 0; c < 3; ++c) *v++ = m.albedo[c];
+  *v++ = m.metallic;
+  *v++ = m.roughness;
+  *v++ = m.specular_factor;
+  *v++ = 0.0f;
+  for (int c = 0; c < 3; ++c) *v++ = m.specular_color[c];
+  for (int c = 0; c < 3; ++c) *v++ = m.emission[c];
+  return s;
+}
+
+void write_sample(const GBufferSample& s, int x, int row, GBuffer& g) {
+  const float* v = s.values;
+  Image* images[] = {&g.coverage, &g.depth, &g.position, &g.normal, &g.albedo, &g.material, &g.specular_color, &g.emission};
+  for (Image* im : images)
+    for (int c = 0; c < im->channels; ++c) im->at(x, row, c) = *v++;
+}
+
 }  // namespace
+
+GBufferSample gbuffer_sample(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
+                             uint32_t triangle, const vec3& bary, float depth, bool front_facing) {
+  SurfaceMaterial m;
+  SurfaceLods lods;
+  return evaluate_pixel(scene, view_proj, width, height, x, row, triangle, bary, depth, front_facing, m, lods);
+}
 
 GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
   const int w = settings.width, h = settings.height;
@@ -64,27 +102,16 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       const size_t i = vb.index(x, row);
       if (vb.triangle[i] < 0) continue;
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      const SurfacePoint sp = interpolate_surface(scene, tri, vb.bary[i].y, vb.bary[i].z);
-      // Texture LOD from the exact screen-space UV derivatives at the pixel centre (GL 4.5 §8.14).
-      const SurfaceLods lods =
-          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
-      const SurfaceMaterial m = evaluate_material(scene, sp, lods.exact);
-      const vec3 n = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
-      g.position.set_rgb(x, row, sp.position);
-      g.normal.set_rgb(x, row, n);
-      g.albedo.set_rgb(x, row, m.albedo);
-      float* mat = g.material.pixel(x, row);
-      mat[0] = m.metallic;
-      mat[1] = m.roughness;
-      mat[2] = m.specular_factor;
-      g.specular_color.set_rgb(x, row, m.specular_color);
-      g.emission.set_rgb(x, row, m.emission);
-      g.depth.at(x, row, 0) = vb.depth[i];
-      g.coverage.at(x, row, 0) = 1.0f;
+      SurfaceMaterial m;
+      SurfaceLods lods;
+      const GBufferSample sample =
+          evaluate_pixel(scene, view_proj, w, h, x, row, tri, vb.bary[i], vb.depth[i], vb.front_facing[i] != 0, m, lods);
+      write_sample(sample, x, row, g);
       const vec4 slack = texture_slack(scene, wb, x, row, tri, vb.bary[i], m, lods);
       for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];  // kSlackDirect: later
     }
   });
+  add_tie_ranges(scene, view_proj, vb, g);
   if (scene_has_alpha_test(scene)) mark_alpha_ties(scene, view_proj, wb, g);
   return g;
 }

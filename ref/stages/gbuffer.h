@@ -8,6 +8,20 @@
 
 namespace vct {
 
+/// Every G-buffer stage's value at one pixel centre (the channels of GBuffer's images, in the
+/// order coverage, depth, position, normal, albedo, material, specular colour, emission).
+constexpr int kGbufferSampleValues = 1 + 1 + 3 + 3 + 3 + 4 + 3 + 3;
+struct GBufferSample {
+  float values[kGbufferSampleValues] = {};  // zero coverage, depth 1: an empty pixel
+  GBufferSample() { values[1] = 1.0f; }
+};
+
+/// What the G-buffer holds at image pixel (x, row) (row 0 = top) of a width x height view when
+/// `triangle` covers it with window depth `depth` and perspective-correct barycentrics `bary` at
+/// the centre, facing as given (render_gbuffer's per-pixel evaluation).
+GBufferSample gbuffer_sample(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
+                             uint32_t triangle, const vec3& bary, float depth, bool front_facing);
+
 /// settings.width x settings.height view through scene.camera (projection aspect = width/height).
 /// Normals face the camera: back-facing triangles (clockwise in window space, GL's
 /// gl_FrontFacing == false) get their shading normal negated.

@@ -78,6 +78,7 @@ void emit_triangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
   int64_t area2 = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
   if (area2 == 0) return;  // degenerate after snapping: GL produces no fragments
   t.front_facing = area2 > 0;
+  t.facing_tie = facing_may_flip(t.x, t.y, area2);
   if (area2 < 0) {  // make it counter-clockwise so every edge has the interior on its left
     std::swap(t.x[1], t.x[2]);
     std::swap(t.y[1], t.y[2]);
@@ -100,6 +101,15 @@ void emit_triangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
 }
 
 }  // namespace
+
+bool facing_may_flip(const int64_t x[3], const int64_t y[3], int64_t area2) {
+  int64_t perimeter = 0;  // L1 length of the three edges, in sub-pixel steps
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    perimeter += std::abs(x[j] - x[i]) + std::abs(y[j] - y[i]);
+  }
+  return std::abs(area2) <= perimeter + 8;
+}
 
 const std::vector<vec2>& standard_sample_positions(int samples) {
   static const std::vector<vec2> one = {{0.5f, 0.5f}};
@@ -212,7 +222,7 @@ BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vec
 
 VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
                                    const std::vector<uvec3>& triangles, const mat4& view_proj,
-                                   int width, int height, const Scene* alpha_scene) {
+                                   int width, int height, const Scene* alpha_scene, vec2 sample) {
   const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
   VisibilityBuffer vb;
   vb.width = width;
@@ -222,13 +232,14 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
   vb.triangle.assign(n, -1);
   vb.bary.assign(n, vec3(0.0f));
   vb.front_facing.assign(n, 0);
-  const std::vector<vec2>& centre = standard_sample_positions(1);
+  vb.facing_tie.assign(n, 0);
+  const std::vector<vec2> samples = {sample};
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(height, y0 + kRasterBandRows) - 1;
     for (uint32_t ti : binned.bands[size_t(band)]) {
       const RasterTriangle& t = binned.triangles[ti];
       const bool alpha_tested = alpha_scene && triangle_alpha_tested(*alpha_scene, t.source);
-      rasterize(t, centre, 0, width - 1, y0, y1, [&](const RasterFragment& f) {
+      rasterize(t, samples, 0, width - 1, y0, y1, [&](const RasterFragment& f) {
         const size_t idx = vb.index(f.x, height - 1 - f.y);
         if (!(f.depth < vb.depth[idx])) return;  // GL_LESS
         if (alpha_tested && surface_masked(*alpha_scene, t.source, f.bary.y, f.bary.z)) return;
@@ -236,6 +247,7 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
         vb.triangle[idx] = int32_t(t.source);
         vb.bary[idx] = f.bary;
         vb.front_facing[idx] = t.front_facing ? 1 : 0;
+        vb.facing_tie[idx] = t.facing_tie ? 1 : 0;
       });
     }
   });

@@ -37,6 +37,9 @@ struct RasterTriangle {
   vec3 bary[3];         // barycentrics of each vertex w.r.t. the source triangle (clipping)
   int64_t area2;        // twice the signed area in fixed-point units squared (> 0)
   bool front_facing = true;
+  // The winding may come out the other way in a correct GL: |area2| is within what moving each
+  // snapped vertex coordinate by one sub-pixel step can change (facing_may_flip).
+  bool facing_tie = false;
   int xmin = 0, xmax = -1, ymin = 0, ymax = -1;  // pixel bounding box, clamped to the viewport
   uint32_t source = 0;  // index of the source triangle
 };
@@ -55,6 +58,17 @@ struct RasterFragment {
 /// the centre; 4 and 8 samples: the D3D11/Vulkan standard patterns (what llvmpipe and most GPUs
 /// report through GL_SAMPLE_POSITION). Throws std::invalid_argument for other counts.
 const std::vector<vec2>& standard_sample_positions(int samples);
+
+/// True when a triangle with snapped window coordinates x, y (1/256 pixel) and twice its signed
+/// area `area2` may have the other winding in a correct GL. GL leaves how window coordinates are
+/// computed and rounded to the sub-pixel grid to the implementation (GL 4.5 §14.6.1, "Basic
+/// polygon rasterization", computes the area from window coordinates; GL_SUBPIXEL_BITS only says
+/// how many bits they keep), so each snapped coordinate may be one step off the reference's.
+/// area2 = (x1-x0)(y2-y0) - (y1-y0)(x2-x0) is bilinear in the coordinates: moving every one by at
+/// most 1 changes it by at most P + 8, P = sum over the edges of |dx| + |dy| (the first-order
+/// terms' coefficients are the edges' dx and dy; the two second-order products at most 2*2
+/// each), so the sign may flip iff |area2| <= P + 8 (docs/compare.md, "Raster alternatives").
+bool facing_may_flip(const int64_t x[3], const int64_t y[3], int64_t area2);
 
 /// Clips the clip-space triangle, projects it into a width x height viewport and appends the
 /// resulting triangles (0 if culled/degenerate, more than 1 if clipping split it) to `out`.
@@ -143,6 +157,7 @@ struct VisibilityBuffer {
   std::vector<int32_t> triangle;     // source triangle, -1 where empty
   std::vector<vec3> bary;            // perspective-correct barycentrics of that triangle
   std::vector<uint8_t> front_facing; // 1 if the triangle is front facing (CCW in window space)
+  std::vector<uint8_t> facing_tie;   // 1 if that facing may flip in a correct GL (facing_may_flip)
   size_t index(int x, int row) const { return size_t(row) * size_t(width) + size_t(x); }
 };
 
@@ -150,8 +165,13 @@ struct VisibilityBuffer {
 /// Parallel over bands of rows; each band walks the triangles in index order, so the result does
 /// not depend on the thread count. With `alpha_scene` (whose triangles these are), a fragment that
 /// scene/alpha_mask.h's surface_masked() cuts away is discarded before the depth test writes.
+/// `sample`: the coverage sample's offset in the pixel ([0,1)^2, y up; multiples of 1/256), the
+/// centre by default; depth and barycentrics are always those at the centre (as GL interpolates
+/// at the centre whichever sample is covered), so an offset sample shows which surface a correct
+/// GL whose edges lie that far off the reference's would have kept (stages/gbuffer_ties.h).
 VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
                                    const std::vector<uvec3>& triangles, const mat4& view_proj,
-                                   int width, int height, const Scene* alpha_scene = nullptr);
+                                   int width, int height, const Scene* alpha_scene = nullptr,
+                                   vec2 sample = vec2(0.5f));
 
 }  // namespace vct

@@ -30,6 +30,7 @@ inline constexpr char kGbufferMaterial[] = "gbuffer.material";
 inline constexpr char kGbufferSpecularColor[] = "gbuffer.specular_color";
 inline constexpr char kGbufferEmission[] = "gbuffer.emission";
 inline constexpr char kGbufferTextureSlack[] = "gbuffer.texture_slack";
+inline constexpr char kGbufferTieRange[] = "gbuffer.tie_range";
 inline constexpr char kImageDirect[] = "image.direct";
 inline constexpr char kVoxelOccupancy[] = "voxel.occupancy";
 inline constexpr char kVoxelRadiance[] = "voxel.radiance";

@@ -46,6 +46,10 @@ struct GBuffer {
   // how far its value may move under a 2^-8 pixel sample shift (stages/texture_slack.h); the
   // comparison adds it to those stages' bounds.
   Image texture_slack;
+  // Reference only (empty from GL): per G-buffer stage and channel the range [lo, hi] of the
+  // values a correct GL may show here when its edges or a triangle's facing tie the other way
+  // (stages/gbuffer_ties.h); the comparison admits a value inside it.
+  Image tie_range;
 };
 
 /// Voxel occupancy and radiance at the base level (level 0, N^3).

@@ -34,7 +34,8 @@ std::vector<uint8_t> run_all(const Scene& s, int threads) {
   const auto maps = render_shadow_maps(s, st);
   for (const auto& m : maps) add(m.depth.data);
   const GBuffer g = render_gbuffer(s, st);
-  for (const Image* i : {&g.position, &g.normal, &g.albedo, &g.material, &g.depth, &g.coverage}) add(i->data);
+  for (const Image* i : {&g.position, &g.normal, &g.albedo, &g.material, &g.depth, &g.coverage, &g.texture_slack, &g.tie_range})
+    add(i->data);
   add(shade_direct(s, g, maps, st).data);
   const Voxelization c = voxelize_conservative(s, 32), gp = voxelize_gpu_rule(s, 32, 4);
   add(c.occupancy.data);

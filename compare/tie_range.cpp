@@ -1,0 +1,37 @@
+#include "compare/tie_range.h"
+
+#include <algorithm>
+
+#include "stages/gbuffer_ties.h"
+
+namespace vct::cmp {
+
+namespace {
+int channel_named(const Image& im, const std::string& name) {
+  const auto it = std::find(im.channel_names.begin(), im.channel_names.end(), name);
+  return it == im.channel_names.end() ? -1 : int(it - im.channel_names.begin());
+}
+}  // namespace
+
+TieRangeChannels tie_range_channels(const std::string& stage, const Image& range, int channels) {
+  const std::string prefix = "gbuffer.";
+  TieRangeChannels out;
+  if (stage.compare(0, prefix.size(), prefix) != 0) return out;
+  const std::string group = stage.substr(prefix.size());
+  for (int c = 0; c < channels; ++c) {
+    const int lo = channel_named(range, tie_range_channel_name(group, c, false));
+    const int hi = channel_named(range, tie_range_channel_name(group, c, true));
+    if (lo < 0 || hi < 0) return {};
+    out.lo.push_back(lo);
+    out.hi.push_back(hi);
+  }
+  return out;
+}
+
+bool within_tie_range(const Image& range, const TieRangeChannels& ch, int x, int y, int c, double test,
+                      double bound) {
+  const double lo = range.at(x, y, ch.lo[size_t(c)]), hi = range.at(x, y, ch.hi[size_t(c)]);
+  return test >= lo - bound && test <= hi + bound;
+}
+
+}  // namespace vct::cmp

@@ -1,0 +1,207 @@
+#include "stages/gbuffer_ties.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "scene/alpha_mask.h"
+#include "stages/alpha_ties.h"
+#include "stages/gbuffer.h"
+#include "stages/texture_slack.h"
+
+namespace vct {
+
+namespace {
+
+constexpr int kNormalOffset = 5;  // first normal value in GBufferSample (coverage, depth, position)
+
+// Interleaved lo/hi per value: channel 2k is value k's lower end, 2k + 1 its upper end.
+void widen(Image& range, int x, int row, const GBufferSample& s) {
+  float* p = range.pixel(x, row);
+  for (int k = 0; k < kGbufferSampleValues; ++k) {
+    p[2 * k] = std::min(p[2 * k], s.values[k]);
+    p[2 * k + 1] = std::max(p[2 * k + 1], s.values[k]);
+  }
+}
+
+GBufferSample negated_normal(GBufferSample s) {
+  for (int c = 0; c < 3; ++c) s.values[kNormalOffset + c] = -s.values[kNormalOffset + c];
+  return s;
+}
+
+GBufferSample sample_of(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, int x, int row) {
+  const size_t i = vb.index(x, row);
+  if (vb.triangle[i] < 0) return GBufferSample();
+  return gbuffer_sample(scene, view_proj, vb.width, vb.height, x, row, uint32_t(vb.triangle[i]), vb.bary[i],
+                        vb.depth[i], vb.front_facing[i] != 0);
+}
+
+// The reference's own values at every pixel (lo = hi, read back from the G-buffer's images in
+// GBufferSample order), widened by its facing alternative.
+void start_ranges(const VisibilityBuffer& vb, GBuffer& g) {
+  const Image* images[] = {&g.coverage, &g.depth, &g.position, &g.normal, &g.albedo, &g.material, &g.specular_color, &g.emission};
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x) {
+      GBufferSample own;
+      float* v = own.values;
+      for (const Image* im : images)
+        for (int c = 0; c < im->channels; ++c) *v++ = im->at(x, row, c);
+      float* p = g.tie_range.pixel(x, row);
+      for (int k = 0; k < kGbufferSampleValues; ++k) p[2 * k] = p[2 * k + 1] = own.values[k];
+      if (vb.triangle[vb.index(x, row)] >= 0 && vb.facing_tie[vb.index(x, row)])
+        widen(g.tie_range, x, row, negated_normal(own));
+    }
+  });
+}
+
+constexpr int kPositionOffset = 2;  // first position value in GBufferSample (after coverage, depth)
+
+// The front surface's own position under the snap: its plane's points at the four (+-2^-8,
+// +-2^-8) sample shifts (the texture slack's shifted_surface_points, extrapolated on the plane).
+// A nearly edge-on triangle's position moves far along the view ray under a one-step snap, more
+// than the position model's slope term, taken from the image's 3x3 differences across other
+// surfaces, allows there.
+void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x) {
+      const size_t i = vb.index(x, row);
+      if (vb.triangle[i] < 0) continue;
+      SurfacePoint points[kSlackShifts];
+      const int n = shifted_surface_points(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], points);
+      float* p = g.tie_range.pixel(x, row);
+      for (int k = 0; k < n; ++k)
+        for (int c = 0; c < 3; ++c) {
+          const int v = kPositionOffset + c;
+          p[2 * v] = std::min(p[2 * v], points[k].position[c]);
+          p[2 * v + 1] = std::max(p[2 * v + 1], points[k].position[c]);
+        }
+    }
+  });
+}
+
+// Per pixel, the fragment other than the reference's front one (a different source triangle) whose
+// key is smallest. Depth ties (`depth_ties`): key = depth minus margin, kept when it ties with the
+// front, z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key =
+// depth: the surface behind the front one (or none). Rasterized as render_visibility does (bands,
+// triangles in index order, alpha test), so the result does not depend on the thread count.
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
+                                bool depth_ties) {
+  const int w = front.width, h = front.height;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  std::vector<double> margins(binned.triangles.size());
+  if (depth_ties)
+    for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
+  // The front fragment's margin, found again by its source triangle at the pixel.
+  std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
+  VisibilityBuffer alt;
+  alt.width = w;
+  alt.height = h;
+  alt.depth.assign(front.depth.size(), 1.0f);
+  alt.triangle.assign(front.depth.size(), -1);
+  alt.bary.assign(front.depth.size(), vec3(0.0f));
+  alt.front_facing.assign(front.depth.size(), 0);
+  alt.facing_tie.assign(front.depth.size(), 0);
+  const std::vector<vec2>& centre = standard_sample_positions(1);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
+      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
+        const size_t i = front.index(f.x, h - 1 - f.y);
+        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
+        if (int32_t(t.source) == front.triangle[i]) {
+          front_margin[i] = std::max(front_margin[i], margins[ti]);
+          return;
+        }
+        const double key = double(f.depth) - margins[ti];
+        if (!(key < best[i])) return;
+        best[i] = key;
+        alt.depth[i] = f.depth;
+        alt.triangle[i] = int32_t(t.source);
+        alt.bary[i] = f.bary;
+        alt.front_facing[i] = t.front_facing ? 1 : 0;
+        alt.facing_tie[i] = t.facing_tie ? 1 : 0;
+      });
+    }
+  });
+  if (!depth_ties) return alt;
+  // No tie: the front surface itself (widen_by skips it; -1 would mean an empty pixel).
+  for (size_t i = 0; i < alt.triangle.size(); ++i)
+    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
+      alt.triangle[i] = front.triangle[i];
+  return alt;
+}
+
+void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, const VisibilityBuffer& other,
+              GBuffer& g) {
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x) {
+      const size_t i = vb.index(x, row);
+      if (other.triangle[i] == vb.triangle[i]) continue;  // same surface (or empty) there
+      const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
+      widen(g.tie_range, x, row, alt);
+      if (other.triangle[i] >= 0 && other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+    }
+  });
+}
+
+// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface, masks ignored, may pass or
+// fail its alpha test in a correct GL, the other outcome is admissible: that surface where the
+// reference discarded it, what lies behind it where the reference kept it.
+void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  const int w = vb.width, h = vb.height;
+  const VisibilityBuffer unmasked = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  const VisibilityBuffer behind = other_surfaces(scene, view_proj, vb, false);
+  const WindowBarycentrics wb(view_proj, w, h);
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = vb.index(x, row);
+      const int32_t top = unmasked.triangle[i];
+      if (top < 0 || !alpha_test_may_flip(scene, wb, x, row, uint32_t(top), unmasked.bary[i])) continue;
+      const GBufferSample alt = vb.triangle[i] != top ? sample_of(scene, view_proj, unmasked, x, row)
+                                                      : sample_of(scene, view_proj, behind, x, row);
+      widen(g.tie_range, x, row, alt);
+    }
+  });
+}
+
+}  // namespace
+
+double depth_tie_margin(const RasterTriangle& t) {
+  const EdgeSetup e = edge_setup(t);
+  double dzdx = 0.0, dzdy = 0.0;  // per sub-pixel step
+  for (int i = 0; i < 3; ++i) {
+    dzdx += double(e.a[i]) * t.z[i];
+    dzdy += double(e.b[i]) * t.z[i];
+  }
+  return std::ldexp(1.0, -22) + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
+}
+
+std::string tie_range_channel_name(const std::string& group, int c, bool upper) {
+  return group + "." + std::to_string(c) + (upper ? ".hi" : ".lo");
+}
+
+void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  const int w = vb.width, h = vb.height;
+  g.tie_range = Image(w, h, 2 * kGbufferSampleValues);
+  g.tie_range.channel_names.clear();
+  for (const TieRangeGroup& group : kTieRangeGroups)
+    for (int c = 0; c < group.channels; ++c)
+      for (bool upper : {false, true}) g.tie_range.channel_names.push_back(tie_range_channel_name(group.stage, c, upper));
+  start_ranges(vb, g);
+  widen_by_own_plane(scene, view_proj, vb, g);
+  // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
+  const Scene* alpha_scene = &scene;
+  for (int k = 0; k < 4; ++k) {
+    const float s = float(kRasterTieShift);
+    const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
+    widen_by(scene, view_proj, vb,
+             render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample), g);
+  }
+  widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
+  if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);
+}
+
+}  // namespace vct

@@ -1,0 +1,61 @@
+// Raster alternatives: the values a correct GL may show at a G-buffer pixel besides the
+// reference's own. GL leaves vertex snapping and window coordinates' arithmetic to the
+// implementation (GL 4.5 §14.6.1; GL_SUBPIXEL_BITS only says how many bits are kept), so every
+// snapped coordinate may be one sub-pixel step (2^-8 pixel) off the reference's. That moves each
+// edge by at most what moving the sample by (+-2^-8, +-2^-8) pixel moves it (the edge's normal
+// component of either displacement is at most 2^-8 (|n_x| + |n_y|)), the shift the position
+// model and the texture slack already use; it can also turn a nearly edge-on triangle's winding
+// (raster.h, facing_may_flip), and it moves each triangle's window-depth plane by up to its
+// slope times one step, so two surfaces whose depths at the centre lie that close (a smooth
+// mesh's front- and back-facing triangles meeting at its silhouette, walls crossing) may be
+// ordered either way (depth_tie_margin). Where a shifted sample is covered by another surface (a silhouette
+// through the pixel, two walls meeting in a corner, two surfaces crossing) or by none, a correct
+// GL may show that surface's values at the centre; where the facing may flip, the negated normal.
+// The reference records, per G-buffer stage and channel, the range [lo, hi] of its own value and
+// every such alternative (docs/compare.md, "Raster alternatives"); the comparison admits a value
+// inside that range plus the pixel's bound, as dEQP's verifiers accept any admissible result.
+#pragma once
+
+#include <string>
+
+#include "core/math.h"
+#include "scene/scene.h"
+#include "stages/raster.h"
+#include "stages/stage_types.h"
+
+namespace vct {
+
+/// The four sample shifts (pixels, window axes) whose coverage the alternatives follow.
+constexpr double kRasterTieShift = 1.0 / 256.0;
+
+/// How far a correct GL's window depth of triangle `t` at a pixel centre may lie from the
+/// reference's: its plane moved by one sub-pixel step on each axis, 2^-8 (|dz/dx| + |dz/dy|) per
+/// pixel (the d32f-depth model's slope term; dz/dx = sum a_i z_i / area2 per step), plus 2^-22
+/// for the float evaluation b0 z0 + b1 z1 + b2 z2 and its storage as D32F (three roundings of
+/// values below 1, each at most half an ulp of 1, 2^-24, with room to spare).
+double depth_tie_margin(const RasterTriangle& t);
+
+/// The G-buffer stages the range covers, each with its channel count, in GBufferSample order.
+struct TieRangeGroup {
+  const char* stage;  // stage name without "gbuffer."
+  int channels;
+};
+inline constexpr TieRangeGroup kTieRangeGroups[] = {{"coverage", 1}, {"depth", 1},    {"position", 3},
+                                                    {"normal", 3},   {"albedo", 3},   {"material", 4},
+                                                    {"specular_color", 3}, {"emission", 3}};
+
+/// Name of channel `c` of `group`'s lower ("lo") or upper ("hi") end in GBuffer::tie_range,
+/// e.g. "normal.2.hi" (found by name: EXR files store channels sorted by name).
+std::string tie_range_channel_name(const std::string& group, int c, bool upper);
+
+/// Fills g.tie_range from the reference's visibility `vb` (centre sample) and G-buffer `g`:
+/// widens the position by the front surface's own plane at the four shifts (a nearly edge-on
+/// triangle's position moves along the view ray under a one-step snap), re-rasterizes the scene with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens
+/// each pixel's range by the values of any other front surface (or of an empty pixel) found
+/// there, by the surface whose depth at the centre ties with the front one's (the other
+/// fragment with the smallest depth minus margin, when that is within the front's depth plus
+/// its margin), by the negated normal where a front surface's facing may flip, and, where an
+/// alpha test may go either way (stages/alpha_ties.h), by its other outcome.
+void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
+
+}  // namespace vct

@@ -1,0 +1,188 @@
+// Raster alternatives (stages/gbuffer_ties.h): the values a correct GL may show at a G-buffer
+// pixel when an edge or a triangle's facing ties under 2^-8 pixel vertex snapping.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "alpha_card_scene.h"
+#include "stage_test_scene.h"
+#include "stages/gbuffer.h"
+#include "stages/gbuffer_ties.h"
+#include "stages/raster.h"
+
+namespace vct {
+namespace {
+
+int64_t area2_of(const int64_t x[3], const int64_t y[3]) {
+  return (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+}
+
+// Brute force: does moving each of the six coordinates by -1, 0 or +1 change the area's sign?
+bool some_snap_flips(const int64_t x[3], const int64_t y[3]) {
+  const int64_t a = area2_of(x, y);
+  for (int code = 0; code < 729; ++code) {
+    int64_t px[3], py[3];
+    int c = code;
+    for (int i = 0; i < 3; ++i) {
+      px[i] = x[i] + (c % 3) - 1, c /= 3;
+      py[i] = y[i] + (c % 3) - 1, c /= 3;
+    }
+    const int64_t b = area2_of(px, py);
+    if ((a > 0) != (b > 0) || b == 0) return true;
+  }
+  return false;
+}
+
+TEST(RasterTies, FacingMayFlipHoldsEveryOneStepSnapThatFlips) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(-40, 40);
+  int flips = 0, flagged = 0;
+  for (int n = 0; n < 4000; ++n) {
+    int64_t x[3], y[3];
+    for (int i = 0; i < 3; ++i) x[i] = coord(rng), y[i] = coord(rng);
+    const int64_t a = area2_of(x, y);
+    if (a == 0) continue;  // degenerate after snapping: no fragments
+    const bool flips_here = some_snap_flips(x, y);
+    const bool flag = facing_may_flip(x, y, a);
+    if (flips_here) EXPECT_TRUE(flag) << x[0] << "," << y[0] << " " << x[1] << "," << y[1] << " " << x[2] << "," << y[2];
+    flips += flips_here;
+    flagged += flag;
+  }
+  EXPECT_GT(flips, 20);  // the sample holds slivers, so the check above is exercised
+  EXPECT_LT(flagged, 1000);  // and most triangles keep their facing
+}
+
+TEST(RasterTies, FacingMayFlipIsTheAreaAgainstThePerimeterPlusEight) {
+  // (0,0) (10,0) (0,10): P = 10 + 20 + 10 = 40; the bound is |area2| <= 48.
+  const int64_t x[3] = {0, 10, 0}, y[3] = {0, 0, 10};
+  EXPECT_FALSE(facing_may_flip(x, y, 100));  // the triangle's own area
+  EXPECT_TRUE(facing_may_flip(x, y, 48));
+  EXPECT_FALSE(facing_may_flip(x, y, 49));
+  EXPECT_TRUE(facing_may_flip(x, y, -48));
+}
+
+// Camera at the origin looking down -z, yfov 1, 16 x 12 pixels: one pixel is 2 tan(0.5) * d / 12
+// world units at depth d on both axes.
+constexpr int kW = 16, kH = 12;
+float pixel_world(float depth) { return 2.0f * std::tan(0.5f) * depth / float(kH); }
+// World x (at depth d) of the centre of pixel column `col`, and y of window row `wy` (y up).
+float column_x(int col, float depth) { return (float(col) + 0.5f - 0.5f * kW) * pixel_world(depth); }
+float window_row_y(float wy, float depth) { return (wy - 0.5f * kH) * pixel_world(depth); }
+
+Scene camera_scene() {
+  Scene s;
+  s.camera.position = vec3(0.0f);
+  s.camera.forward = vec3(0, 0, -1);
+  s.camera.yfov = 1.0f;
+  s.camera.znear = 0.5f;
+  s.camera.zfar = 10.0f;
+  return s;
+}
+
+int channel(const Image& im, const std::string& name) {
+  for (size_t c = 0; c < im.channel_names.size(); ++c)
+    if (im.channel_names[c] == name) return int(c);
+  return -1;
+}
+
+GBuffer render(Scene& s) {
+  s.volume = fit_volume(s.bounds);
+  VctSettings st;
+  st.width = kW;
+  st.height = kH;
+  return render_gbuffer(s, st);
+}
+
+TEST(RasterTies, SilhouetteThroughAPixelCentreAdmitsTheSurfaceBehind) {
+  Scene s = camera_scene();
+  const uint32_t blue = test::add_material(s, vec3(0.1f, 0.2f, 0.9f));
+  const uint32_t red = test::add_material(s, vec3(0.9f, 0.1f, 0.1f));
+  // Front quad at z = -2 whose right edge runs through the centres of pixel column 10; a red wall
+  // at z = -4 behind everything.
+  const float edge = column_x(10, 2.0f);
+  test::add_quad(s, {-3, -3, -2}, {edge, -3, -2}, {edge, 3, -2}, {-3, 3, -2}, {0, 0, 1}, blue);
+  test::add_quad(s, {-9, -9, -4}, {9, -9, -4}, {9, 9, -4}, {-9, 9, -4}, {0, 0, 1}, red);
+  const GBuffer g = render(s);
+  ASSERT_EQ(g.tie_range.channels, 42);  // 21 G-buffer values, lo and hi
+  const int r_lo = channel(g.tie_range, "albedo.0.lo"), r_hi = channel(g.tie_range, "albedo.0.hi");
+  const int z_lo = channel(g.tie_range, "position.2.lo"), z_hi = channel(g.tie_range, "position.2.hi");
+  ASSERT_GE(r_lo, 0);
+  ASSERT_GE(z_hi, 0);
+  for (int row = 1; row < kH - 1; ++row) {
+    // On the edge: the red wall's values (albedo 0.9, z = -4) and the blue quad's (0.1, z = -2)
+    // are both admissible, whichever the reference shows.
+    EXPECT_FLOAT_EQ(g.tie_range.at(10, row, r_lo), 0.1f) << row;
+    EXPECT_FLOAT_EQ(g.tie_range.at(10, row, r_hi), 0.9f) << row;
+    EXPECT_NEAR(g.tie_range.at(10, row, z_lo), -4.0f, 1e-4f) << row;
+    EXPECT_NEAR(g.tie_range.at(10, row, z_hi), -2.0f, 1e-4f) << row;
+    // One column off the edge (half a pixel from it, 128 sub-pixel steps): only the quads' own
+    // diagonals may be crossed there, which show the same plane and material (float rounding);
+    // the position spans its own plane at the (+-2^-8, +-2^-8) shifts: 2 x 2^-8 pixel in x and y
+    // (the quad at depth 2 left of the edge, the wall at depth 4 right of it).
+    const int x_lo = channel(g.tie_range, "position.0.lo"), y_lo = channel(g.tie_range, "position.1.lo");
+    for (int x : {5, 9, 11})
+      for (int c = 0; c < g.tie_range.channels; c += 2) {
+        const float shift_span = 2.0f * pixel_world(x < 10 ? 2.0f : 4.0f) / 256.0f;
+        const float span = g.tie_range.at(x, row, c + 1) - g.tie_range.at(x, row, c);
+        if (c == x_lo || c == y_lo) EXPECT_NEAR(span, shift_span, 1e-5f) << x << "," << row << " " << c;
+        else EXPECT_NEAR(span, 0.0f, 1e-5f) << x << "," << row << " " << c;
+      }
+  }
+}
+
+TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
+  Scene s = camera_scene();
+  const uint32_t grey = test::add_material(s, vec3(0.5f));
+  const uint32_t green = test::add_material(s, vec3(0.1f, 0.8f, 0.1f));
+  test::add_quad(s, {-9, -9, -4}, {9, -9, -4}, {9, 9, -4}, {-9, 9, -4}, {0, 0, 1}, grey);
+  // A sliver at z = -2 two sub-pixel steps high at its right end, along window row 6.5 (the
+  // centres of image row 5): twice its window area (~ 1700 x 2 steps^2) is below its L1
+  // perimeter (~ 3400 steps) + 8, so one step of snapping on a vertex can turn it over.
+  const float step = pixel_world(2.0f) / 256.0f, yc = window_row_y(6.5f, 2.0f);
+  test::add_triangle(s, {-0.6f, yc - step, -2}, {0.6f, yc - step, -2}, {0.6f, yc + step, -2}, green);
+  const GBuffer g = render(s);
+  const int n_lo = channel(g.tie_range, "normal.2.lo"), n_hi = channel(g.tie_range, "normal.2.hi");
+  ASSERT_GE(n_lo, 0);
+  int sliver_pixels = 0;
+  for (int x = 0; x < kW; ++x) {
+    if (g.albedo.at(x, 5, 1) != 0.8f) continue;  // not the sliver
+    ++sliver_pixels;
+    EXPECT_EQ(g.normal.at(x, 5, 2), 1.0f);  // faces the camera
+    EXPECT_EQ(g.tie_range.at(x, 5, n_lo), -1.0f) << x;
+    EXPECT_EQ(g.tie_range.at(x, 5, n_hi), 1.0f) << x;
+  }
+  EXPECT_GE(sliver_pixels, 2);
+  // The wall two rows down keeps its facing: lo = hi = +1.
+  EXPECT_EQ(g.tie_range.at(3, 8, n_lo), 1.0f);
+  EXPECT_EQ(g.tie_range.at(3, 8, n_hi), 1.0f);
+}
+
+}  // namespace
+}  // namespace vct
+
+namespace vct {
+namespace {
+
+TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
+  // The half-masked card (alpha_card_scene.h): alpha = cutoff exactly on x = 0, which an odd
+  // image width puts on the centre column's pixel centres; the backdrop (albedo 0.8) behind.
+  Scene s = test::half_masked_card(true);
+  VctSettings st;
+  st.width = st.height = 33;
+  const GBuffer g = render_gbuffer(s, st);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  const float card = g.albedo.at(24, 16, 0), backdrop = g.albedo.at(2, 16, 0);
+  ASSERT_NEAR(backdrop, 0.8f, 1e-6f);
+  ASSERT_LT(card, 0.5f);  // the card's grey texel, decoded from sRGB
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LE(g.tie_range.at(16, row, lo), card + 1e-5f) << row;  // the same grey texel, filtered
+    EXPECT_GE(g.tie_range.at(16, row, hi), backdrop) << row;
+    // Two columns away the alpha is 2 pixels' worth from the cutoff: one outcome only.
+    EXPECT_EQ(g.tie_range.at(18, row, lo), g.tie_range.at(18, row, hi)) << row;
+    EXPECT_EQ(g.tie_range.at(14, row, lo), g.tie_range.at(14, row, hi)) << row;
+  }
+}
+
+}  // namespace
+}  // namespace vct
