@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -111,6 +113,47 @@ TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
+}
+
+// What a backend refuses fails before the run directory is created (ref/io/run_dir.h): one line,
+// exit 2, and no directory (no INCOMPLETE left to tell from a killed run). The GL refusals are
+// found without a context (gl::check_gl_accepts), so this runs on machines without a GL driver.
+TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
+  const std::filesystem::path config = test::temp_dir() / "depth16.json";
+  std::ofstream(config) << R"({"vct": {"shadow_depth_format": "depth16"}})";
+  const std::string cfg = " --config '" + config.string() + "' ";
+  struct Case {
+    std::string args, needle;
+  };
+  const std::vector<Case> cases = {
+      {"render --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+      {"render --backend gl --explain 1,1", "--explain: needs --backend ref"},
+      {"render --backend gl --gl-device -1", "--gl-device: device index must be 0 or more"},
+      {"render --backend gl --gl-fault nosuchfault", "unknown GL fault"},
+      {"validate --no-report --spp 1" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+      {"validate --no-report --spp 1 --sweep shadow_depth_format=depth32f,depth16",
+       "settings: the GL backend runs the pcf_kernel square"},
+      {"metamorphic --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+  };
+  bool no_gl_build = false;
+  for (const Case& c : cases) {
+    // Without GL, validate records the GL frame as unavailable and runs on: nothing refused.
+    if (no_gl_build && c.args.rfind("validate", 0) == 0) continue;
+    const std::filesystem::path out = test::temp_dir() / "refused_run";
+    std::filesystem::remove_all(out);
+    const Result r = vct(c.args + " " + kSmall + " --out '" + out.string() + "'");
+    // A build without GL (VCT_BUILD_GL=OFF) refuses every GL frame as unavailable, exit 3.
+    no_gl_build = no_gl_build || r.err.find("GL backend not built") != std::string::npos;
+    EXPECT_EQ(r.exit_code, no_gl_build ? 3 : 2) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+    if (!no_gl_build) EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.args << " left its run directory behind";
+  }
+  // The reference runs the same setting.
+  const std::filesystem::path out = test::temp_dir() / "ref_depth16";
+  const Result ok = vct("render --backend ref" + cfg + kSmall + " --out '" + out.string() + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(out / "final.exr"));
 }
 
 }  // namespace
