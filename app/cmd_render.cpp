@@ -1,6 +1,7 @@
 // vct render SCENE --backend ref|gl: one VCT frame. Always writes final.exr/final.png and
 // run.json (settings, environment, timings, scene summary, multibounce energy); --dump writes
-// every stage through the shared dump writer; --explain X,Y writes one pixel's cones.
+// every stage through the shared dump writer and vct-stages.json over it (compare/dump_manifest.h,
+// so `vct compare` reads a dumped run); --explain X,Y writes one pixel's cones.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "compare/dump_manifest.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/memory_budget.h"
@@ -229,6 +231,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   if (flags.dump) {
     write_frame_dumps(run, frame, scene);
     write_ref_extras(run, frame, scene, settings.vct);
+    cmp::write_dump_manifest(run.path(), frame, settings.vct);  // a dumped run is a stage set too
   }
   if (flags.stage_set) {
     cmp::StageSet set = cmp::stage_set_from_frame(frame, settings.vct);

@@ -102,6 +102,38 @@ TEST(RenderCli, ConeCountAndTiltReachDumpsAndExplain) {
   EXPECT_NEAR(ex["cones"][1]["weight"].get<double>(), 0.1, 1e-7);
 }
 
+// A dumped run is a stage set (compare/dump_manifest.h): its vct-stages.json lists the stages
+// --stage-set writes, pointing at the dumped files, and `vct compare` judges it against another
+// run. Two bounces, so the dumped base level (the marcher's mip level 0) is not the reduction's
+// output the stage holds: that stage must come from stage_files/, byte for byte the --stage-set one.
+TEST(RenderCli, DumpedRunIsAStageSetCompareReads) {
+  namespace fs = std::filesystem;
+  const fs::path dump = test::temp_dir() / "dumped_run", set = test::temp_dir() / "stage_set_run";
+  const std::string args = std::string("render ") + kSmall + " --bounces 2 --out '";
+  ASSERT_EQ(vct(args + dump.string() + "' --dump").exit_code, 0);
+  ASSERT_EQ(vct(args + set.string() + "' --stage-set").exit_code, 0);
+  const nlohmann::json dumped = nlohmann::json::parse(slurp((dump / "vct-stages.json").string()));
+  const nlohmann::json written = nlohmann::json::parse(slurp((set / "stages" / "vct-stages.json").string()));
+  ASSERT_EQ(dumped["stages"].size(), written["stages"].size());
+  for (const auto& [name, e] : written["stages"].items()) {
+    ASSERT_TRUE(dumped["stages"].contains(name)) << name;
+    EXPECT_EQ(dumped["stages"][name]["kind"], e["kind"]) << name;
+    EXPECT_TRUE(fs::exists(dump / dumped["stages"][name]["file"].get<std::string>())) << name;
+  }
+  EXPECT_EQ(dumped["backend"], "ref");
+  EXPECT_EQ(dumped["stages"]["image.final"]["file"], "final.exr");  // the dump's own file
+  EXPECT_EQ(dumped["stages"]["voxel.radiance"]["file"], "stage_files/voxel_radiance.nrrd");
+  EXPECT_EQ(slurp((dump / "stage_files" / "voxel_radiance.nrrd").string()),
+            slurp((set / "stages" / "voxel_radiance.nrrd").string()));
+  // The same deterministic frame twice: every stage passes.
+  const fs::path cmp = test::temp_dir() / "dumped_compare";
+  const Result c = vct("compare '" + dump.string() + "' '" + (set / "stages").string() + "' --out '" + cmp.string() + "'");
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  const nlohmann::json verdicts = nlohmann::json::parse(slurp((cmp / "compare.json").string()))["verdicts"];
+  EXPECT_EQ(verdicts["overall"], "pass");
+  EXPECT_GE(verdicts["stages"].size(), 20u);
+}
+
 TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
   const std::string out = " --out '" + (test::temp_dir() / "render_bad").string() + "'";
   for (const std::string& args : {std::string("render --explain 5") + out, std::string("render --light-model nope") + out,
