@@ -1,8 +1,10 @@
 // vct bench [SCENE]: per-stage times of the CPU reference and the GL build side by side (median
 // of --repeat frames) with CPU/GL ratios, and the path tracer's rays/s against raw Embree
 // rtcIntersect1 on the same scene. Defaults: built-in scene, 128^3 grid, 512x512 (the settings'
-// defaults). --out DIR writes DIR/bench.json atomically. Prints; exit code 0 unless input is bad.
+// defaults). --out DIR writes DIR/bench.json atomically
+// (a run directory: locked, INCOMPLETE until done). Prints; exit code 0 unless input is bad.
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <filesystem>
 #include <string>
@@ -12,6 +14,7 @@
 #include "core/error.h"
 #include "core/memory_budget.h"
 #include "io/atomic_file.h"
+#include "io/run_dir.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
 #include "scene_warnings.h"
@@ -42,12 +45,21 @@ void run(const BenchFlags& f) {
   if (f.common.height) o.validate_args += " --height " + std::to_string(*f.common.height);
   if (f.common.grid) o.validate_args += " --grid " + std::to_string(*f.common.grid);
   if (f.validate_spp) o.validate_args += " --spp " + std::to_string(*f.validate_spp);
+  // --out is a run directory (ref/io/run_dir.h): locked for the whole measurement, so a second
+  // bench into it is refused at once; INCOMPLETE until bench.json is written.
+  std::unique_ptr<RunDir> run;
+  if (!f.common.out.empty()) {
+    run = std::make_unique<RunDir>(f.common.out, RunRole::Run);
+    run->json()["command"] = "bench";
+    run->json()["environment"] = environment_info();
+  }
   const nlohmann::json result = run_bench(scene, settings, o);
   std::fputs(format_bench(result).c_str(), stdout);
-  if (!f.common.out.empty()) {
-    std::filesystem::create_directories(f.common.out);
-    const std::string path = (std::filesystem::path(f.common.out) / "bench.json").string();
+  if (run) {
+    const std::string path = run->file("bench.json");
     write_text_atomically(path, result.dump(1) + "\n");
+    run->json()["bench"] = "bench.json";
+    run->finish();
     std::printf("\nwrote %s\n", path.c_str());
   }
 }

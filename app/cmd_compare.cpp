@@ -2,9 +2,11 @@
 // vct-stages.json, ours or an external renderer's: docs/external_format.md), a validate run
 // directory (A's ref/ against B's gl/), an image (.exr .png .hdr ...) or a volume (.nrrd).
 // With --scene, stage sets' cone-traced stages are judged on B's own inputs, as vct validate does.
+// --out DIR is a run directory (locked, INCOMPLETE until done: ref/io/run_dir.h).
 // Exit: 0 pass or warn, 1 fail, 2 bad input.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "commands.h"
 #include "compare_scene.h"
@@ -19,6 +21,7 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
+#include "io/run_dir.h"
 #include "stages/stage_registry.h"
 #include "verdict_summary.h"
 
@@ -46,15 +49,34 @@ std::string stage_dir(const std::string& path, const char* side) {
 
 bool is_volume(const std::string& p) { return fs::path(p).extension() == ".nrrd"; }
 
-int finish(const cmp::Report& rep, const CompareArgs& a, const std::string& title,
+// --out is a run directory like every command's (ref/io/run_dir.h): locked while compare writes
+// it, INCOMPLETE until compare.json is written. Opened only once every input has been read, so
+// bad input leaves no directory behind. A run.json already there (compare --out into a validate
+// run) keeps its sections.
+std::unique_ptr<RunDir> open_out_run(const CompareArgs& a) {
+  if (a.out.empty()) return nullptr;
+  auto run = std::make_unique<RunDir>(a.out, RunRole::Run);
+  run->keep_existing_json();
+  if (!run->json().contains("command")) run->json()["command"] = "compare";
+  return run;
+}
+
+int finish(const cmp::Report& rep, const CompareArgs& a, RunDir* run, const std::string& title,
            const nlohmann::json& fields = nlohmann::json::object()) {
   print_verdicts(rep, title);
-  if (!a.out.empty()) {
+  if (run) {
     nlohmann::json j = {{"reference", a.a}, {"test", a.b}, {"verdicts", cmp::to_json(rep)}};
     j.update(fields);
-    write_text_atomically((fs::path(a.out) / "compare.json").string(), j.dump(2) + "\n");
+    write_text_atomically(run->file("compare.json"), j.dump(2) + "\n");
+    run->json()["compare"] = {{"reference", a.a}, {"test", a.b}, {"overall", cmp::to_string(rep.overall())},
+                              {"file", "compare.json"}};
+    run->finish();
   }
   return rep.overall() == cmp::Verdict::Fail ? kExitFailed : kExitOk;
+}
+
+cmp::CompareOptions compare_options(const CompareArgs& a) {
+  return {a.worst, a.out.empty() ? "" : a.out + "/masks", "masks/"};
 }
 
 bool has_cone_stage(const cmp::Report& rep, bool soft_shadows) {
@@ -65,58 +87,66 @@ bool has_cone_stage(const cmp::Report& rep, bool soft_shadows) {
 
 // Every input of the isolated judgement is loaded and checked before the first comparison, so
 // bad input writes neither masks nor compare.json.
-int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const CompareArgs& a,
-                 const cmp::CompareOptions& opt) {
+int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const CompareArgs& a) {
   const std::string title = test.backend + " vs " + ref.backend;
+  const cmp::CompareOptions opt = compare_options(a);
   if (a.scene.empty()) {
+    const std::unique_ptr<RunDir> run = open_out_run(a);
     cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
     note_driver_facts(rep, test.facts, ref.facts);
-    const int code = finish(rep, a, title, {{"cone_stages", "end_to_end"}});
+    const int code = finish(rep, a, run.get(), title, {{"cone_stages", "end_to_end"}});
     if (has_cone_stage(rep, cmp::soft_shadows_of(ref) || cmp::soft_shadows_of(test)))
       std::printf("cone stages were judged end to end (an upstream voxel tie changes every cone through it); "
                   "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
     return code;
   }
   const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load, &ref);
+  const std::unique_ptr<RunDir> run = open_out_run(a);
   cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
   cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
   note_driver_facts(rep, test.facts, ref.facts);
-  const int code = finish(rep, a, title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
+  const int code = finish(rep, a, run.get(), title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
   std::printf("cone stages were judged on B's own G-buffer, direct light and mips, re-traced in %s\n",
               in.scene.source.c_str());
   return code;
+}
+
+int compare_volumes(const CompareArgs& a) {
+  const Volume r = read_nrrd(a.a), t = read_nrrd(a.b);
+  const std::unique_ptr<RunDir> run = open_out_run(a);
+  cmp::Report rep;
+  rep.stages.push_back(cmp::compare_volume_plain("volume", r, t, a.abs, a.rel, compare_options(a)));
+  return finish(rep, a, run.get(), "compare");
+}
+
+int compare_images(const CompareArgs& a) {
+  const Image r = read_image(a.a), t = read_image(a.b);
+  if (r.width != t.width || r.height != t.height)
+    throw InputError(a.b, "size " + std::to_string(t.width) + "x" + std::to_string(t.height) + " differs from " +
+                              a.a + " (" + std::to_string(r.width) + "x" + std::to_string(r.height) + ")");
+  const std::unique_ptr<RunDir> run = open_out_run(a);
+  cmp::Report rep;
+  rep.stages.push_back(cmp::compare_image_stage(a.stage, r, t, nullptr, compare_options(a)));
+  const cmp::ImageMetrics m = cmp::image_metrics(t, r);
+  std::printf("metrics (reference = %s): MSE %.4g  relMSE %.4g (eps %.2g)  mean bias %+.4g  max|d| %.4g  SSIM %.4f\n",
+              a.a.c_str(), m.mse, m.rel_mse, m.rel_mse_epsilon, m.mean_bias, m.max_abs, m.ssim);
+  rep.stages.back().extra["metrics"] = {{"mse", m.mse}, {"rel_mse", m.rel_mse}, {"rel_mse_epsilon", m.rel_mse_epsilon},
+                                        {"mean_bias", m.mean_bias}, {"max_abs", m.max_abs}, {"ssim", m.ssim}};
+  return finish(rep, a, run.get(), "compare");
 }
 
 int run(const CompareArgs& a) {
   if (!a.config.empty() && a.scene.empty()) throw InputError("--config", "is only used with --scene");
   for (const auto& p : {a.a, a.b})
     if (!fs::exists(p)) throw InputError(p, "no such file or directory");
-  if (!a.out.empty()) fs::create_directories(a.out);
-  const cmp::CompareOptions opt{a.worst, a.out.empty() ? "" : a.out + "/masks", "masks/"};
   if (fs::is_directory(a.a) || fs::is_directory(a.b) || fs::path(a.a).extension() == ".json") {
     const cmp::StageSet ref = cmp::read_stage_set(stage_dir(a.a, "ref"));
     const cmp::StageSet test = cmp::read_stage_set(stage_dir(a.b, "gl"));
-    return compare_sets(ref, test, a, opt);
+    return compare_sets(ref, test, a);
   }
   if (!a.scene.empty()) throw InputError("--scene", "applies to stage sets only, not to two images or volumes");
-  cmp::Report rep;
   if (is_volume(a.a) != is_volume(a.b)) throw InputError(a.b, "cannot compare an image with a volume");
-  if (is_volume(a.a)) {
-    const Volume r = read_nrrd(a.a), t = read_nrrd(a.b);
-    rep.stages.push_back(cmp::compare_volume_plain("volume", r, t, a.abs, a.rel, opt));
-  } else {
-    const Image r = read_image(a.a), t = read_image(a.b);
-    if (r.width != t.width || r.height != t.height)
-      throw InputError(a.b, "size " + std::to_string(t.width) + "x" + std::to_string(t.height) + " differs from " +
-                                a.a + " (" + std::to_string(r.width) + "x" + std::to_string(r.height) + ")");
-    rep.stages.push_back(cmp::compare_image_stage(a.stage, r, t, nullptr, opt));
-    const cmp::ImageMetrics m = cmp::image_metrics(t, r);
-    std::printf("metrics (reference = %s): MSE %.4g  relMSE %.4g (eps %.2g)  mean bias %+.4g  max|d| %.4g  SSIM %.4f\n",
-                a.a.c_str(), m.mse, m.rel_mse, m.rel_mse_epsilon, m.mean_bias, m.max_abs, m.ssim);
-    rep.stages.back().extra["metrics"] = {{"mse", m.mse}, {"rel_mse", m.rel_mse}, {"rel_mse_epsilon", m.rel_mse_epsilon},
-                                          {"mean_bias", m.mean_bias}, {"max_abs", m.max_abs}, {"ssim", m.ssim}};
-  }
-  return finish(rep, a, "compare");
+  return is_volume(a.a) ? compare_volumes(a) : compare_images(a);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "options.h"
 #include "scene/gltf_loader.h"
 #include "stages/pipeline.h"
+#include "validate_run.h"
 #include "verdict_summary.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
@@ -91,6 +92,7 @@ int run_metamorphic_command(const std::string& scene_path, const CommonOptions& 
   const Settings settings = resolve_settings(common, metamorphic_defaults());
   cmp::check_relation_names(flags.only);
   const Scene scene = load_scene(scene_path, common.scene_load);
+  if (flags.backend == "gl") check_gl_backend_accepts(scene, settings, flags.gl);  // before the run directory
   const cmp::FrameRenderer render = make_renderer(flags);  // bad fault names and no GL fail here
   RunDir run(common.out.empty() ? default_out_dir("metamorphic", scene_path) : common.out,
              RunRole::Run);

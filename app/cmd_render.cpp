@@ -1,15 +1,19 @@
 // vct render SCENE --backend ref|gl: one VCT frame. Always writes final.exr/final.png and
 // run.json (settings, environment, timings, scene summary, multibounce energy); --dump writes
-// every stage through the shared dump writer; --explain X,Y writes one pixel's cones.
+// every stage through the shared dump writer and vct-stages.json over it (compare/dump_manifest.h,
+// so `vct compare` reads a dumped run); --explain X,Y writes one pixel's cones.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "compare/dump_manifest.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/memory_budget.h"
@@ -25,6 +29,7 @@
 #include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
+#include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
 #endif
 
@@ -143,13 +148,21 @@ ivec2 parse_pixel(const std::string& text) {
   return ivec2(x, y);
 }
 
-FrameResult render_frame(const Scene& scene, const Settings& s, const VctFlags& flags) {
+// The backend's frame, ready to run. Whatever the backend refuses (--explain off the reference,
+// a setting only the reference runs, a GL device that does not exist, no GL at all) is refused
+// here, before the run directory exists, so a refused render leaves no INCOMPLETE directory.
+std::function<FrameResult()> prepare_frame(const Scene& scene, const Settings& s, const VctFlags& flags) {
+  if (!flags.explain.empty() && flags.backend != "ref")
+    throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");
   if (flags.backend == "ref") {
     const std::vector<vec2> positions = flags.facts_from.empty() ? std::vector<vec2>{} : read_facts(flags.facts_from).sample_positions;
-    return render_ref_frame(scene, s, positions);
+    return [&scene, &s, positions] { return render_ref_frame(scene, s, positions); };
   }
 #ifdef VCT_HAVE_GL
-  return vct::gl::render_gl_frame(scene, s, {flags.gl.device, flags.gl.fault});
+  const vct::gl::GlOptions options{flags.gl.device, flags.gl.fault};
+  vct::gl::check_gl_accepts(scene, s, options);
+  auto context = std::make_shared<vct::gl::GlContext>(options.device);  // a missing device fails here
+  return [&scene, &s, context, options] { return vct::gl::render_gl_frame(*context, scene, s, options); };
 #else
   throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");
 #endif
@@ -199,9 +212,10 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   }
   const Scene scene = load_scene_and_warn(scene_path, common.scene_load);
   if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
+  const std::function<FrameResult()> render_frame = prepare_frame(scene, settings, flags);
   // Locked before rendering, so a second process writing the same --out is refused at once.
   RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);
-  const FrameResult frame = render_frame(scene, settings, flags);
+  const FrameResult frame = render_frame();
   if (frame.images.final_image.empty()) throw EnvironmentError("backend '" + flags.backend + "' produced no frame");
   run.json()["command"] = "render";
   run.json()["backend"] = frame.backend;
@@ -217,13 +231,13 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   if (flags.dump) {
     write_frame_dumps(run, frame, scene);
     write_ref_extras(run, frame, scene, settings.vct);
+    cmp::write_dump_manifest(run.path(), frame, settings.vct);  // a dumped run is a stage set too
   }
   if (flags.stage_set) {
     cmp::StageSet set = cmp::stage_set_from_frame(frame, settings.vct);
     cmp::write_stage_set(run.file("stages"), set);
   }
   if (explain) {
-    if (frame.backend != "ref") throw InputError("--explain", "needs --backend ref (it re-traces the CPU cones)");
     write_explain(run, scene, frame, settings.vct, *explain);
   }
   // Predicted up front (validate_settings refuses what cannot fit) beside what the run used.

@@ -67,6 +67,14 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& 
   return r;
 }
 
+void check_gl_backend_accepts(const Scene& scene, const Settings& s, const GlFlags& flags) {
+#ifdef VCT_HAVE_GL
+  gl::check_gl_accepts(scene, s, {flags.device, flags.fault});
+#else
+  (void)scene, (void)s, (void)flags;
+#endif
+}
+
 Settings settings_as_run_by_gl(const Settings& s, const BackendRun& gl) {
   Settings out = s;
   if (!gl.ok()) return out;

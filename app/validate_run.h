@@ -37,6 +37,10 @@ struct PtRun {
 /// empty = the standard pattern of s.vct.msaa_samples.
 BackendRun run_ref_backend(const Scene& scene, const Settings& s, const std::vector<vec2>& sample_positions = {});
 BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& flags = {});
+/// InputError for what run_gl_backend would refuse as bad input (gl::check_gl_accepts), so a
+/// command refuses it before creating its run directory. Without the GL build: nothing (the GL
+/// frame is then recorded as unavailable, not refused).
+void check_gl_backend_accepts(const Scene& scene, const Settings& s, const GlFlags& flags);
 /// The settings the GL run actually used: a driver may clamp the MSAA sample count (llvmpipe
 /// allows 4), and the CPU reference must then emulate the same coverage rule, or every voxel
 /// stage differs for a reason that is not a GPU bug. Unchanged when GL did not run.

@@ -28,7 +28,7 @@ std::string reduction_name(Reduction r) {
   return "exact_mean";
 }
 
-StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
+StageSet stage_set_header(const FrameResult& f, const VctSettings& s) {
   StageSet set;
   set.backend = f.backend;
   set.storage = storage_name(s.storage);
@@ -38,12 +38,17 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   set.facts = f.facts;
   // A backend may substitute a reduction (GL has no exact float mean: its facts say so).
   if (!f.facts.reduction.empty()) set.reduction = f.facts.reduction;
+  if (!f.multibounce_energy.empty()) set.info["multibounce_energy"] = f.multibounce_energy;
+  return set;
+}
+
+StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
+  StageSet set = stage_set_header(f, s);
   for (const StageRow& row : stage_rows())
     for (int i : frame_members(f, row)) {
       if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = *frame_image(f, row, i);
       else set.volumes[stage_name(row, i)] = *frame_volume(f, row, i);
     }
-  if (!f.multibounce_energy.empty()) set.info["multibounce_energy"] = f.multibounce_energy;
   return set;
 }
 
@@ -84,12 +89,16 @@ void write_stage_set(const std::string& dir, StageSet& set) {
     set.files[name] = stem + ".nrrd";
     stages[name] = {{"file", stem + ".nrrd"}, {"kind", "volume"}, {"preview", stem + ".png"}};
   }
+  write_text_atomically(rd.file("vct-stages.json"), stage_set_manifest(set, stages).dump(2) + "\n");
+}
+
+nlohmann::json stage_set_manifest(const StageSet& set, const nlohmann::json& stages) {
   nlohmann::json m = {{"format", "vct-stages"}, {"version", 1},          {"backend", set.backend},
                       {"storage", set.storage}, {"reduction", set.reduction}, {"settings", set.settings},
                       {"info", set.info},       {"stages", stages}};
   if (!set.facts.empty()) m["facts"] = set.facts;
   if (!set.conventions.empty()) m["conventions"] = to_json(set.conventions);
-  write_text_atomically(rd.file("vct-stages.json"), m.dump(2) + "\n");
+  return m;
 }
 
 namespace {

@@ -38,8 +38,14 @@ struct StageSet {
 /// Every stage of one frame under its canonical name (docs/external_format.md lists them).
 StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s);
 
+/// A frame's stage set without its stages: backend, storage, reduction, settings, info, facts.
+StageSet stage_set_header(const FrameResult& f, const VctSettings& s);
+
 /// Writes every stage (EXR / NRRD + PNG previews) and `dir`/vct-stages.json; fills set.root/files.
 void write_stage_set(const std::string& dir, StageSet& set);
+
+/// The vct-stages.json document of `set` whose "stages" entries ({file, kind, preview}) are given.
+nlohmann::json stage_set_manifest(const StageSet& set, const nlohmann::json& stages);
 
 /// Reads a directory holding vct-stages.json (or the manifest file itself). Throws InputError
 /// naming the file and the problem.

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "gl_context.h"
+#include "gl_device.h"
 #include "gl_facts.h"
 #include "gl_faults.h"
 #include "gl_frame.h"
@@ -55,11 +56,12 @@ BackendFacts frame_facts(const GlContext& context, const VctSettings& s, const s
 
 }  // namespace
 
-FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings, const GlOptions& options) {
+void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOptions& options) {
   if (scene.lights.size() > size_t(kMaxLights))
     throw InputError(scene.source, "the GL backend takes at most " + std::to_string(kMaxLights) + " lights, the scene has " +
                                        std::to_string(scene.lights.size()));
   check_gl_fault(options.fault, "--gl-fault");
+  parse_device_spec(options.device);
   if (!settings.vct.pcf_taps.empty() || settings.vct.shadow_compare != ShadowCompare::Nearest ||
       settings.vct.shadow_depth_format != ShadowDepthFormat::Depth32f)
     // An engine's PCF (issue 21) is reproduced by the reference only; GL runs the oracle's own.
@@ -72,6 +74,10 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
                                  "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
                                  "shadow_ortho_box are for the reference");
+}
+
+FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings, const GlOptions& options) {
+  check_gl_accepts(scene, settings, options);
   FrameResult result;
   result.backend = "gl";
   result.facts = frame_facts(context, settings.vct, options.fault);
@@ -102,7 +108,7 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
 }
 
 FrameResult render_gl_frame(const Scene& scene, const Settings& settings, const GlOptions& options) {
-  check_gl_fault(options.fault, "--gl-fault");
+  check_gl_accepts(scene, settings, options);
   GlContext context(options.device);
   return render_gl_frame(context, scene, settings, options);
 }

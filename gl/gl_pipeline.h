@@ -20,6 +20,12 @@ struct GlOptions {
   std::string fault;   // "" or a deliberate fault of gl_faults.h
 };
 
+/// What the GL frame refuses, found without a context (vct::InputError): more lights than the
+/// shaders take, settings only the reference runs, an unknown fault, a malformed --gl-device.
+/// Commands call it before they create their run directory (a refused frame leaves none behind);
+/// render_gl_frame calls it again.
+void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOptions& options = {});
+
 /// Creates a context on options.device for this frame (and destroys it afterwards).
 FrameResult render_gl_frame(const Scene& scene, const Settings& settings, const GlOptions& options = {});
 

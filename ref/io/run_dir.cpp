@@ -135,6 +135,17 @@ void RunDir::finish() {
   fs::remove(file(kIncompleteMarker), ignored);
 }
 
+void RunDir::keep_existing_json() {
+  std::ifstream in(file("run.json"));
+  if (!in) return;
+  try {
+    nlohmann::json old = nlohmann::json::parse(in);
+    if (old.is_object()) json_.merge_patch(old);
+  } catch (const nlohmann::json::exception&) {
+    // Replaced by this command's run.json.
+  }
+}
+
 std::string RunDir::file(const std::string& relative) const { return (fs::path(path_) / relative).string(); }
 
 void RunDir::write_color(const std::string& name, const Image& img, float exposure) {

@@ -50,6 +50,10 @@ class RunDir {
 
   /// run.json content; callers add sections freely ("stages", "metrics", "verdicts", ...).
   nlohmann::json& json() { return json_; }
+  /// Starts json() from the run.json already in the directory, so a command writing into another
+  /// command's run (vct pathtrace into a validate run, vct compare --out into a run) keeps its
+  /// sections. An unreadable run.json is simply replaced.
+  void keep_existing_json();
   /// Records a stage time in run.json["timings_ms"][backend][stage].
   void add_timing(const std::string& backend, const std::string& stage, double ms);
   /// Writes run.json (atomically); call whenever a consistent state is reached. A Run's

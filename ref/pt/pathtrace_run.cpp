@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -18,18 +17,6 @@ namespace vct::pt {
 
 namespace {
 
-/// Keeps sections other commands wrote into an existing run.json.
-void merge_existing_run_json(RunDir& dir) {
-  std::ifstream in(dir.file("run.json"));
-  if (!in) return;
-  try {
-    nlohmann::json old = nlohmann::json::parse(in);
-    if (old.is_object()) dir.json().merge_patch(old);
-  } catch (const nlohmann::json::exception&) {
-    // An unreadable run.json is simply replaced.
-  }
-}
-
 void write_outputs(RunDir& dir, const Accumulator& acc) {
   for (int a = 0; a < kAovCount; ++a) {
     dir.write_color(kAovNames[a], acc.mean(Aov(a)));
@@ -42,7 +29,7 @@ void write_outputs(RunDir& dir, const Accumulator& acc) {
 PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, const PathtraceRunOptions& opt) {
   const PtSettings& ps = settings.pt;
   RunDir dir(opt.out_dir, RunRole::Run);  // locked; INCOMPLETE until every pass is done
-  merge_existing_run_json(dir);
+  dir.keep_existing_json();
   const std::string ckpt_path = dir.file(kCheckpointFile);
   const ParticleOptions particles{settings.vct.particles, settings.vct.time};
   const CheckpointKey key{hash_scene(scene), hash_render_settings(ps, particles)};

@@ -2,12 +2,18 @@
 // (ratio = CPU / GL when GL ran, or a note when it did not) and the path tracer beside raw Embree.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_run_util.h"
 
 namespace vct {
 namespace {
+
+namespace fs = std::filesystem;
 
 TEST(BenchCli, WritesBenchJsonWithRatios) {
   const auto dir = test::fresh_dir("bench");
@@ -16,6 +22,12 @@ TEST(BenchCli, WritesBenchJsonWithRatios) {
                           dir.string() + "'"),
             0);
   const nlohmann::json j = nlohmann::json::parse(test::slurp(dir / "bench.json"));
+  // --out is a finished run directory (ref/io/run_dir.h): run.json complete, no marker, no lock.
+  const nlohmann::json run = nlohmann::json::parse(test::slurp(dir / "run.json"));
+  EXPECT_EQ(run["command"], "bench");
+  EXPECT_EQ(run["status"], "complete");
+  EXPECT_FALSE(fs::exists(dir / "INCOMPLETE"));
+  EXPECT_FALSE(fs::exists(dir / ".vct-lock"));
   EXPECT_EQ(j["settings"]["vct"]["grid"], 16);
   const double total = j["ref"]["total"].get<double>();
   EXPECT_GT(total, 0.0);
@@ -50,6 +62,26 @@ TEST(BenchCli, WritesBenchJsonWithRatios) {
   EXPECT_GT(f, 0.0);
   EXPECT_NEAR(f, pt["full_paths"]["rays_per_second"].get<double>() / pt["raw_intersect_rays_per_second"].get<double>(),
               1e-9);
+}
+
+// A second writer of the same --out is refused before any measurement, with the holder's pid.
+// The holder is this test, locking as a vct process does, so the timing cannot race.
+TEST(BenchCli, LockedOutIsRefusedBeforeMeasuring) {
+  const auto dir = test::fresh_dir("bench_locked");
+  const int fd = ::open((dir / ".vct-lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string pid = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, pid.data(), pid.size()), ssize_t(pid.size()));
+  const test::VctOutput r = test::run_vct_captured("bench --no-gl --no-pt --no-validate --grid 16 --width 32 --height 24 "
+                                                   "--repeat 1 --threads 1 --out '" + dir.string() + "'");
+  ::close(fd);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_NE(r.err.find("another vct process (pid " + pid + ") is writing this run directory"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;  // refused before the first frame was timed
+  EXPECT_FALSE(fs::exists(dir / "bench.json"));
 }
 
 }  // namespace

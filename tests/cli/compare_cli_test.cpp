@@ -1,11 +1,18 @@
 // vct compare's exit codes on real files: 0 pass, 1 fail, 2 bad input (README.md).
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "cli_run_util.h"
 #include "core/image.h"
 #include "io/image_io.h"
 
@@ -52,6 +59,59 @@ TEST_F(CompareCli, BadInputIsExitTwo) {
   fs::create_directories(p("ext"));
   std::ofstream(p("ext/vct-stages.json")) << R"({"format":"vct-stages","stages":{"image.final":{"file":"gone.exr"}}})";
   EXPECT_EQ(run_vct("compare " + p("ext") + " " + p("ext")), 2);
+}
+
+// --out is a run directory like every command's (ref/io/run_dir.h): finished, it holds a
+// complete run.json and neither the INCOMPLETE marker nor the lock.
+TEST_F(CompareCli, OutIsAFinishedRunDirectory) {
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("b.exr") + " --out " + p("out")), 1);
+  const nlohmann::json run = nlohmann::json::parse(test::slurp(p("out/run.json")));
+  EXPECT_EQ(run["command"], "compare");
+  EXPECT_EQ(run["status"], "complete");
+  EXPECT_EQ(run["compare"]["overall"], "fail");
+  EXPECT_EQ(run["compare"]["file"], "compare.json");
+  EXPECT_FALSE(fs::exists(p("out/INCOMPLETE")));
+  EXPECT_FALSE(fs::exists(p("out/.vct-lock")));
+}
+
+// A second writer of the same --out is refused with one line naming the holder; it writes
+// nothing there. The holder is this test, locking as a vct process does, so nothing races.
+TEST_F(CompareCli, LockedOutIsRefused) {
+  fs::create_directories(p("locked"));
+  const int fd = ::open(p("locked/.vct-lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string pid = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, pid.data(), pid.size()), ssize_t(pid.size()));
+  const test::VctOutput r = test::run_vct_captured("compare " + p("a.exr") + " " + p("b.exr") + " --out " + p("locked"));
+  ::close(fd);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "vct: " + p("locked") + ": another vct process (pid " + pid +
+                       ") is writing this run directory; wait for it to finish or use another --out\n");
+  EXPECT_FALSE(fs::exists(p("locked/compare.json")));
+  EXPECT_FALSE(fs::exists(p("locked/masks")));
+  EXPECT_FALSE(fs::exists(p("locked/INCOMPLETE")));  // the holder's directory is left alone
+}
+
+// Bad input is found before --out is opened: no directory, no INCOMPLETE left behind.
+TEST_F(CompareCli, BadInputCreatesNoOutDirectory) {
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("nope.exr") + " --out " + p("bad1")), 2);
+  EXPECT_FALSE(fs::exists(p("bad1")));
+  write_exr(p("small.exr"), Image(16, 16, 3));
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("small.exr") + " --out " + p("bad2")), 2);
+  EXPECT_FALSE(fs::exists(p("bad2")));
+}
+
+// compare --out into another command's run keeps that run's run.json sections.
+TEST_F(CompareCli, OutIntoAnotherRunKeepsItsRunJson) {
+  fs::create_directories(p("validate_run"));
+  std::ofstream(p("validate_run/run.json")) << R"({"command": "validate", "verdicts": {"overall": "pass"}})";
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("a.exr") + " --out " + p("validate_run")), 0);
+  const nlohmann::json run = nlohmann::json::parse(test::slurp(p("validate_run/run.json")));
+  EXPECT_EQ(run["command"], "validate");
+  EXPECT_EQ(run["verdicts"]["overall"], "pass");
+  EXPECT_EQ(run["compare"]["overall"], "pass");
+  EXPECT_EQ(run["status"], "complete");
 }
 
 TEST_F(CompareCli, ExternalManifestAgainstItselfPasses) {

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -100,6 +102,38 @@ TEST(RenderCli, ConeCountAndTiltReachDumpsAndExplain) {
   EXPECT_NEAR(ex["cones"][1]["weight"].get<double>(), 0.1, 1e-7);
 }
 
+// A dumped run is a stage set (compare/dump_manifest.h): its vct-stages.json lists the stages
+// --stage-set writes, pointing at the dumped files, and `vct compare` judges it against another
+// run. Two bounces, so the dumped base level (the marcher's mip level 0) is not the reduction's
+// output the stage holds: that stage must come from stage_files/, byte for byte the --stage-set one.
+TEST(RenderCli, DumpedRunIsAStageSetCompareReads) {
+  namespace fs = std::filesystem;
+  const fs::path dump = test::temp_dir() / "dumped_run", set = test::temp_dir() / "stage_set_run";
+  const std::string args = std::string("render ") + kSmall + " --bounces 2 --out '";
+  ASSERT_EQ(vct(args + dump.string() + "' --dump").exit_code, 0);
+  ASSERT_EQ(vct(args + set.string() + "' --stage-set").exit_code, 0);
+  const nlohmann::json dumped = nlohmann::json::parse(slurp((dump / "vct-stages.json").string()));
+  const nlohmann::json written = nlohmann::json::parse(slurp((set / "stages" / "vct-stages.json").string()));
+  ASSERT_EQ(dumped["stages"].size(), written["stages"].size());
+  for (const auto& [name, e] : written["stages"].items()) {
+    ASSERT_TRUE(dumped["stages"].contains(name)) << name;
+    EXPECT_EQ(dumped["stages"][name]["kind"], e["kind"]) << name;
+    EXPECT_TRUE(fs::exists(dump / dumped["stages"][name]["file"].get<std::string>())) << name;
+  }
+  EXPECT_EQ(dumped["backend"], "ref");
+  EXPECT_EQ(dumped["stages"]["image.final"]["file"], "final.exr");  // the dump's own file
+  EXPECT_EQ(dumped["stages"]["voxel.radiance"]["file"], "stage_files/voxel_radiance.nrrd");
+  EXPECT_EQ(slurp((dump / "stage_files" / "voxel_radiance.nrrd").string()),
+            slurp((set / "stages" / "voxel_radiance.nrrd").string()));
+  // The same deterministic frame twice: every stage passes.
+  const fs::path cmp = test::temp_dir() / "dumped_compare";
+  const Result c = vct("compare '" + dump.string() + "' '" + (set / "stages").string() + "' --out '" + cmp.string() + "'");
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  const nlohmann::json verdicts = nlohmann::json::parse(slurp((cmp / "compare.json").string()))["verdicts"];
+  EXPECT_EQ(verdicts["overall"], "pass");
+  EXPECT_GE(verdicts["stages"].size(), 20u);
+}
+
 TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
   const std::string out = " --out '" + (test::temp_dir() / "render_bad").string() + "'";
   for (const std::string& args : {std::string("render --explain 5") + out, std::string("render --light-model nope") + out,
@@ -111,6 +145,47 @@ TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
+}
+
+// What a backend refuses fails before the run directory is created (ref/io/run_dir.h): one line,
+// exit 2, and no directory (no INCOMPLETE left to tell from a killed run). The GL refusals are
+// found without a context (gl::check_gl_accepts), so this runs on machines without a GL driver.
+TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
+  const std::filesystem::path config = test::temp_dir() / "depth16.json";
+  std::ofstream(config) << R"({"vct": {"shadow_depth_format": "depth16"}})";
+  const std::string cfg = " --config '" + config.string() + "' ";
+  struct Case {
+    std::string args, needle;
+  };
+  const std::vector<Case> cases = {
+      {"render --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+      {"render --backend gl --explain 1,1", "--explain: needs --backend ref"},
+      {"render --backend gl --gl-device -1", "--gl-device: device index must be 0 or more"},
+      {"render --backend gl --gl-fault nosuchfault", "unknown GL fault"},
+      {"validate --no-report --spp 1" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+      {"validate --no-report --spp 1 --sweep shadow_depth_format=depth32f,depth16",
+       "settings: the GL backend runs the pcf_kernel square"},
+      {"metamorphic --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+  };
+  bool no_gl_build = false;
+  for (const Case& c : cases) {
+    // Without GL, validate records the GL frame as unavailable and runs on: nothing refused.
+    if (no_gl_build && c.args.rfind("validate", 0) == 0) continue;
+    const std::filesystem::path out = test::temp_dir() / "refused_run";
+    std::filesystem::remove_all(out);
+    const Result r = vct(c.args + " " + kSmall + " --out '" + out.string() + "'");
+    // A build without GL (VCT_BUILD_GL=OFF) refuses every GL frame as unavailable, exit 3.
+    no_gl_build = no_gl_build || r.err.find("GL backend not built") != std::string::npos;
+    EXPECT_EQ(r.exit_code, no_gl_build ? 3 : 2) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+    if (!no_gl_build) EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.args << " left its run directory behind";
+  }
+  // The reference runs the same setting.
+  const std::filesystem::path out = test::temp_dir() / "ref_depth16";
+  const Result ok = vct("render --backend ref" + cfg + kSmall + " --out '" + out.string() + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(out / "final.exr"));
 }
 
 }  // namespace
