@@ -138,7 +138,10 @@ void write_gltf(const std::string& path) {
   std::string scene_nodes;
   for (int i = 0; i < node_count + 2; ++i) scene_nodes += (i ? ", " : "") + std::to_string(i);
   std::ostringstream j;
-  j << "{\n  \"asset\": {\"version\": \"2.0\", \"generator\": \"VCT Oracle docs/examples/gidemo/dump_hook.cpp\"},\n"
+  // gidemo's voxel cube is [-1, 1]^3 (voxelize.geom projects world x, y, z as clip coordinates;
+  // toVoxel() = pos * 0.5 + 0.5): stated as our vct_volume override (docs/scenes.md).
+  j << "{\n  \"asset\": {\"version\": \"2.0\", \"generator\": \"VCT Oracle docs/examples/gidemo/dump_hook.cpp\", "
+    << "\"extras\": {\"vct_volume\": {\"origin\": [-1, -1, -1], \"size\": 2}}},\n"
     << "  \"extensionsUsed\": [\"KHR_lights_punctual\"],\n"
     << "  \"extensions\": {\"KHR_lights_punctual\": {\"lights\": [" << light << "]}},\n"
     << "  \"scene\": 0,\n  \"scenes\": [{\"nodes\": [" << scene_nodes << "]}],\n"
@@ -155,14 +158,37 @@ void write_gltf(const std::string& path) {
 }
 
 // The default framebuffer after voxelCone(): Reinhard + gamma 2.2 written to 8-bit RGB
-// (voxelcone.frag's last lines), resolved from its 4x MSAA by glReadPixels (GL 4.5 §18.2.6).
-void dump_window(vct_dump::StageSetWriter& w) {
-  std::vector<float> rgb(size_t(kImageSide) * kImageSide * 3), depth(size_t(kImageSide) * kImageSide);
+// (voxelcone.frag's last lines), resolved from its 4x MSAA by glReadPixels (GL 4.5 §18.2.6): at
+// triangle edges a pixel is the mean of its samples, not its centre.
+void dump_final(vct_dump::StageSetWriter& w) {
+  std::vector<float> rgb(size_t(kImageSide) * kImageSide * 3);
   glReadBuffer(GL_BACK);
   glReadPixels(0, 0, kImageSide, kImageSide, GL_RGB, GL_FLOAT, rgb.data());
   w.image("image.final", kImageSide, kImageSide, 3, rgb.data(), vct_dump::Rows::BottomFirst);
-  glReadPixels(0, 0, kImageSide, kImageSide, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  w.image("gbuffer.depth", kImageSide, kImageSide, 1, depth.data(), vct_dump::Rows::BottomFirst);
+}
+
+// gbuffer.depth at pixel centres: gidemo's own depth pre-pass (shadowShader with the camera's
+// matrix, as occlusionCulling() draws it) into a single-sample DEPTH32F target of ours. The
+// window's depth buffer is 4x multisampled and its read-back resolves to a sample, not the centre.
+void dump_depth(vct_dump::StageSetWriter& w) {
+  GLuint fbo = 0, tex = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+  glTextureStorage2D(tex, 1, GL_DEPTH_COMPONENT32F, kImageSide, kImageSide);
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, tex, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, kImageSide, kImageSide);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  shadowShader->bind();
+  shadowShader->set("u_project", cam.final);
+  scene.drawObjects(0.0, shadowShader, false);
+  glFinish();
+  vct_dump::image_from_gl(w, "gbuffer.depth", get_texture_image, tex, kImageSide, kImageSide, /*depth=*/true);
+  Framebuffer::reset();
 }
 
 void record_facts(vct_dump::StageSetWriter& w) {
@@ -213,7 +239,8 @@ void dump_all() {
                              voxelTexture->id, level, n, n, n);
   w.volume("voxel.fragments", kGrid, kGrid, kGrid, 1, g_fragments.data());
   vct_dump::image_from_gl(w, "shadow_map.0", get_texture_image, shadowMap->t->id, 2048, 2048, /*depth=*/true);
-  dump_window(w);
+  dump_final(w);
+  dump_depth(w);
   if (!w.finish()) std::fprintf(stderr, "vct_dump: %s\n", w.error().c_str());
   write_gltf(dump_dir() + "box.gltf");
 }
