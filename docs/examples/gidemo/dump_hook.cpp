@@ -157,14 +157,49 @@ void write_gltf(const std::string& path) {
   std::ofstream(path) << j.str();
 }
 
-// The default framebuffer after voxelCone(): Reinhard + gamma 2.2 written to 8-bit RGB
-// (voxelcone.frag's last lines), resolved from its 4x MSAA by glReadPixels (GL 4.5 §18.2.6): at
-// triangle edges a pixel is the mean of its samples, not its centre.
-void dump_final(vct_dump::StageSetWriter& w) {
-  std::vector<float> rgb(size_t(kImageSide) * kImageSide * 3);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, kImageSide, kImageSide, GL_RGB, GL_FLOAT, rgb.data());
-  w.image("image.final", kImageSide, kImageSide, 3, rgb.data(), vct_dump::Rows::BottomFirst);
+// The camera passes' target (run.sh points occlusionCulling() and voxelCone() here): RGBA8 like
+// the window's 8-bit colour, one sample per pixel, so each pixel is the shading at its centre;
+// the window itself is 4x MSAA, whose resolve would average the samples of edge pixels.
+GLuint g_frame_fbo = 0, g_frame_colour = 0;
+
+GLuint frame_target() {
+  if (g_frame_fbo) return g_frame_fbo;
+  GLuint depth = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &g_frame_colour);
+  glTextureStorage2D(g_frame_colour, 1, GL_RGBA8, kImageSide, kImageSide);
+  glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+  glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT24, kImageSide, kImageSide);  // the window's depth bits
+  glCreateFramebuffers(1, &g_frame_fbo);
+  glNamedFramebufferTexture(g_frame_fbo, GL_COLOR_ATTACHMENT0, g_frame_colour, 0);
+  glNamedFramebufferTexture(g_frame_fbo, GL_DEPTH_ATTACHMENT, depth, 0);
+  return g_frame_fbo;
+}
+
+void read_frame(vct_dump::StageSetWriter& w, const std::string& stage) {
+  vct_dump::image_from_gl(w, stage, get_texture_image, g_frame_colour, kImageSide, kImageSide, /*depth=*/false);
+}
+
+// gidemo's render modes (main.cpp renderModeText) are its frame components, each tone-mapped like
+// the final: 0 direct light only, 1 indirect diffuse (restitution x the sum of its 5 cones, no
+// albedo), 2 indirect specular (the raw cone), 3 the composite.
+void render_frame(int mode) {
+  renderMode = mode;
+  glBindFramebuffer(GL_FRAMEBUFFER, frame_target());
+  glViewport(0, 0, kImageSide, kImageSide);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(0.f, 0.f, 0.f, 1.f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  occlusionCulling(0.0);
+  voxelCone(0.0);
+  glFinish();
+}
+
+void dump_frames(vct_dump::StageSetWriter& w) {
+  const char* stages[4] = {"image.direct", "image.indirect_diffuse", "image.indirect_specular", "image.final"};
+  for (int mode = 0; mode < 4; ++mode) {
+    render_frame(mode);
+    read_frame(w, stages[mode]);
+  }
 }
 
 // gbuffer.depth at pixel centres: gidemo's own depth pre-pass (shadowShader with the camera's
@@ -218,7 +253,8 @@ void record_settings(vct_dump::StageSetWriter& w) {
   w.set_setting("shadow_near", 0.01);
   w.set_setting("shadow_far", 3.0);
   w.set_setting("shadow_bias", double(shadowBias));
-  w.set_setting("bounces", 1);  // one frame: the mips the voxel pass would trace are still empty
+  w.set_setting("bounces", 1);
+  w.set_setting("gidemo_final_restitution", double(restitution));  // informative: not a setting of ours  // one frame: the mips the voxel pass would trace are still empty
 }
 
 void dump_all() {
@@ -232,20 +268,23 @@ void dump_all() {
   display.set("operator", "reinhard");
   display.set("gamma", 2.2);
   display.set("bits", 8);
-  display.set("stages", std::vector<std::string>{"image.final"});
+  display.set("stages", std::vector<std::string>{"image.direct", "image.indirect_diffuse", "image.indirect_specular", "image.final"});
   w.set_convention("display", display);
   for (int level = 0, n = kGrid; n >= 1; ++level, n /= 2)
     vct_dump::volume_from_gl(w, level == 0 ? "voxel.radiance" : "mip.iso." + std::to_string(level), get_texture_image,
                              voxelTexture->id, level, n, n, n);
   w.volume("voxel.fragments", kGrid, kGrid, kGrid, 1, g_fragments.data());
   vct_dump::image_from_gl(w, "shadow_map.0", get_texture_image, shadowMap->t->id, 2048, 2048, /*depth=*/true);
-  dump_final(w);
+  dump_frames(w);
   dump_depth(w);
   if (!w.finish()) std::fprintf(stderr, "vct_dump: %s\n", w.error().c_str());
   write_gltf(dump_dir() + "box.gltf");
 }
 
 }  // namespace vct_hook
+
+// Replaces Framebuffer::reset() in gidemo's occlusionCulling() and voxelCone() (run.sh).
+void vct_hook_bind_frame_target() { glBindFramebuffer(GL_FRAMEBUFFER, vct_hook::frame_target()); }
 
 // Inserted by run.sh into gidemo's voxelize(), before fixopacity.comp turns the count into 0/1.
 void vct_hook_before_fixopacity() {
@@ -266,17 +305,11 @@ int main() {
   loadAssets();
   addCornellBox(false);  // main.cpp's box: five planes, one spot (issue 21's "box scene")
   initVoxelize();
-  const double time = 0.0;
-  renderShadowMap(time);
-  voxelize(time);
-  Framebuffer::reset();
-  glViewport(0, 0, vct_hook::kImageSide, vct_hook::kImageSide);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glClearColor(0.f, 0.f, 0.f, 1.f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  occlusionCulling(time);
-  voxelCone(time);
-  glFinish();
+  // Experiment knob (docs/examples/gidemo.md): gidemo's "Diffuse restitution" slider, the gain of
+  // the final's indirect diffuse (addCornellBox sets 0.15), which no setting of ours states.
+  if (const char* r = std::getenv("VCT_HOOK_RESTITUTION")) restitution = float(std::atof(r));
+  renderShadowMap(0.0);
+  voxelize(0.0);
   vct_hook::dump_all();
   System::exit(0);
 }

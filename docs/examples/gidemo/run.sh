@@ -16,7 +16,10 @@ work="${2:-/work/gidemo-build}"
 rm -rf "$work"
 mkdir -p "$work/src" "$work/obj" "$work/run/dump"
 cp -r "$src/src/." "$work/src/"
-ln -s "$src/assets" "$work/assets"  # gidemo loads ../assets/... relative to its working directory
+# gidemo loads ../assets/... relative to its working directory; shaders are copied (experiments edit them)
+mkdir -p "$work/assets"
+for a in "$src"/assets/*; do [ "$(basename "$a")" = shaders ] || ln -s "$a" "$work/assets/"; done
+cp -r "$src/assets/shaders" "$work/assets/shaders"
 main="$work/src/main.cpp"
 
 anchor() {  # anchor REGEX: the edit below needs this line of main.cpp
@@ -27,10 +30,27 @@ anchor '^Scene scene;'
 sed -i '/^Scene scene;/i void vct_hook_before_fixopacity();' "$main"
 anchor 'right now the opacity is used as a counter'
 sed -i '/right now the opacity is used as a counter/i \\tvct_hook_before_fixopacity();' "$main"
-# 2. Our one-frame main() (dump_hook.cpp) replaces the interactive loop and its GUI.
+# 2. The camera passes draw into our single-sample target instead of the 4x MSAA window, so image
+#    stages are pixel-centre values like the reference's (the voxelization pass keeps the window's
+#    MSAA: it is gidemo's voxelizer). Only the Framebuffer::reset() of these two functions changes.
+sed -i '/^Scene scene;/i void vct_hook_bind_frame_target();' "$main"
+for fn in occlusionCulling voxelCone; do
+  anchor "^void $fn(double time) {"
+  sed -i "/^void $fn(double time) {/,/^}/ s/Framebuffer::reset();/vct_hook_bind_frame_target();/" "$main"
+done
+[ "$(grep -c 'vct_hook_bind_frame_target();' "$main")" = 3 ] || { echo "run.sh: frame target edit did not apply" >&2; exit 2; }
+# 3. Our one-frame main() (dump_hook.cpp) replaces the interactive loop and its GUI.
 anchor '^int main() {'
 sed -i '/^int main() {/,$d' "$main"
 echo '#include "dump_hook.cpp"' >>"$main"
+
+# Experiment (GIDEMO_EXPERIMENT=unscaled_mips): mipmap.comp without its "* 1.9", to show what the
+# scaling does downstream (docs/examples/gidemo.md). Not part of the worked example's verdicts.
+if [ "${GIDEMO_EXPERIMENT:-}" = unscaled_mips ]; then
+  mip="$work/assets/shaders/mipmap.comp"
+  grep -q 'textureLod(u_src, pos, u_level) \* 1.9;' "$mip" || { echo "run.sh: anchor '* 1.9' not in $mip" >&2; exit 2; }
+  sed -i 's/textureLod(u_src, pos, u_level) \* 1.9;/textureLod(u_src, pos, u_level);/' "$mip"
+fi
 
 flags=(-std=c++17 -O1 -DGLM_ENABLE_EXPERIMENTAL -w -I"$here" -I"$root/tools/vct_dump"
        -I"$src/libs/glad/include" -I/usr/include/stb -I"$work/src")

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Judges the gidemo dump of run.sh against our reference twice (docs/examples/gidemo.md):
+#   BEFORE: the reference at gidemo's sizes only (grid 64, 128x128) and the dump's manifest with
+#           its "conventions" removed -- what a new user gets without declaring anything;
+#   AFTER:  the reference rendered with settings.json (gidemo's light model, voxelizer, storage,
+#           reduction, shadow frustum/PCF/depth format, cone set) and the manifest as dumped
+#           (conventions mip_scale 1.9 and display reinhard/2.2/8 bits).
+#   docs/examples/gidemo/compare.sh [DUMP_DIR] [OUT_DIR]
+# Exit status: that of the AFTER comparison (1: a stage FAILs -- expected, mip.iso.1).
+set -uo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+vct="${VCT:-$root/build/bin/vct}"
+dump="${1:-/work/gidemo-build/run/dump}"
+out="${2:-/tmp/gidemo-compare}"
+rm -rf "$out"
+mkdir -p "$out/before_dump"
+scene="$here/box.gltf"
+
+# The same stage files, the manifest without its conventions.
+for f in "$dump"/*; do ln -s "$f" "$out/before_dump/$(basename "$f")"; done
+rm "$out/before_dump/vct-stages.json"
+python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); m.pop("conventions",None); json.dump(m,open(sys.argv[2],"w"),indent=2)' \
+  "$dump/vct-stages.json" "$out/before_dump/vct-stages.json"
+
+"$vct" render "$scene" --backend ref --dump --stage-set --set grid=64 --set width=128 --set height=128 \
+  --out "$out/ref_before" >/dev/null
+"$vct" render "$scene" --backend ref --dump --stage-set --config "$here/settings.json" --out "$out/ref_after" >/dev/null
+
+echo "== BEFORE (no conventions, reference at defaults)"
+"$vct" compare "$out/ref_before/stages" "$out/before_dump" --out "$out/cmp_before"
+echo "== AFTER (settings.json + the manifest's conventions)"
+"$vct" compare "$out/ref_after/stages" "$dump" --out "$out/cmp_after"
