@@ -31,3 +31,21 @@ echo "== BEFORE (no conventions, reference at defaults)"
 "$vct" compare "$out/ref_before/stages" "$out/before_dump" --out "$out/cmp_before"
 echo "== AFTER (settings.json + the manifest's conventions)"
 "$vct" compare "$out/ref_after/stages" "$dump" --out "$out/cmp_after"
+rc=$?
+
+# The verdict tables of docs/examples/gidemo.md, from each compare.json.
+table() {
+  python3 - "$1" <<'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))["verdicts"]
+print("| stage | verdict | what the judge says |\n| --- | --- | --- |")
+for s in v["stages"]:
+    if s.get("verdict") in (None, "missing"):
+        continue
+    note = s.get("note", "").split(" Driver fact")[0].replace("|", "/")
+    print(f"| `{s['stage']}` | {s['verdict']} | {note} |")
+PY
+}
+echo; echo "BEFORE table:"; table "$out/cmp_before/compare.json"
+echo; echo "AFTER table:"; table "$out/cmp_after/compare.json"
+exit $rc

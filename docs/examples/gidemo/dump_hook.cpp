@@ -179,6 +179,64 @@ void read_frame(vct_dump::StageSetWriter& w, const std::string& stage) {
   vct_dump::image_from_gl(w, stage, get_texture_image, g_frame_colour, kImageSide, kImageSide, /*depth=*/false);
 }
 
+// gbuffer.normal: gidemo has no G-buffer, so a pass of ours draws its objects (their meshes and
+// u_transform, through gidemo's Object::draw) with the normal its shaders shade with:
+// mat3(transpose(inverse(u_transform))) * i_normal, normalised (voxelcone.vert / .frag).
+GLuint compile_normal_program() {
+  const char* vs = R"(#version 450 core
+layout(location = 0) in vec3 i_position;
+layout(location = 2) in vec3 i_normal;
+uniform mat4 u_project;
+uniform mat4 u_transform;
+out vec3 v_normal;
+void main() {
+  v_normal = mat3(transpose(inverse(u_transform))) * i_normal;
+  gl_Position = u_project * (u_transform * vec4(i_position, 1.0));
+})";
+  const char* fs = R"(#version 450 core
+in vec3 v_normal;
+layout(location = 0) out vec4 o_normal;
+void main() { o_normal = vec4(normalize(v_normal), 1.0); })";
+  GLuint program = glCreateProgram();
+  for (auto [type, text] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
+    GLuint sh = glCreateShader(type);
+    glShaderSource(sh, 1, &text, nullptr);
+    glCompileShader(sh);
+    glAttachShader(program, sh);
+  }
+  glLinkProgram(program);
+  return program;
+}
+
+void dump_normal(vct_dump::StageSetWriter& w) {
+  GLuint fbo = 0, colour = 0, depth = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &colour);
+  glTextureStorage2D(colour, 1, GL_RGBA32F, kImageSide, kImageSide);
+  glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+  glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT32F, kImageSide, kImageSide);
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, colour, 0);
+  glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, kImageSide, kImageSide);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, zero);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  Shader normal_shader;  // gidemo's wrapper around our program, so Object::draw sets u_transform
+  normal_shader.id = int(compile_normal_program());
+  normal_shader.bind();
+  normal_shader.set("u_project", cam.final);
+  scene.drawObjects(0.0, &normal_shader, false);
+  glFinish();
+  vct_dump::image_from_gl(w, "gbuffer.normal", get_texture_image, colour, kImageSide, kImageSide, /*depth=*/false);
+  Framebuffer::reset();
+}
+
 // gidemo's render modes (main.cpp renderModeText) are its frame components, each tone-mapped like
 // the final: 0 direct light only, 1 indirect diffuse (restitution x the sum of its 5 cones, no
 // albedo), 2 indirect specular (the raw cone), 3 the composite.
@@ -277,6 +335,7 @@ void dump_all() {
   vct_dump::image_from_gl(w, "shadow_map.0", get_texture_image, shadowMap->t->id, 2048, 2048, /*depth=*/true);
   dump_frames(w);
   dump_depth(w);
+  dump_normal(w);
   if (!w.finish()) std::fprintf(stderr, "vct_dump: %s\n", w.error().c_str());
   write_gltf(dump_dir() + "box.gltf");
 }
