@@ -13,7 +13,8 @@ root="$(cd "$here/../../.." && pwd)"
 vct="${VCT:-$root/build/bin/vct}"
 dump="${1:-/work/gidemo-build/run/dump}"
 out="${2:-/tmp/gidemo-compare}"
-rm -rf "$out"
+[ -f "$dump/vct-stages.json" ] || { echo "compare.sh: $dump: no vct-stages.json (run run.sh first)" >&2; exit 2; }
+rm -rf "$out/before_dump" "$out/ref_before" "$out/ref_after" "$out/cmp_before" "$out/cmp_after"
 mkdir -p "$out/before_dump"
 scene="$here/box.gltf"
 

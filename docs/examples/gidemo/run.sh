@@ -13,7 +13,13 @@ src="${1:-/work/gidemo}"
 work="${2:-/work/gidemo-build}"
 [ -f "$src/src/main.cpp" ] || { echo "run.sh: $src/src/main.cpp: not a gidemo checkout" >&2; exit 2; }
 
-rm -rf "$work"
+# Only what this script makes in WORK_DIR is removed (never WORK_DIR itself), and never inside
+# this repository or the checkout.
+w="$(realpath -m "$work")"
+for keep in "$root" "$(realpath -m "$src")"; do
+  case "$w/" in "$keep/"*) echo "run.sh: $work: refusing to build inside $keep" >&2; exit 2 ;; esac
+done
+rm -rf "$work/src" "$work/obj" "$work/run" "$work/assets" "$work/gidemo"
 mkdir -p "$work/src" "$work/obj" "$work/run/dump"
 cp -r "$src/src/." "$work/src/"
 # gidemo loads ../assets/... relative to its working directory; shaders are copied (experiments edit them)
