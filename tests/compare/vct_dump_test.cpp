@@ -120,6 +120,45 @@ TEST(VctDump, FourAndTwoChannelImagesReadBackThroughExr) {
   EXPECT_EQ(t.at(1, 1, 1), 111.25f);
 }
 
+// colour_image_from_gl asks GL for as many channels as it writes (GL_RGBA for 4) and flips GL's
+// bottom-first rows; settings of any arithmetic type (size_t, float) are written as numbers.
+TEST(VctDump, ColourImageFromGlAsksForItsChannelsAndFlipsRows) {
+  const std::string dir = (fs::temp_directory_path() / "vct_dump_test_from_gl").string();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  vct_dump::StageSetWriter w(dir, "dump-test");
+  w.set_setting("grid", size_t(kN));
+  w.set_setting("cone_quality", 0.5f);
+  unsigned asked_format = 0;
+  int asked_bytes = 0;
+  auto fake_get_texture_image = [&](unsigned, int, unsigned format, unsigned, int bytes, void* pixels) {
+    asked_format = format, asked_bytes = bytes;
+    float* p = static_cast<float*>(pixels);
+    for (int yb = 0; yb < kH; ++yb)  // GL's row 0 is the bottom row
+      for (int x = 0; x < kW; ++x)
+        for (int c = 0; c < 4; ++c) p[(yb * kW + x) * 4 + c] = float(100 * yb + 10 * x + c);
+  };
+  EXPECT_TRUE(vct_dump::colour_image_from_gl(w, "gbuffer.material", fake_get_texture_image, 7, kW, kH, 4)) << w.error();
+  EXPECT_EQ(asked_format, 0x1908u);  // GL_RGBA
+  EXPECT_EQ(asked_bytes, kW * kH * 4 * 4);
+  EXPECT_FALSE(vct_dump::colour_image_from_gl(w, "gbuffer.odd", fake_get_texture_image, 7, kW, kH, 5));
+  EXPECT_NE(w.error().find("1 to 4 channels"), std::string::npos);
+  // The failed stage makes finish() refuse: a half-dumped set never gets a manifest.
+  EXPECT_FALSE(w.finish());
+  EXPECT_FALSE(fs::exists(dir + "/vct-stages.json"));
+  vct_dump::StageSetWriter ok(dir, "dump-test");
+  ok.set_setting("grid", size_t(kN));
+  ok.set_setting("cone_quality", 0.5f);
+  ASSERT_TRUE(vct_dump::colour_image_from_gl(ok, "gbuffer.material", fake_get_texture_image, 7, kW, kH, 4));
+  ASSERT_TRUE(ok.finish()) << ok.error();
+  const StageSet s = read_stage_set(dir);
+  EXPECT_EQ(s.settings.value("grid", 0), kN);
+  EXPECT_EQ(s.settings.value("cone_quality", 0.0), 0.5);
+  const Image& m = s.images.at("gbuffer.material");
+  EXPECT_EQ(m.at(1, 0, 3), float(100 * (kH - 1) + 10 + 3));  // top row = GL's last row
+  EXPECT_EQ(m.at(1, kH - 1, 2), 12.0f);                     // bottom row = GL's row 0
+}
+
 // conventions.display is a nested object: written with vct_dump::Object, it reads back as the
 // display transform the judge applies.
 TEST(VctDump, NestedDisplayConventionReadsBack) {

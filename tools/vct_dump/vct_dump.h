@@ -27,6 +27,7 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace vct_dump {
@@ -52,13 +53,20 @@ inline std::string quote(const std::string& s) {
 }
 inline std::string json_value(const std::string& v) { return quote(v); }
 inline std::string json_value(const char* v) { return quote(v); }
-inline std::string json_value(bool v) { return v ? "true" : "false"; }
-inline std::string json_value(int v) { return std::to_string(v); }
-inline std::string json_value(double v) {
-  if (!std::isfinite(v)) return "null";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
+// Any arithmetic type (bool, int, size_t, float, double, ...): no overload ambiguity for the
+// integer types an engine happens to hold its sizes in.
+template <typename T, std::enable_if_t<std::is_arithmetic_v<T>, int> = 0>
+std::string json_value(T v) {
+  if constexpr (std::is_same_v<T, bool>) {
+    return v ? "true" : "false";
+  } else if constexpr (std::is_integral_v<T>) {
+    return std::to_string(v);
+  } else {
+    if (!std::isfinite(double(v))) return "null";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", double(v));
+    return b;
+  }
 }
 std::string json_value(const Object& v);
 template <typename T>
@@ -251,7 +259,8 @@ class StageSetWriter {
 };
 
 // GL enums by value, so no GL header is needed (GL 4.5 core, table 8.3 / 8.2).
-constexpr unsigned kGlRgb = 0x1907, kGlRgba = 0x1908, kGlDepthComponent = 0x1902, kGlFloat = 0x1406;
+constexpr unsigned kGlRed = 0x1903, kGlRg = 0x8227, kGlRgb = 0x1907, kGlRgba = 0x1908, kGlDepthComponent = 0x1902,
+                   kGlFloat = 0x1406;
 
 /// Reads level `level` of a 3D texture with the engine's glGetTextureImage (GL 4.5 §8.11.4:
 /// (texture, level, format, type, bufSize, pixels)) as RGBA float and writes it as `stage`.
@@ -271,6 +280,18 @@ bool image_from_gl(StageSetWriter& w, const std::string& stage, GetTextureImage 
   const int channels = depth ? 1 : 3;
   std::vector<float> buf(size_t(width) * size_t(height) * size_t(channels));
   get_texture_image(texture, 0, depth ? kGlDepthComponent : kGlRgb, kGlFloat, int(buf.size() * sizeof(float)), buf.data());
+  return w.image(stage, width, height, channels, buf.data(), Rows::BottomFirst);
+}
+
+/// Reads the first `channels` (1 to 4: GL_RED, GL_RG, GL_RGB, GL_RGBA) of a colour texture, e.g.
+/// a 4-channel `gbuffer.material`, and writes it as `stage`, flipping GL's bottom-first rows.
+template <typename GetTextureImage>
+bool colour_image_from_gl(StageSetWriter& w, const std::string& stage, GetTextureImage get_texture_image,
+                          unsigned texture, int width, int height, int channels) {
+  constexpr unsigned kFormat[4] = {kGlRed, kGlRg, kGlRgb, kGlRgba};
+  if (channels < 1 || channels > 4) return w.image(stage, width, height, channels, nullptr, Rows::BottomFirst);
+  std::vector<float> buf(size_t(width) * size_t(height) * size_t(channels));
+  get_texture_image(texture, 0, kFormat[channels - 1], kGlFloat, int(buf.size() * sizeof(float)), buf.data());
   return w.image(stage, width, height, channels, buf.data(), Rows::BottomFirst);
 }
 
