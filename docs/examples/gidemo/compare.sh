@@ -6,6 +6,7 @@
 #           reduction, shadow frustum/PCF/depth format, cone set) and the manifest as dumped
 #           (conventions mip_scale 1.9 and display reinhard/2.2/8 bits).
 #   docs/examples/gidemo/compare.sh [DUMP_DIR] [OUT_DIR]
+# and AFTER again with --scene (cone stages re-traced on gidemo's own depth, normals and mips).
 # Exit status: that of the AFTER comparison (1: a stage FAILs -- expected, mip.iso.1).
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -14,7 +15,7 @@ vct="${VCT:-$root/build/bin/vct}"
 dump="${1:-/work/gidemo-build/run/dump}"
 out="${2:-/tmp/gidemo-compare}"
 [ -f "$dump/vct-stages.json" ] || { echo "compare.sh: $dump: no vct-stages.json (run run.sh first)" >&2; exit 2; }
-rm -rf "$out/before_dump" "$out/ref_before" "$out/ref_after" "$out/cmp_before" "$out/cmp_after"
+rm -rf "$out/before_dump" "$out/ref_before" "$out/ref_after" "$out/cmp_before" "$out/cmp_after" "$out/cmp_scene"
 mkdir -p "$out/before_dump"
 scene="$here/box.gltf"
 
@@ -33,6 +34,8 @@ echo "== BEFORE (no conventions, reference at defaults)"
 echo "== AFTER (settings.json + the manifest's conventions)"
 "$vct" compare "$out/ref_after/stages" "$dump" --out "$out/cmp_after"
 rc=$?
+echo "== AFTER, cone stages re-traced on gidemo's own depth, normals and mips (--scene)"
+"$vct" compare "$out/ref_after/stages" "$dump" --scene "$scene" --config "$here/settings.json" --out "$out/cmp_scene"
 
 # The verdict tables of docs/examples/gidemo.md, from each compare.json.
 table() {
@@ -49,4 +52,5 @@ PY
 }
 echo; echo "BEFORE table:"; table "$out/cmp_before/compare.json"
 echo; echo "AFTER table:"; table "$out/cmp_after/compare.json"
+echo; echo "AFTER --scene table:"; table "$out/cmp_scene/compare.json"
 exit $rc
