@@ -2,7 +2,7 @@
 # Judges the gidemo dump of run.sh against our reference twice (docs/examples/gidemo.md):
 #   BEFORE: the reference at gidemo's sizes only (grid 64, 128x128) and the dump's manifest with
 #           its "conventions" removed -- what a new user gets without declaring anything;
-#   AFTER:  the reference rendered with settings.json (gidemo's light model, voxelizer, storage,
+#   AFTER:  the reference rendered with settings.json and gidemo's MSAA sample positions (--facts-from) (gidemo's light model, voxelizer, storage,
 #           reduction, shadow frustum/PCF/depth format, cone set) and the manifest as dumped
 #           (conventions mip_scale 1.9 and display reinhard/2.2/8 bits).
 #   docs/examples/gidemo/compare.sh [DUMP_DIR] [OUT_DIR]
@@ -27,7 +27,8 @@ python3 -c 'import json,sys; m=json.load(open(sys.argv[1])); m.pop("conventions"
 
 "$vct" render "$scene" --backend ref --dump --stage-set --set grid=64 --set width=128 --set height=128 \
   --out "$out/ref_before" >/dev/null
-"$vct" render "$scene" --backend ref --dump --stage-set --config "$here/settings.json" --out "$out/ref_after" >/dev/null
+"$vct" render "$scene" --backend ref --dump --stage-set --config "$here/settings.json" --facts-from "$dump" \
+  --out "$out/ref_after" >/dev/null
 
 echo "== BEFORE (no conventions, reference at defaults)"
 "$vct" compare "$out/ref_before/stages" "$out/before_dump" --out "$out/cmp_before"

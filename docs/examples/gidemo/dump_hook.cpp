@@ -288,6 +288,18 @@ void record_facts(vct_dump::StageSetWriter& w) {
   GLint samples = 0, depth_bits = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   w.set_fact("msaa_samples", int(samples));
+  // Where the voxelization pass samples (it draws into this window): GL_SAMPLE_POSITION in pixel
+  // units, lower-left origin (GL 4.5 §14.3.1), which `vct render --facts-from` makes the reference use.
+  std::vector<std::vector<double>> positions;
+  for (GLint i = 0; i < samples; ++i) {
+    GLfloat xy[2] = {0, 0};
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(i), xy);
+    positions.push_back({double(xy[0]), double(xy[1])});
+  }
+  if (!positions.empty()) w.set_fact("sample_positions", positions);
+  GLint subpixel_bits = 0;
+  glGetIntegerv(GL_SUBPIXEL_BITS, &subpixel_bits);
+  w.set_fact("subpixel_bits", int(subpixel_bits));
   w.set_fact("renderer", std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
   w.set_fact("vendor", std::string(reinterpret_cast<const char*>(glGetString(GL_VENDOR))));
   w.set_fact("version", std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))));
