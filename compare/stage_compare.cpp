@@ -10,6 +10,7 @@
 #include "compare/tolerance.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
+#include "stages/shadow_map.h"
 
 namespace vct::cmp {
 
@@ -166,8 +167,12 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::vector<Offender> offenders;
   double se = 0;
   size_t edge_pixels = 0, interior_bad = 0, edge_bad = 0, inadmissible = 0;
+  // A UNORM depth map: each side within a step q of its float depth (either neighbour, GL 4.5
+  // section 2.3.5.2), so two maps within the float bound stay within it + 2q.
+  const double depth_format = m.id == ToleranceModel::Depth ? 2.0 * opt.depth_quantum : 0.0;
+  if (depth_format > 0) v.bound += " + 2q of the UNORM depth format (" + std::to_string(depth_format) + ")";
   auto linear_bound = [&](int x, int y, int c) {
-    double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs;
+    double bound = m.abs + m.rel * std::abs(double(ref.at(x, y, c))) + m.abs_of_mean * mean_abs + depth_format;
     if (m.slope_factor > 0) bound += m.slope_factor * attribute_slope(ref, x, y, c);
     if (use_slack) bound += double(texture_slack->at(x, y, slack_ch));
     return bound;
@@ -777,6 +782,15 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
   return v;
 }
 
+// One step of the reference's shadow depth format (its manifest settings; absent = float).
+double depth_quantum_of(const StageSet& rs) {
+  if (!rs.settings.is_object() || !rs.settings.contains("shadow_depth_format")) return 0.0;
+  const nlohmann::json& format = rs.settings.at("shadow_depth_format");
+  for (ShadowDepthFormat f : {ShadowDepthFormat::Depth24, ShadowDepthFormat::Depth16})
+    if (format == to_string(f)) return depth_quantum(f);
+  return 0.0;
+}
+
 }  // namespace
 
 Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareOptions& opt_in) {
@@ -823,8 +837,10 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       const bool light_space =
           ref && (ref->row->index == StageIndex::Light || ref->row->index == StageIndex::CubeFace);
       const DisplayTransform& shown = ts.conventions.display;
+      CompareOptions stage_opt = opt;
+      if (light_space) stage_opt.depth_quantum = depth_quantum_of(rs);
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
-                                               light_space ? nullptr : depth_hint, opt, slack,
+                                               light_space ? nullptr : depth_hint, stage_opt, slack,
                                                shown.applies_to(stage) ? &shown : nullptr));
     } else if (model == ToleranceModel::Mip) {
       rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));

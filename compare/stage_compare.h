@@ -18,6 +18,10 @@ struct CompareOptions {
   double upstream_tie_fraction = 0.0;
   // Set by compare_stage_sets from the sets' settings: direct light was cone-traced.
   bool soft_shadows = false;
+  // Set by compare_stage_sets for light-space depth stages from the reference's
+  // shadow_depth_format: one UNORM step q = 1/(2^b - 1) (0 for float); the depth bound grows by
+  // 2q (docs/compare.md, the shadow_depth_format row).
+  double depth_quantum = 0.0;
 };
 
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});

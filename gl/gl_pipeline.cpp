@@ -66,6 +66,12 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     throw InputError("settings", "the GL backend runs the pcf_kernel square with nearest compare; "
                                  "pcf_taps, shadow_compare=linear and "
                                  "shadow_depth_format other than depth32f are for the reference");
+  if (!settings.vct.diffuse_cone_set.empty() || settings.vct.cone_tangent_frame != ConeTangentFrame::Branchless ||
+      !settings.vct.shadow_view_proj.empty() || !settings.vct.shadow_ortho_box.empty())
+    // An engine's cone set, march rule and light matrices (issue 21) are reproduced by the reference only.
+    throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
+                                 "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
+                                 "shadow_ortho_box are for the reference");
   FrameResult result;
   result.backend = "gl";
   result.facts = frame_facts(context, settings.vct, options.fault);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "pt/bsdf_sampling.h"
 #include "pt/rng.h"
 #include "stages/cone_sets.h"
@@ -89,6 +90,12 @@ RungImage cone_set_base_level_steps(const LadderContext& ctx) {
 }
 
 std::vector<Rung> diffuse_rungs(const LadderContext& ctx) {
+  const VctSettings& vs = ctx.settings().vct;
+  // The ladders split the oracle's count/tilt set; an engine's declared set (issue 21) is judged
+  // by vct compare, not attributed.
+  if (!vs.diffuse_cone_set.empty() || vs.cone_tangent_frame != ConeTangentFrame::Branchless)
+    throw InputError("settings", "vct attribute splits the diffuse_cone_count/tilt set; diffuse_cone_set and "
+                                 "cone_tangent_frame are for vct render and vct compare");
   const LadderContext* c = &ctx;
   return {
       {"truth", "path tracer, one-bounce diffuse (pt_indirect_diffuse)", false,

@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "core/memory_budget.h"
+#include "core/declared_cones.h"
+#include "core/light_matrices.h"
 #include "core/pcf_taps.h"
 #include "core/settings_table.h"
 
@@ -117,6 +119,12 @@ void validate_settings(const Settings& s) {
   require(s.vct.shadow_near <= 0.0f || s.vct.shadow_far <= 0.0f || s.vct.shadow_near < s.vct.shadow_far,
           "shadow_near must be below shadow_far");
   (void)parse_pcf_taps(s.vct.pcf_taps);  // throws for a malformed tap list
+  (void)parse_declared_cones(s.vct.diffuse_cone_set);
+  (void)parse_light_matrices(s.vct.shadow_view_proj);
+  (void)parse_ortho_boxes(s.vct.shadow_ortho_box);
+  // The axis offset after the normal offset is the normal start's; the axis start has one offset.
+  require(s.vct.cone_axis_offset_voxels == 0.0f || s.vct.cone_start == ConeStart::Normal,
+          "cone_axis_offset_voxels needs cone_start = normal (with axis, cone_offset_voxels is the axis offset)");
   check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }
 

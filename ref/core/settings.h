@@ -27,6 +27,11 @@ enum class ShadowCompare { Nearest, Linear };
 // How a shadow map stores depth: float (ours), or 24/16-bit UNORM -- an engine's depth texture
 // format (issue 21); the reference quantises its window depth as GL 4.5 section 2.3.5.2 converts.
 enum class ShadowDepthFormat { Depth32f, Depth24, Depth16 };
+// The tangent frame a diffuse cone set's directions are given in (issue 21): ours, the branchless
+// orthonormal basis sh::frame_from_normal; or the source design's (righier/gidemo voxelcone.frag
+// ortho()): t = normalize(n x (0.1, 0, 1)), or n x (1, 0, 0) when |n . normalize(0.1, 0, 1)| >=
+// 0.999, and b = n x t. stages/cone_sets.h.
+enum class ConeTangentFrame { Branchless, CrossHint };
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
@@ -50,6 +55,12 @@ struct VctSettings {
   ShadowCompare shadow_compare = ShadowCompare::Nearest;
   std::string pcf_taps;
   ShadowDepthFormat shadow_depth_format = ShadowDepthFormat::Depth32f;
+  // An engine's light matrices (issue 21; core/light_matrices.h): per light, world -> clip as 16
+  // numbers in GL's column-major order, "LIGHT:m0,...,m15; ..." (replaces that spot's frustum or
+  // directional light's fitted box); and directional lights' ortho boxes in the oracle's light
+  // view, "LIGHT:left,right,bottom,top,near,far; ...". Empty = the oracle's own.
+  std::string shadow_view_proj;
+  std::string shadow_ortho_box;
   LightModel light_model = LightModel::Gltf;
 
   // Voxelization.
@@ -75,6 +86,14 @@ struct VctSettings {
   float cone_quality = 0.5f;      // step = diameter * quality  (smaller = more steps)
   float cone_offset_voxels = 1.5f;  // start offset, in voxels of level 0
   ConeStart cone_start = ConeStart::Axis;  // along each cone's axis, or along the surface normal
+  // With cone_start = normal: the first sample this far along each cone's axis after the normal
+  // offset, in voxels of level 0 (the source design's ConeTracing `offset`). 0 = march from t = 0.
+  float cone_axis_offset_voxels = 0.0f;
+  // A diffuse cone set given as data (issue 21; stages/cone_sets.h): "x,y,z,aperture_deg,weight
+  // ..." with each direction in the tangent frame (z = normal; normalised by the reference).
+  // Empty = diffuse_cone_count / diffuse_cone_tilt_deg / diffuse_aperture_deg / diffuse_weighting.
+  std::string diffuse_cone_set;
+  ConeTangentFrame cone_tangent_frame = ConeTangentFrame::Branchless;
   float max_distance = 1.7320508f;  // in voxel-texture units ([0,1]^3 cube diagonal)
   float soft_shadow_aperture_deg = 10.0f;
   // Sample opacity corrected for the step length: 1 - (1 - a)^(step / voxel size at the lod)
@@ -137,5 +156,6 @@ std::string to_string(DiffuseWeighting w);
 std::string to_string(ConeStart c);
 std::string to_string(ShadowCompare c);
 std::string to_string(ShadowDepthFormat f);
+std::string to_string(ConeTangentFrame f);
 
 }  // namespace vct

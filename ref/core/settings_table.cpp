@@ -69,6 +69,13 @@ const std::vector<std::pair<ShadowDepthFormat, const char*>>& enum_names() {
   return m;
 }
 
+template <>
+const std::vector<std::pair<ConeTangentFrame, const char*>>& enum_names() {
+  static const std::vector<std::pair<ConeTangentFrame, const char*>> m{
+      {ConeTangentFrame::Branchless, "branchless"}, {ConeTangentFrame::CrossHint, "cross_hint"}};
+  return m;
+}
+
 template <typename Enum>
 std::string enum_name(Enum e) {
   for (const auto& [value, name] : enum_names<Enum>())
@@ -169,6 +176,7 @@ std::string to_string(DiffuseWeighting w) { return enum_name(w); }
 std::string to_string(ConeStart c) { return enum_name(c); }
 std::string to_string(ShadowCompare c) { return enum_name(c); }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
+std::string to_string(ConeTangentFrame f) { return enum_name(f); }
 
 const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
   // clang-format off
@@ -184,6 +192,8 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     choice("shadow_compare", &V::shadow_compare, "a PCF tap's compare: its texel (nearest) or GL LINEAR's bilinear weighting of 4 compares"),
     field("pcf_taps", &V::pcf_taps, any(), "PCF taps as texel offsets \"dx,dy dx,dy ...\" (empty = the pcf_kernel square)"),
     choice("shadow_depth_format", &V::shadow_depth_format, "stored shadow depth: float, or 24/16-bit UNORM rounded to nearest"),
+    field("shadow_view_proj", &V::shadow_view_proj, any(), "per light world->clip matrix \"LIGHT:m0,...,m15; ...\" (GL column-major; empty = the oracle's)"),
+    field("shadow_ortho_box", &V::shadow_ortho_box, any(), "directional lights' ortho boxes \"LIGHT:l,r,b,t,near,far; ...\" in the oracle's light view"),
     choice("light_model", &V::light_model, "KHR_lights_punctual (gltf) or the seed's falloff (docs/scenes.md)"),
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),
@@ -204,6 +214,9 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("cone_quality", &V::cone_quality, {0.01, 4.0, true, false}, "step = diameter x quality (smaller = more steps)", "u_cone_quality"),
     field("cone_offset_voxels", &V::cone_offset_voxels, any(), "cone start offset, in voxels of level 0"),
     choice("cone_start", &V::cone_start, "offset along each cone's axis, or the origin moved along the surface normal (march from t = 0)"),
+    field("cone_axis_offset_voxels", &V::cone_axis_offset_voxels, at_least(0), "with cone_start = normal: first sample this far along the axis, voxels"),
+    field("diffuse_cone_set", &V::diffuse_cone_set, any(), "diffuse cones as data \"x,y,z,aperture_deg,weight ...\", tangent frame (empty = count/tilt)"),
+    choice("cone_tangent_frame", &V::cone_tangent_frame, "tangent frame of the diffuse cones: ours (branchless) or the source design's (cross_hint)"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),

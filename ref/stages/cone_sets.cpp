@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/declared_cones.h"
 #include "core/error.h"
 
 namespace vct {
@@ -45,6 +46,38 @@ sh::DiffuseConeBlock diffuse_cone_block(const VctSettings& s) {
   return b;
 }
 
+namespace {
+std::vector<DiffuseConeSpec> declared_specs(const VctSettings& s) {
+  std::vector<DiffuseConeSpec> out;
+  for (const DeclaredCone& c : parse_declared_cones(s.diffuse_cone_set))
+    out.push_back({c.direction, radians(c.aperture_deg), c.weight});
+  return out;
+}
+}  // namespace
+
+std::vector<DiffuseConeSpec> diffuse_cone_specs(const VctSettings& s) {
+  std::vector<DiffuseConeSpec> out = declared_specs(s);
+  if (!out.empty()) return out;
+  const sh::DiffuseConeBlock block = diffuse_cone_block(s);
+  for (int i = 0; i < sh::diffuse_cone_count(block); ++i)
+    out.push_back({sh::diffuse_cone_direction(i, 0.0f, block), radians(s.diffuse_aperture_deg),
+                   sh::diffuse_cone_weight(i, block)});
+  return out;
+}
+
+sh::Frame diffuse_cone_frame(const vec3& n, ConeTangentFrame kind) {
+  if (kind == ConeTangentFrame::Branchless) return sh::frame_from_normal(n);
+  // righier/gidemo voxelcone.frag ortho(): the hint (0.1, 0, 1) unless n is within ~2.6 degrees
+  // of it, then (1, 0, 0); t = normalize(n x hint), b = n x t.
+  const vec3 hint(0.1f, 0.0f, 1.0f);
+  const vec3 w = std::abs(glm::dot(n, glm::normalize(hint))) < 0.999f ? hint : vec3(1.0f, 0.0f, 0.0f);
+  sh::Frame f;
+  f.t = glm::normalize(glm::cross(n, w));
+  f.b = glm::cross(n, f.t);
+  f.n = n;
+  return f;
+}
+
 ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, float min_lod,
                      bool prepare)
     : mips_(mips), volume_(volume), block_(diffuse_cone_block(s)) {
@@ -57,7 +90,13 @@ ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const Vct
   shadow_aperture_ = radians(s.soft_shadow_aperture_deg);
   random_rotation_ = s.random_rotation;
   frame_ = uint32_t(s.frame);
-  for (int i = 0; i < count_; ++i) unrotated_[size_t(i)] = sh::diffuse_cone_direction(i, 0.0f, block_);
+  tangent_frame_ = s.cone_tangent_frame;
+  declared_ = declared_specs(s);
+  if (!declared_.empty()) count_ = int(declared_.size());
+  rotation_block_ = block_;
+  if (!declared_.empty()) rotation_block_.shape.z = 2.0f * kPi;
+  for (int i = 0; i < count_; ++i)
+    unrotated_[size_t(i)] = declared_.empty() ? sh::diffuse_cone_direction(i, 0.0f, block_) : declared_[size_t(i)].local;
   if (prepare) {
     sampler_ = std::make_unique<MipSampler>(mips);
     if (!sampler_->usable()) sampler_.reset();
@@ -71,7 +110,7 @@ vec4 ConeFrame::trace(const Cone& cone, const MarchParams& params, std::vector<C
 
 DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
                                   std::vector<std::vector<ConeSample>>* records) const {
-  const sh::Frame frame = sh::frame_from_normal(n);
+  const sh::Frame frame = diffuse_cone_frame(n, tangent_frame_);
   DiffuseConeSet set;
   set.count = count_;
   if (records) records->assign(size_t(set.count), {});
@@ -81,14 +120,13 @@ DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
   for (int i = 0; i < set.count; ++i) {
     Cone& cone = set.geometry[size_t(i)];
     cone.origin = origin;
-    const vec3 local = unrotated ? unrotated_[size_t(i)] : sh::diffuse_cone_direction(i, rotation, block_);
-    cone.direction = glm::normalize(sh::frame_to_world(frame, local));
-    cone.aperture = diffuse_aperture_;
+    cone.direction = glm::normalize(sh::frame_to_world(frame, rotated(i, rotation, unrotated)));
+    cone.aperture = declared_.empty() ? diffuse_aperture_ : declared_[size_t(i)].aperture;
   }
   for (int i = 0; i < set.count; ++i)
     set.cones[size_t(i)] = trace(set.geometry[size_t(i)], params_, records ? &(*records)[size_t(i)] : nullptr);
   for (int i = 0; i < set.count; ++i) {
-    set.weights[size_t(i)] = sh::diffuse_cone_weight(i, block_);
+    set.weights[size_t(i)] = declared_.empty() ? sh::diffuse_cone_weight(i, block_) : declared_[size_t(i)].weight;
     set.radiance += set.weights[size_t(i)] * vec3(set.cones[size_t(i)]);
   }
   return set;
@@ -96,7 +134,16 @@ DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
 
 float ConeFrame::rotation_for_pixel(int x, int y) const {
   if (!random_rotation_) return 0.0f;
-  return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), frame_, block_);
+  return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), frame_, rotation_block_);
+}
+
+vec3 ConeFrame::rotated(int i, float rotation, bool unrotated) const {
+  if (unrotated) return unrotated_[size_t(i)];
+  if (declared_.empty()) return sh::diffuse_cone_direction(i, rotation, block_);
+  // A declared cone turns about the normal (z) by the rotation.
+  const vec3 d = declared_[size_t(i)].local;
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  return vec3(c * d.x - s * d.y, s * d.x + c * d.y, d.z);
 }
 
 vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
@@ -137,7 +184,9 @@ DiffuseConeSet trace_diffuse_cones(const VoxelMips& mips, const VoxelVolume& vol
 
 float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y) {
   if (!s.random_rotation) return 0.0f;
-  return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), uint32_t(s.frame), diffuse_cone_block(s));
+  sh::DiffuseConeBlock block = diffuse_cone_block(s);
+  if (!declared_specs(s).empty()) block.shape.z = 2.0f * kPi;  // a declared set turns a full circle
+  return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), uint32_t(s.frame), block);
 }
 
 Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness,

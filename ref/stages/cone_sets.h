@@ -25,6 +25,23 @@ constexpr int kMaxDiffuseCones = sh::MAX_DIFFUSE_CONES;
 /// Throws InputError for a count outside 1..kMaxDiffuseCones or a tilt outside (0, 90).
 sh::DiffuseConeBlock diffuse_cone_block(const VctSettings& s);
 
+/// One diffuse cone as the settings define it: its direction in the tangent frame (z = normal),
+/// full aperture (radians) and weight.
+struct DiffuseConeSpec {
+  vec3 local{0.0f, 0.0f, 1.0f};
+  float aperture = 0.0f;
+  float weight = 0.0f;
+};
+
+/// The diffuse cones before any rotation: the declared set (settings diffuse_cone_set,
+/// core/declared_cones.h) when given, else the count/tilt set of diffuse_cone_block with
+/// diffuse_aperture_deg.
+std::vector<DiffuseConeSpec> diffuse_cone_specs(const VctSettings& s);
+
+/// The tangent frame the diffuse cones are given in at unit normal n (settings
+/// cone_tangent_frame): sh::frame_from_normal, or the source design's cross-hint frame.
+sh::Frame diffuse_cone_frame(const vec3& n, ConeTangentFrame kind);
+
 /// Per-cone results of one diffuse cone set, kept for dumps and --explain (entries >= count unused).
 struct DiffuseConeSet {
   int count = 0;
@@ -62,6 +79,8 @@ class ConeFrame {
 
  private:
   vec4 trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const;
+  /// Cone i's tangent-frame direction turned by `rotation` about the normal.
+  vec3 rotated(int i, float rotation, bool unrotated) const;
 
   const VoxelMips& mips_;
   const VoxelVolume& volume_;
@@ -72,6 +91,11 @@ class ConeFrame {
   MarchParams base_params_;  // without min_lod: the specular cone's
   MarchParams shadow_params_;  // MarchParams::shadow_from_settings
   float diffuse_aperture_ = 0.0f, shadow_aperture_ = 0.0f;
+  // A declared cone set (diffuse_cone_set): each cone's own aperture and weight, rotated about n
+  // by the pixel's rotation; rotations then span a full turn (rotation_block_).
+  std::vector<DiffuseConeSpec> declared_;
+  sh::DiffuseConeBlock rotation_block_;
+  ConeTangentFrame tangent_frame_ = ConeTangentFrame::Branchless;
   bool random_rotation_ = false;
   uint32_t frame_ = 0;
   std::array<vec3, kMaxDiffuseCones> unrotated_{};  // sh::diffuse_cone_direction(i, 0, block)

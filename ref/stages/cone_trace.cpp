@@ -15,8 +15,14 @@ MarchParams MarchParams::from_settings(const VctSettings& s, int grid) {
   // Both conventions put the first sample cone_offset_voxels from the surface along the normal
   // cone; they differ for tilted cones (axis: offset x cos(tilt) above the surface) and in the
   // first sample's diameter (axis: 2 t tan(aperture/2); normal: one voxel, t = 0).
-  if (s.cone_start == ConeStart::Normal) p.normal_offset = offset;
-  else p.start_offset = offset;
+  // The normal start may also skip cone_axis_offset_voxels along the axis (the source design's
+  // ConeTracing offset after its normal offset; validate_settings keeps it 0 under axis).
+  if (s.cone_start == ConeStart::Normal) {
+    p.normal_offset = offset;
+    p.start_offset = s.cone_axis_offset_voxels / float(grid);
+  } else {
+    p.start_offset = offset;
+  }
   p.max_distance = s.max_distance;
   p.quality = s.cone_quality;
   p.step_correction = s.opacity_step_correction;

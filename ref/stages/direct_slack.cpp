@@ -68,7 +68,18 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
               glm::abs(direct_radiance(scene, maps, settings, points[0].position, nrm, v, m) - ref);
           precision = std::max(precision, std::max(d.x, std::max(d.y, d.z)));
         }
-      g.texture_slack.at(x, row, kSlackDirect) = slack + precision;
+      // Plus GL LINEAR's 8-bit sub-texel weights under an engine's linear shadow compare: each
+      // light's visibility moves by at most 2^-7 (docs/compare.md, the engine's PCF row), so its
+      // light by 2^-7 of what it gives unshadowed (direct_radiance without maps).
+      float weights = 0.0f;
+      if (n > 0 && settings.shadow_compare == ShadowCompare::Linear) {
+        const SurfaceMaterial m = evaluate_material(scene, points[0], lods.exact);
+        const vec3 nrm = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
+        const vec3 v = glm::normalize(eye - points[0].position);
+        const vec3 open = direct_radiance(scene, {}, settings, points[0].position, nrm, v, m);
+        weights = kLinearCompareWeightStep * std::max(open.x, std::max(open.y, open.z));
+      }
+      g.texture_slack.at(x, row, kSlackDirect) = slack + precision + weights;
     }
   });
 }

@@ -15,6 +15,12 @@
 
 namespace vct {
 
+/// How far one light's PCF visibility may move under GL LINEAR compare on a shadow sampler (an
+/// engine's shadow_compare = linear): 8 sub-texel bits per weight, 2^-8 per axis, 2^-7 in all
+/// (docs/compare.md, the engine's PCF row). The direct and voxel slacks add this times each
+/// light's unshadowed light.
+constexpr float kLinearCompareWeightStep = 1.0f / 128.0f;
+
 /// Fills channel kSlackDirect of g.texture_slack: per covered pixel, the
 /// largest |direct(candidate) - direct| over RGB, with `direct` the reference's image.direct.
 /// Every combination of the base colour, metallic-roughness and normal slots' LOD candidates is

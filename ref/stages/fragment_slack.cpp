@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "core/parallel.h"
+#include "stages/direct.h"
+#include "stages/direct_slack.h"
 #include "stages/texture_slack.h"
 #include "stages/voxel_lod.h"
 
@@ -105,6 +107,18 @@ float normal_precision_slack(const Scene& scene, const VoxelFragment& f, const S
   return slack;
 }
 
+/// GL LINEAR's 8-bit sub-texel weights on a shadow sampler (an engine's shadow_compare = linear):
+/// each tap's bilinear blend of compares moves by at most 2^-8 + 2^-8 = 2^-7 (its derivative in
+/// each weight is at most 1), so does the mean over the taps, and the fragment's light from each
+/// light by 2^-7 of that light's unshadowed contribution (docs/compare.md, the engine's PCF row).
+float linear_compare_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods,
+                           const VctSettings& settings) {
+  const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
+  // No maps: every light unshadowed; no emission or bounce (no shadow lookup moves them).
+  const vec3 open = diffuse_outgoing_radiance(scene, {}, settings, f.position, m.shading_normal, m.albedo);
+  return kLinearCompareWeightStep * largest_channel(open);
+}
+
 }  // namespace
 
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
@@ -122,6 +136,7 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
     if (m.normal_texture.present())
       slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
+    if (settings.shadow_compare == ShadowCompare::Linear) slack += linear_compare_slack(scene, f, l.exact, settings);
     out[size_t(i)] = slack;
   });
   return out;

@@ -106,16 +106,23 @@ Image render_particles(const Scene& scene, const GBuffer& g, const VctSettings& 
   return out;
 }
 
-void add_particles_to_voxels(const Scene& scene, const VctSettings& s, Volume& radiance) {
-  if (scene.emitters.empty() || !s.particles) return;
-  const int n = radiance.nx;
+std::vector<std::pair<ivec3, vec3>> particle_voxel_light(const Scene& scene, const VctSettings& s, int n) {
+  std::vector<std::pair<ivec3, vec3>> out;
+  if (scene.emitters.empty() || !s.particles) return out;
   const float voxel_size = scene.volume.size / float(n);
-  // Sequential in particle order: a fixed summation order keeps the bytes thread-independent.
   for (const sh::ParticleState& p : particles_at(scene, s.time)) {
     const vec3 t = scene.volume.to_texture(vec3(p.position_radius)) * float(n);
     const ivec3 v(glm::floor(t));
+    if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= n || v.y >= n || v.z >= n) continue;
+    out.emplace_back(v, sh::particle_voxel_radiance(p, voxel_size));
+  }
+  return out;
+}
+
+void add_particles_to_voxels(const Scene& scene, const VctSettings& s, Volume& radiance) {
+  // Sequential in particle order: a fixed summation order keeps the bytes thread-independent.
+  for (const auto& [v, add] : particle_voxel_light(scene, s, radiance.nx)) {
     if (!radiance.contains(v.x, v.y, v.z)) continue;
-    const vec3 add = sh::particle_voxel_radiance(p, voxel_size);
     float* px = radiance.voxel(v.x, v.y, v.z);
     for (int c = 0; c < 3; ++c) {
       px[c] += add[c];

@@ -30,4 +30,9 @@ Image render_particles(const Scene& scene, const GBuffer& g, const VctSettings& 
 /// centre (opacity untouched: fire is translucent). Particles outside the volume are skipped.
 void add_particles_to_voxels(const Scene& scene, const VctSettings& s, Volume& radiance);
 
+/// What add_particles_to_voxels adds to an n^3 grid, particle by particle in its order: the base
+/// voxel holding each particle's centre and sh::particle_voxel_radiance (particles outside the
+/// volume skipped; none when the scene has no emitters or s.particles is off).
+std::vector<std::pair<ivec3, vec3>> particle_voxel_light(const Scene& scene, const VctSettings& s, int n);
+
 }  // namespace vct

@@ -13,6 +13,7 @@
 #include "stages/multibounce.h"
 #include "stages/particles.h"
 #include "stages/inject.h"
+#include "stages/mips.h"
 #include "stages/raster.h"
 #include "stages/running_mean.h"
 #include "stages/shadow_map.h"
@@ -43,16 +44,22 @@ Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, const std:
 
 // Reduction::RunningMeanHalf: the voxels keep the exact mean (a value the racy running mean can
 // leave), and the interval of every value it can leave goes where the CAS interval goes, for the
-// comparison (stages/running_mean.h). The fragments' light is that of the first frame: with
-// bounces > 1 the interval is left out (the verdict then says it has none).
+// comparison (stages/running_mean.h). The fragments' light is the last frame's: with bounces > 1
+// it includes the bounce light traced in the reference's previous frame (r.bounce_input, whose
+// mips build_mips rebuilds bit for bit); the particles' light is added after the reduction, as
+// the frame adds it (add_light_to_interval).
 void add_running_mean_interval(const Scene& scene, const Voxelization& vox, const VctSettings& s, FrameResult& r) {
-  if (s.bounces > 1) {
-    r.info["running_mean_interval"] = "not computed: bounces > 1";
-    return;
-  }
   timed(r, "running_mean_interval", [&] {
-    const std::vector<vec3> values = fragment_radiance(scene, vox, r.shadow_maps, s);
+    std::vector<vec3> values;
+    if (r.bounce_input.voxel_count() > 0) {
+      const VoxelMips previous = build_mips(r.bounce_input, s.anisotropic);
+      const BounceLight bounce = make_bounce_light(scene, previous, s);
+      values = fragment_radiance(scene, vox, r.shadow_maps, s, &bounce);
+    } else {
+      values = fragment_radiance(scene, vox, r.shadow_maps, s);
+    }
     running_mean_interval_volumes(vox, values, r.voxels.cas_lo, r.voxels.cas_hi);
+    add_light_to_interval(particle_voxel_light(scene, s, vox.n), r.voxels.cas_lo, r.voxels.cas_hi);
   });
 }
 }  // namespace

@@ -61,4 +61,18 @@ void running_mean_interval_volumes(const Voxelization& vox, const std::vector<ve
   }
 }
 
+void add_light_to_interval(const std::vector<AddedLight>& additions, Volume& lo, Volume& hi) {
+  for (const AddedLight& a : additions) {
+    const auto& [v, add] = a;
+    if (!lo.contains(v.x, v.y, v.z)) continue;
+    float* l = lo.voxel(v.x, v.y, v.z);
+    float* h = hi.voxel(v.x, v.y, v.z);
+    for (int c = 0; c < 3; ++c) {
+      const float nl = l[c] + add[c], nh = h[c] + add[c];
+      l[c] = nl - half_ulp(nl);
+      h[c] = nh + half_ulp(nh);
+    }
+  }
+}
+
 }  // namespace vct

@@ -7,6 +7,7 @@
 // (docs/compare.md, "running-mean-half-interval").
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "core/volume.h"
@@ -37,5 +38,14 @@ ValueInterval running_mean_interval(const std::vector<float>& values);
 /// reference's interval volumes (VoxelGrid::cas_lo / cas_hi) when it models this reduction.
 void running_mean_interval_volumes(const Voxelization& vox, const std::vector<vec3>& values, Volume& lo,
                                    Volume& hi);
+
+/// The interval after light is added to the reduced voxels (the particles' additive light,
+/// stages/particles.h): each addition `add` at voxel v moves both ends by `add`, and the engine's
+/// binary16 store of the sum may round either way, so each end moves one more binary16 ulp of
+/// the new end outward (lo down, hi up). Additions are applied in the given order, as
+/// add_particles_to_voxels applies them. A voxel with no fragments gets [add - ulp, add + ulp]
+/// with alpha 0 (transparent light).
+using AddedLight = std::pair<ivec3, vec3>;  // (voxel, RGB added)
+void add_light_to_interval(const std::vector<AddedLight>& additions, Volume& lo, Volume& hi);
 
 }  // namespace vct

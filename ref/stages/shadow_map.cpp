@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
+#include "core/error.h"
+#include "core/light_matrices.h"
 #include "core/pcf_taps.h"
 #include "stages/cube_map.h"
 #include "stages/depth_raster.h"
@@ -121,11 +125,15 @@ mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds, const
 }
 
 
-mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume) {
+mat4 directional_light_view(const Light& light, const VoxelVolume& volume) {
   const vec3 dir = glm::normalize(light.direction);
   const vec3 center = volume.to_world(vec3(0.5f));
   // From one edge length behind the centre: outside the cube (its half diagonal is 0.87 of it).
-  const mat4 view = glm::lookAt(center - dir * volume.size, center, light_up(dir));
+  return glm::lookAt(center - dir * volume.size, center, light_up(dir));
+}
+
+mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume) {
+  const mat4 view = directional_light_view(light, volume);
   vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (int c = 0; c < 8; ++c) {
     const vec3 v = vec3(view * vec4(box_corner(volume.origin, volume.origin + vec3(volume.size), c), 1.0f));
@@ -146,10 +154,49 @@ vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds) {
   return vec2(far_plane / 20.0f, far_plane);
 }
 
+mat4 light_view_proj(const Scene& scene, size_t index, const VctSettings& settings) {
+  const Light& light = scene.lights[index];
+  const std::map<int, mat4> matrices = parse_light_matrices(settings.shadow_view_proj);
+  const std::map<int, std::array<float, 6>> boxes = parse_ortho_boxes(settings.shadow_ortho_box);
+  const auto matrix = matrices.find(int(index));
+  const auto box = boxes.find(int(index));
+  if (matrix != matrices.end() && box != boxes.end())
+    throw InputError("settings", "light " + std::to_string(index) + " has both a shadow_view_proj and a shadow_ortho_box");
+  if (matrix != matrices.end()) return matrix->second;
+  if (box != boxes.end()) {
+    if (!light.is_directional())
+      throw InputError("settings", "shadow_ortho_box: light " + std::to_string(index) + " is not a directional light");
+    const std::array<float, 6>& b = box->second;
+    return glm::ortho(b[0], b[1], b[2], b[3], b[4], b[5]) * directional_light_view(light, scene.volume);
+  }
+  return light.is_directional() ? directional_light_view_proj(light, scene.volume)
+                                : spot_light_view_proj(light, scene.bounds, settings);
+}
+
+namespace {
+// Every light a matrix or box names must exist and have a 2D map (a point light's cube keeps GL's
+// six faces, cube_map.h).
+void check_declared_lights(const Scene& scene, const VctSettings& settings) {
+  std::vector<int> named;
+  for (const auto& [i, m] : parse_light_matrices(settings.shadow_view_proj)) named.push_back(i);
+  for (const auto& [i, b] : parse_ortho_boxes(settings.shadow_ortho_box)) named.push_back(i);
+  for (int i : named) {
+    if (size_t(i) >= scene.lights.size())
+      throw InputError("settings", "shadow_view_proj/shadow_ortho_box: light " + std::to_string(i) +
+                                       " does not exist (the scene has " + std::to_string(scene.lights.size()) + ")");
+    if (scene.lights[size_t(i)].is_point())
+      throw InputError("settings", "shadow_view_proj: light " + std::to_string(i) +
+                                       " is a point light (its cube faces are fixed by GL 4.5 section 8.13)");
+  }
+}
+}  // namespace
+
 std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings& settings) {
+  check_declared_lights(scene, settings);
   std::vector<ShadowMap> maps;
   const int size = settings.shadow_map_size;
-  for (const Light& light : scene.lights) {
+  for (size_t index = 0; index < scene.lights.size(); ++index) {
+    const Light& light = scene.lights[index];
     ShadowMap m;
     if (light.is_point()) {
       const vec2 range = light_depth_range(light, scene.bounds);
@@ -160,8 +207,7 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
                         settings.shadow_depth_format);
       }
     } else {
-      m.view_proj = light.is_directional() ? directional_light_view_proj(light, scene.volume)
-                                           : spot_light_view_proj(light, scene.bounds, settings);
+      m.view_proj = light_view_proj(scene, index, settings);
       // Alpha-masked texels (foliage) let light through, as GL's depth_only.frag discards them.
       m.depth =
           depth_image(size, render_depth(scene.positions, scene.triangles, m.view_proj, size, size, &scene),

@@ -29,6 +29,15 @@ mat4 spot_light_view_proj(const Light& light, const Bounds3& scene_bounds, const
 /// inside the map and depth spans exactly the volume along the light.
 mat4 directional_light_view_proj(const Light& light, const VoxelVolume& volume);
 
+/// The view of directional_light_view_proj alone (an engine's shadow_ortho_box is given in it).
+mat4 directional_light_view(const Light& light, const VoxelVolume& volume);
+
+/// World -> light clip space of scene light `index` (spot or directional) as the settings make it:
+/// the engine's shadow_view_proj or shadow_ortho_box (core/light_matrices.h) where one names the
+/// light, else the rules above. Throws InputError for a box on a light that is not directional or
+/// a light given both.
+mat4 light_view_proj(const Scene& scene, size_t index, const VctSettings& settings);
+
 /// Near and far planes of a spot light and of a point light's cube faces (far = distance to the
 /// farthest corner of `scene_bounds` x1.01, near = far / 20).
 vec2 light_depth_range(const Light& light, const Bounds3& scene_bounds);

@@ -71,5 +71,23 @@ TEST(RunningMean, ValueBeyondTheFragmentsIsOutside) {
   EXPECT_LT(0.19f, iv.lo);
 }
 
+TEST(RunningMean, AddedLightMovesBothEndsAndOneUlpOutward) {
+  // Voxel (0,0,0) reduced to [0.5, 0.75], voxel (1,0,0) empty; 0.25 added to each. Occupied:
+  // [0.75 - 2^-11, 1.0 + 2^-10] (binary16 spacing is 2^-11 in [0.5, 1), 2^-10 in [1, 2)).
+  // Empty: [0.25 - 2^-12, 0.25 + 2^-12] (spacing 2^-12 in [0.25, 0.5)), alpha still 0.
+  Volume lo(2, 1, 1, 4), hi(2, 1, 1, 4);
+  lo.set_rgba(0, 0, 0, vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  hi.set_rgba(0, 0, 0, vec4(0.75f, 0.75f, 0.75f, 1.0f));
+  add_light_to_interval({{ivec3(0, 0, 0), vec3(0.25f)}, {ivec3(1, 0, 0), vec3(0.25f, 0.0f, 0.0f)}, {ivec3(5, 0, 0), vec3(1.0f)}},
+                        lo, hi);
+  EXPECT_EQ(lo.voxel(0, 0, 0)[0], 0.75f - 0x1p-11f);
+  EXPECT_EQ(hi.voxel(0, 0, 0)[0], 1.0f + 0x1p-10f);
+  EXPECT_EQ(lo.voxel(1, 0, 0)[0], 0.25f - 0x1p-12f);
+  EXPECT_EQ(hi.voxel(1, 0, 0)[0], 0.25f + 0x1p-12f);
+  EXPECT_EQ(hi.voxel(1, 0, 0)[3], 0.0f);
+  // Nothing added in G: the empty voxel's interval there is the smallest ulp around 0.
+  EXPECT_LE(hi.voxel(1, 0, 0)[1], 0x1p-23f);
+}
+
 }  // namespace
 }  // namespace vct
