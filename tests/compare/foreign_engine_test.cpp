@@ -201,8 +201,10 @@ TEST(ForeignEngine, UnknownConventionIsBadInput) {
 
 namespace vct::cmp {
 namespace {
-// The engine's PCF (issue 21: gidemo's GL LINEAR compare on a shadow sampler and taps at +-1/3
-// and +-1 texel on both axes). Its frame is the reference rendered with those settings; undeclared
+// The engine's PCF (issue 21): a synthetic engine with GL LINEAR compare on a shadow sampler and
+// taps at +-1/3 and +-1 texel on both axes. Not gidemo's own taps: its loops (voxelize.frag,
+// voxelcone.frag shadow()) give off-centre offsets i/n*2-1 = {-1,-1/3,+1/3} (n = 3) and
+// {-1,-1/2,0,+1/2} (n = 4), added before the projective divide so they scale with 1/w. Its frame is the reference rendered with those settings; undeclared
 // (judged by a reference that runs the oracle's 3x3 nearest PCF) it fails where the taps act --
 // image.direct first, and light injection (voxel.radiance) -- with the shadow map itself passing; declared (its manifest
 // "settings" carry shadow_compare and pcf_taps, so the reference reproduces them) it passes; and a
