@@ -65,11 +65,13 @@ const std::map<std::string, std::set<std::string>>& expected_catches() {
       {"wrong_axis", {"turn_x", "turn_y"}},
       // Last writer wins: the furnace's voxels hold Le / fragments instead of Le.
       {"lost_update", {"furnace"}},
-      // Half a ulp down: transform-invariant and within the linearity bound; only a reference's
-      // exact voxels see it.
-      {"half_truncate", {}},
-      // Level l from level l-2 at level l-1's coordinates: neither shift- nor turn-equivariant.
-      {"wrong_mip", {"shift_in_volume", "turn_x", "turn_y", "turn_z"}},
+      // Half a ulp down: transform-invariant and within the linearity bound, but every GL frame's
+      // own mip step shows it (docs/compare.md "Mip rounding") where its box means are not halves;
+      // measured: the x and y turns' frames (no lights: emission only) do not show it.
+      {"half_truncate", {"translate", "shift_in_volume", "turn_z"}},
+      // Level l from level l-2 at level l-1's coordinates: neither shift- nor turn-equivariant,
+      // and not the box filter of the frame's own level below (the mip step check).
+      {"wrong_mip", {"translate", "shift_in_volume", "turn_x", "turn_y", "turn_z"}},
       // Opacity above 1: the mip model's range check needs no reference; the furnace's bound.
       {"alpha_unclamped",
        {"translate", "shift_in_volume", "turn_x", "turn_y", "turn_z", "furnace"}},
