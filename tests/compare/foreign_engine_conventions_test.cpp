@@ -21,6 +21,7 @@
 #include "core/error.h"
 #include "core/light_matrices.h"
 #include "find_verdict.h"
+#include "racy_engine.h"
 #include "scene/gltf_loader.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
@@ -342,22 +343,7 @@ TEST(ForeignEngineConventions, RunningMeanOfTheLastBounceFramePassesDeclared) {
   const VoxelMips previous = build_mips(frame.bounce_input, s.vct.anisotropic);
   const BounceLight bounce = make_bounce_light(scene, previous, s.vct);
   const std::vector<vec3> values = fragment_radiance(scene, vox, frame.shadow_maps, s.vct, &bounce);
-  Volume racy = frame.voxels.radiance;
-  size_t b = 0;
-  while (b < vox.fragments.size()) {
-    size_t e = b;
-    while (e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel) ++e;
-    vec4 out(0.0f, 0.0f, 0.0f, 1.0f);
-    for (int k = 0; k < 3; ++k) {
-      std::vector<float> kept;
-      for (size_t i = e; i-- > b;)
-        if ((i - b) % 3 != 2) kept.push_back(values[i][k]);
-      out[k] = running_mean_half_sequential(kept);
-    }
-    const ivec3 c = vox.fragments[b].voxel;
-    racy.set_rgba(c.x, c.y, c.z, out);
-    b = e;
-  }
+  Volume racy = test::racy_running_mean(vox, values, frame.voxels.radiance);
   StageSet engine;
   engine.backend = "engine";
   engine.reduction = "running_mean";

@@ -11,6 +11,7 @@
 #include "compare/stage_compare.h"
 #include "core/error.h"
 #include "find_verdict.h"
+#include "racy_engine.h"
 #include "scene/gltf_loader.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
@@ -43,22 +44,7 @@ const Fixture& fixture() {
     // reverse order with every third one lost (a racing store overwrote it).
     const Voxelization vox = voxelize_gpu_rule(scene, x.s.vct.grid, x.frame.facts.sample_positions);
     const std::vector<vec3> values = fragment_radiance(scene, vox, x.frame.shadow_maps, x.s.vct);
-    x.engine_voxels = x.frame.voxels.radiance;
-    size_t b = 0;
-    while (b < vox.fragments.size()) {
-      size_t e = b;
-      while (e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel) ++e;
-      const ivec3 c = vox.fragments[b].voxel;
-      vec4 out(0.0f, 0.0f, 0.0f, 1.0f);
-      for (int k = 0; k < 3; ++k) {
-        std::vector<float> kept;
-        for (size_t i = e; i-- > b;)
-          if ((i - b) % 3 != 2) kept.push_back(values[i][k]);
-        out[k] = running_mean_half_sequential(kept);
-      }
-      x.engine_voxels.set_rgba(c.x, c.y, c.z, out);
-      b = e;
-    }
+    x.engine_voxels = test::racy_running_mean(vox, values, x.frame.voxels.radiance);
     return x;
   }();
   return f;
