@@ -13,6 +13,7 @@
 #include "pt/progress.h"
 #include "stages/pipeline.h"
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
+#include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
 #endif
 
@@ -70,6 +71,7 @@ BackendRun run_gl_backend(const Scene& scene, const Settings& s, const GlFlags& 
 void check_gl_backend_accepts(const Scene& scene, const Settings& s, const GlFlags& flags) {
 #ifdef VCT_HAVE_GL
   gl::check_gl_accepts(scene, s, {flags.device, flags.fault});
+  gl::check_gl_device_exists(flags.device);
 #else
   (void)scene, (void)s, (void)flags;
 #endif

@@ -110,6 +110,11 @@ bool device_matches(const EglDevice& d, const std::string& name) {
          contains_ignoring_case(d.render_node, name);
 }
 
+InputError no_device_with_index(int index, size_t count) {
+  return InputError("--gl-device", "no EGL device " + std::to_string(index) + " (this machine has " +
+                                       std::to_string(count) + "; `vct info --gl` lists them)");
+}
+
 }  // namespace
 
 bool GlContext::open(void* display_handle, const std::string& description, std::string& why) {
@@ -150,9 +155,7 @@ GlContext::GlContext(const std::string& device_spec) {
   auto note = [&] { tried += (tried.empty() ? "" : "; ") + why; };
   switch (spec.kind) {
     case DeviceSpec::Kind::Index:
-      if (spec.index >= int(devices.size()))
-        throw InputError("--gl-device", "no EGL device " + std::to_string(spec.index) + " (this machine has " +
-                                            std::to_string(devices.size()) + "; `vct info --gl` lists them)");
+      if (spec.index >= int(devices.size())) throw no_device_with_index(spec.index, devices.size());
       if (open(device_display(devices[size_t(spec.index)]), describe(devices[size_t(spec.index)]), why)) return;
       throw EnvironmentError("GL backend: " + why);
     case DeviceSpec::Kind::Surfaceless:
@@ -191,6 +194,24 @@ GlContext::GlContext(const std::string& device_spec) {
         }
       throw EnvironmentError("GL backend: no OpenGL 4.5 core context on any EGL device or Mesa surfaceless (" +
                              (tried.empty() ? std::string("no EGL devices, no surfaceless platform") : tried) + ")");
+  }
+}
+
+void check_gl_device_exists(const std::string& device_spec) {
+  const DeviceSpec spec = parse_device_spec(device_spec);
+  if (spec.kind == DeviceSpec::Kind::Index) {
+    const size_t count = list_egl_devices().size();
+    if (spec.index >= int(count)) throw no_device_with_index(spec.index, count);
+  } else if (spec.kind == DeviceSpec::Kind::Name) {
+    for (const EglDevice& d : list_egl_devices())
+      if (device_matches(d, spec.name)) return;
+    // The name may be in GL_RENDERER / GL_VENDOR only, which need a context: the constructor
+    // resolves it and throws InputError when no device matches. A device that exists but cannot
+    // give a context is the GL frame's own failure (reported by the run), not bad input.
+    try {
+      GlContext probe(device_spec);
+    } catch (const EnvironmentError&) {
+    }
   }
 }
 

@@ -8,6 +8,12 @@
 
 namespace vct::gl {
 
+/// Throws vct::InputError when `device_spec` names an EGL device this machine does not have (an
+/// index past the end, a name no device matches), as GlContext's constructor would, so a command
+/// refuses it before its run directory exists. Opens a probe context only for a name that no
+/// device's EGL strings contain (GL_RENDERER needs one).
+void check_gl_device_exists(const std::string& device_spec);
+
 class GlContext {
  public:
   /// Creates and makes current a 4.5 core context on the display `device_spec` names

@@ -149,7 +149,8 @@ TEST(RenderCli, BadInputIsOneLineAndExitTwo) {
 
 // What a backend refuses fails before the run directory is created (ref/io/run_dir.h): one line,
 // exit 2, and no directory (no INCOMPLETE left to tell from a killed run). The GL refusals are
-// found without a context (gl::check_gl_accepts), so this runs on machines without a GL driver.
+// found without a working driver (gl::check_gl_accepts, gl::check_gl_device_exists: a device
+// name no EGL string matches is probed on each device, and a machine with none refuses it too).
 TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
   const std::filesystem::path config = test::temp_dir() / "depth16.json";
   std::ofstream(config) << R"({"vct": {"shadow_depth_format": "depth16"}})";
@@ -165,6 +166,9 @@ TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
       {"validate --no-report --spp 1" + cfg, "settings: the GL backend runs the pcf_kernel square"},
       {"validate --no-report --spp 1 --sweep shadow_depth_format=depth32f,depth16",
        "settings: the GL backend runs the pcf_kernel square"},
+      // validate opens its GL context after the run directory exists: the device is checked first.
+      {"validate --no-report --spp 1 --gl-device 99", "--gl-device: no EGL device 99"},
+      {"validate --no-report --spp 1 --gl-device no-such-gpu", "--gl-device: no EGL device matches 'no-such-gpu'"},
       {"metamorphic --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
   };
   bool no_gl_build = false;
@@ -178,7 +182,9 @@ TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
     no_gl_build = no_gl_build || r.err.find("GL backend not built") != std::string::npos;
     EXPECT_EQ(r.exit_code, no_gl_build ? 3 : 2) << c.args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
-    if (!no_gl_build) EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    if (!no_gl_build) {
+      EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    }
     EXPECT_FALSE(std::filesystem::exists(out)) << c.args << " left its run directory behind";
   }
   // The reference runs the same setting.
