@@ -15,7 +15,8 @@ export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 configure() {  # dir, extra cmake args...
   local dir=$1
   shift
-  [ -f "$dir/build.ninja" ] || cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  # Always (re)configured: a build dir made before a change of the sanitizer flags picks it up.
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DVCT_BUILD_BENCH=OFF "$@"
 }
 
