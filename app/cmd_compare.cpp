@@ -56,6 +56,9 @@ bool is_volume(const std::string& p) { return fs::path(p).extension() == ".nrrd"
 std::unique_ptr<RunDir> open_out_run(const CompareArgs& a) {
   if (a.out.empty()) return nullptr;
   auto run = std::make_unique<RunDir>(a.out, RunRole::Run);
+  // The masks are this comparison's alone: a mask left by an earlier comparison into the same --out
+  // (another stage, another pair) would read as one of this verdict's.
+  fs::remove_all(fs::path(a.out) / "masks");
   run->keep_existing_json();
   if (!run->json().contains("command")) run->json()["command"] = "compare";
   return run;

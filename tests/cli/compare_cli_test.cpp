@@ -61,6 +61,16 @@ TEST_F(CompareCli, BadInputIsExitTwo) {
   EXPECT_EQ(run_vct("compare " + p("ext") + " " + p("ext")), 2);
 }
 
+// Rerunning into the same --out leaves only this comparison's masks: a mask of another stage from
+// an earlier run would be read as part of this verdict.
+TEST_F(CompareCli, RerunIntoTheSameOutKeepsNoStaleMasks) {
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("b.exr") + " --stage image.direct --out " + p("out")), 1);
+  ASSERT_TRUE(fs::exists(p("out/masks/image_direct_mask.png")));
+  EXPECT_EQ(run_vct("compare " + p("a.exr") + " " + p("a.exr") + " --out " + p("out")), 0);
+  EXPECT_TRUE(fs::exists(p("out/masks/image_final_mask.png")));
+  EXPECT_FALSE(fs::exists(p("out/masks/image_direct_mask.png")));
+}
+
 // --out is a run directory like every command's (ref/io/run_dir.h): finished, it holds a
 // complete run.json and neither the INCOMPLETE marker nor the lock.
 TEST_F(CompareCli, OutIsAFinishedRunDirectory) {
