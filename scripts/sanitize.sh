@@ -8,6 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=$(nproc)
+# ccache keys on relative paths under the checkout (as scripts/setup.sh), so a clone in another
+# folder (CI's) hits the objects an earlier clone compiled with the same flags.
+export CCACHE_BASEDIR="$PWD"
 what=${1:-all}
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
