@@ -1,5 +1,5 @@
-// The isotropic mip step of the GL backend, judged on the test's own level below (docs/compare.md
-// "Mip rounding"). gl/shaders/mip_iso.comp fetches the eight children with texelFetch, sums them
+// The isotropic and anisotropic mip steps of the GL backend, judged on the test's own level below
+// (docs/compare.md "Mip rounding"). gl/shaders/mip_iso.comp fetches the eight children with texelFetch, sums them
 // in float, scales by 1/8 (exact) and rounds explicitly (gl/shaders/half_round.glsl: to nearest
 // even for RGBA16F; to the nearest unorm8 step for RGBA8), so each stored value is a function of
 // the children up to the float sum's rounding. Where the interval that rounding leaves holds no
@@ -25,5 +25,12 @@ struct MipRoundingCheck {
 /// parent: level L (n³), child: the same test's level L-1 ((2n)³), storage "rgba16f" | "rgba8"
 /// (anything else: nothing checked). Sizes that do not fit: nothing checked.
 MipRoundingCheck check_iso_mip_rounding(const Volume& child, const Volume& parent, const std::string& storage);
+
+/// The anisotropic step of gl/shaders/mip_aniso.comp for `direction` (AnisoDir: +x, −x, +y, −y,
+/// +z, −z): along the direction's axis the front child is composited over the back one, the four
+/// pairs are averaged, alpha is clamped to 1, then rounded as for the isotropic step. `child` is
+/// the shared base level for level 1, else the same direction's level below.
+MipRoundingCheck check_aniso_mip_rounding(const Volume& child, const Volume& parent, const std::string& storage,
+                                          int direction);
 
 }  // namespace vct::cmp

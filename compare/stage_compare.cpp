@@ -768,23 +768,28 @@ void explain_by_declared_mip_scale(StageVerdict& v, const Volume& ref, const Vol
   v.extra["explained_by_declared_mip_scale"] = explained;
 }
 
-// Our GL backend's isotropic mip step, judged on the test's own level below: exact up to the float
-// sum's rounding (compare/mip_rounding.h), so a wrong rounding fails here even where it hides in
-// the end-to-end bound. Only a set our GL backend rendered on a driver (its facts name the
+// Our GL backend's mip step (isotropic or anisotropic), judged on the test's own level below:
+// exact up to the float arithmetic's rounding (compare/mip_rounding.h), so a wrong rounding fails
+// here even where it hides in the end-to-end bound. Only a set our GL backend rendered on a driver (its facts name the
 // renderer): a frame that merely calls itself "gl" (the compare tests' simulated GL frames, built
 // from the reference's unrounded mips) has no such rounding to check.
 void judge_mip_step_rounding(StageVerdict& v, const StageRow& row, int level, const StageSet& ts) {
   if (ts.backend != "gl" || ts.facts.renderer.empty() || level < 1) return;
   const std::string below = level == 1 ? std::string(st::kVoxelRadiance) : stage_name(row, level - 1);
   if (!ts.volumes.count(below)) return;
-  const MipRoundingCheck r = check_iso_mip_rounding(ts.volumes.at(below), ts.volumes.at(stage_name(row, level)), ts.storage);
+  const Volume& child = ts.volumes.at(below);
+  const Volume& parent = ts.volumes.at(stage_name(row, level));
+  const int direction = aniso_direction(row);
+  const MipRoundingCheck r = direction < 0 ? check_iso_mip_rounding(child, parent, ts.storage)
+                                           : check_aniso_mip_rounding(child, parent, ts.storage, direction);
   if (!r.checked) return;
   v.extra["step_rounding_checked"] = r.checked;
   v.extra["step_rounding_violations"] = r.violations;
   if (!r.violations) return;
   v.verdict = Verdict::Fail;
   v.note += "; " + std::to_string(r.violations) + " of " + std::to_string(r.checked) +
-            " values are not the box filter of the test's own " + below + " rounded as the storage rounds (first at (" +
+            " values are not the " + (direction < 0 ? "box filter" : "front-to-back composite") + " of the test's own " +
+            below + " rounded as the storage rounds (first at (" +
             std::to_string(r.worst_x) + ", " + std::to_string(r.worst_y) + ", " + std::to_string(r.worst_z) +
             "); docs/compare.md \"Mip rounding\")";
 }
@@ -832,7 +837,7 @@ StageVerdict compare_mip(const std::string& stage, const StageSet& rs, const Sta
   v.extra["alpha_out_of_range"] = bad_alpha;
   v.extra["level"] = level;
   if (ts.conventions.mip_scale != 1.0) explain_by_declared_mip_scale(v, rs.volumes.at(stage), t, level, b, ts.conventions.mip_scale, opt, lt, slack);
-  if (!aniso) judge_mip_step_rounding(v, *ref.row, level, ts);
+  judge_mip_step_rounding(v, *ref.row, level, ts);
   return v;
 }
 

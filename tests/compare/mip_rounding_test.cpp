@@ -7,6 +7,8 @@
 
 #include "compare/mip_rounding.h"
 #include "compare/stage_compare.h"
+#include "stages/reduction.h"
+#include "stages/stage_types.h"
 #include "find_verdict.h"
 
 namespace vct::cmp {
@@ -103,6 +105,45 @@ TEST(MipRounding, CompareFailsOurGlMipThatTruncatesAndOnlyOurs) {
   const StageVerdict& other = test::find(foreign, "mip.iso.1");
   EXPECT_NE(other.verdict, Verdict::Fail) << other.note;
   EXPECT_EQ(other.extra.count("step_rounding_violations"), 0u);
+}
+
+// The anisotropic step (mip_aniso.comp): along x, the front child over the back one, the four
+// pairs averaged. Children: in x = 0 red 0 and opacity 0.5 everywhere, but the pair at (y, z) =
+// (0, 0) has red 0.5; in x = 1 opacity 0.5, and red 3 * 2^-12 at (y, z) = (1, 0). Marching +x
+// (front x = 0): red = 0.25 (0.5 + 0.5 * 3 * 2^-12) = 2^-3 + 3 * 2^-15 = 1024.75 units, so 1025
+// only; opacity 0.5 + 0.5 * 0.5 = 0.75 in every pair, exact. Marching -x (front x = 1): red =
+// 0.25 (3 * 2^-12 + 0.5 * 0.5) = 0.0625 + 3 * 2^-14 (units of 2^-14 there): another value.
+Pair aniso_pair(float red) {
+  Pair p;
+  for (int k = 0; k < 8; ++k) p.child.voxel(k & 1, k >> 1 & 1, k >> 2)[3] = 0.5f;
+  p.child.voxel(0, 0, 0)[0] = 0.5f;
+  p.child.voxel(1, 1, 0)[0] = 3.0f * std::ldexp(1.0f, -12);
+  p.parent.voxel(0, 0, 0)[0] = red;
+  p.parent.voxel(0, 0, 0)[3] = 0.75f;
+  return p;
+}
+
+TEST(MipRounding, AnisoFrontToBackCompositeRoundsToTheOnlyAdmissibleHalf) {
+  const Pair good = aniso_pair(1025 * kUnit);
+  const MipRoundingCheck r = check_aniso_mip_rounding(good.child, good.parent, "rgba16f", kPosX);
+  EXPECT_EQ(r.checked, 4u);
+  EXPECT_EQ(r.violations, 0u);
+  const Pair truncated = aniso_pair(1024 * kUnit);
+  EXPECT_EQ(check_aniso_mip_rounding(truncated.child, truncated.parent, "rgba16f", kPosX).violations, 1u);
+  // The same children marched the other way composite the other child in front: 1025 units is not it.
+  EXPECT_EQ(check_aniso_mip_rounding(good.child, good.parent, "rgba16f", kNegX).violations, 1u);
+  Pair back = aniso_pair(0.0625f + 3.0f * std::ldexp(1.0f, -14));
+  EXPECT_EQ(check_aniso_mip_rounding(back.child, back.parent, "rgba16f", kNegX).violations, 0u);
+}
+
+TEST(MipRounding, AnisoOpacityIsClampedToOneAndNothingAbove) {
+  // Opacity 0.9 in front of 0.9: 0.99 composited; 1.8 if added (GL fault alpha_unclamped).
+  Pair p;  // colour 0 everywhere
+  for (int k = 0; k < 8; ++k) p.child.voxel(k & 1, k >> 1 & 1, k >> 2)[3] = 0.9f;
+  p.parent.voxel(0, 0, 0)[3] = quantize_half(0.99f);
+  EXPECT_EQ(check_aniso_mip_rounding(p.child, p.parent, "rgba16f", kPosY).violations, 0u);
+  p.parent.voxel(0, 0, 0)[3] = 1.0f;
+  EXPECT_EQ(check_aniso_mip_rounding(p.child, p.parent, "rgba16f", kPosY).violations, 1u);
 }
 
 }  // namespace
