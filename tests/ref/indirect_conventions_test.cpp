@@ -69,16 +69,26 @@ TEST(IndirectDiffuseGain, ScalesTheStageAndItsCompositeTerm) {
   EXPECT_EQ(covered, 256);
 }
 
-TEST(IndirectFresnel, SchlickGrowsTheSpecularTermAtGrazingPixels) {
-  // Ours (f90 = 1) gives F > 0.04 wherever n.v < 1: every pixel of the box but the centre of the
-  // back wall sees a larger specular term than under schlick_roughness with roughness 1.
+TEST(IndirectFresnel, TheTwoFresnelsDifferByTheSchlickTermPerPixel) {
+  // The same cones under both: per pixel, ours (f90 = 1) / schlick_roughness (roughness 1, F = f0)
+  // is (0.04 + 0.96 (1 - n.v)^5) / 0.04, n.v from the G-buffer and the camera.
+  const Scene scene = test::closed_box(vec3(0.5f), vec3(1.0f));
   const FrameResult ours = box_frame(1.0f, IndirectFresnel::Schlick);
   const FrameResult theirs = box_frame(1.0f, IndirectFresnel::SchlickRoughness);
-  int larger = 0;
+  int grazing = 0, checked = 0;
   for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 16; ++x)
-      larger += ours.images.specular_term.at(x, y, 0) > theirs.images.specular_term.at(x, y, 0) * 1.001f;
-  EXPECT_GT(larger, 200);
+    for (int x = 0; x < 16; ++x) {
+      const vec3 p = ours.gbuffer.position.rgb(x, y), n = ours.gbuffer.normal.rgb(x, y);
+      const float m = 1.0f - std::max(glm::dot(n, scene.camera.to_eye(p)), 0.0f);
+      const float ratio = (0.04f + 0.96f * m * m * m * m * m) / 0.04f;
+      if (theirs.images.specular_term.at(x, y, 0) < 1e-4f) continue;  // a cone that saw nothing
+      ++checked;
+      EXPECT_NEAR(ours.images.specular_term.at(x, y, 0) / theirs.images.specular_term.at(x, y, 0), ratio,
+                  1e-4f * ratio);
+      grazing += ratio > 1.5f;
+    }
+  EXPECT_GT(checked, 200);
+  EXPECT_GT(grazing, 10);  // the corners of the view: F at least 0.06 where schlick_roughness keeps 0.04
 }
 
 }  // namespace
