@@ -47,5 +47,4 @@ TEST(GlIndirectGain, GainedDiffuseMatchesTheCpuOnTheSameInputs) {
   EXPECT_GT(diff1, 0.5 * total1);  // 0.85 of the ungained light: GL ignoring the uniform fails above
 }
 
-}  // namespace
 }  // namespace vct::gl::test
