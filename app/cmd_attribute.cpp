@@ -63,9 +63,10 @@ int run_attribute(const AttributeOptions& o) {
   const Settings s = resolve_settings(o.common, attribute_defaults());
   attr::check_components(o.components, "--components");
   if (o.rays < 1) throw InputError("--rays", "must be >= 1 (got " + std::to_string(o.rays) + ")");
+  attr::check_attributable(s.vct);  // before the run directory: no half-written output
   for (const std::string& spec : o.sweeps) {  // bad specs and values fail before any rendering
     const auto [key, values] = parse_sweep(spec);
-    for (const std::string& v : values) apply_sweep_value(s, key, v);
+    for (const std::string& v : values) attr::check_attributable(apply_sweep_value(s, key, v).vct);
   }
   const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);
   RunDir run(o.common.out.empty() ? default_out_dir("attribute", o.scene) : o.common.out, RunRole::Run);

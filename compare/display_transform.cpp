@@ -68,6 +68,22 @@ double DisplayTransform::carry_bound(double r, double b) const {
   return std::max(apply(r + b) - at, at - apply(r - b)) + quantisation_allowance();
 }
 
+bool DisplayTransform::decodable() const {
+  return (op == ToneOperator::None || op == ToneOperator::Reinhard) && gamma >= 1.0;
+}
+
+double DisplayTransform::decode(double stored) const {
+  double y = std::max(stored, 0.0);
+  if (bits > 0 || op == ToneOperator::Reinhard) y = std::min(y, 1.0);
+  if (gamma != 1.0) y = std::pow(y, gamma);
+  if (op == ToneOperator::Reinhard) {
+    // x / (1 + x) < 1 for every finite x: a stored 1 is any value within a step of 1.
+    y = std::min(y, 1.0 - 0.5 * (bits > 0 ? quantisation_allowance() : 1e-6));
+    y = y / (1.0 - y);
+  }
+  return y / exposure;
+}
+
 DisplayTransform read_display_transform(const std::string& manifest, const nlohmann::json& j) {
   if (!j.is_object()) throw InputError(manifest, "conventions.display must be an object (docs/external_format.md)");
   DisplayTransform d;

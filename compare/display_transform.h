@@ -36,6 +36,15 @@ struct DisplayTransform {
   /// conversion return either of the two nearest values (it only recommends rounding to nearest,
   /// which would need half a step); 0 when not quantised.
   double quantisation_allowance() const;
+  /// Whether the transform is concave in the linear value (operator none or reinhard, gamma >= 1,
+  /// any exposure and clamp): then |D(a + r) - D(b + r)| <= |D(a) - D(b)| for every r >= 0, so a
+  /// display-encoded input decoded within one step of its display value keeps a sum built on it
+  /// within one step too (docs/compare.md, "Display transform"). ACES' toe is convex.
+  bool decodable() const;
+  /// A linear value whose continuous transform is the stored value `stored` (the inverse of
+  /// apply()); a saturated stored 1 decodes to the value half a step below 1 where the operator
+  /// never reaches 1 (reinhard). Only for decodable() transforms.
+  double decode(double stored) const;
 };
 
 /// Reads conventions.display; InputError naming `manifest` and the key on anything wrong.

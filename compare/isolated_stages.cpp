@@ -1,5 +1,7 @@
 #include "compare/isolated_stages.h"
 
+#include <algorithm>
+
 #include "compare/tolerance.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
@@ -12,9 +14,26 @@
 
 namespace vct::cmp {
 
-FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s) {
+DirectInput direct_input_of(const DisplayTransform* display) {
+  if (!display || !display->applies_to(stage_names::kImageDirect)) return DirectInput::Linear;
+  return display->decodable() ? DirectInput::Decoded : DirectInput::Undecodable;
+}
+
+void decode_display_direct(const DisplayTransform& display, Image& direct) {
+  for (int y = 0; y < direct.height; ++y)
+    for (int x = 0; x < direct.width; ++x)
+      for (int c = 0; c < std::min(direct.channels, 3); ++c)
+        direct.at(x, y, c) = float(display.decode(direct.at(x, y, c)));
+}
+
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                     const DisplayTransform* display) {
   FrameResult r = test;
   r.backend = "ref-on-" + test.backend + "-inputs";
+  // An engine's display-encoded direct light is not radiance: the composite adds it decoded
+  // (docs/compare.md, "Display transform"). With soft shadows it is re-traced anyway.
+  if (direct_input_of(display) == DirectInput::Decoded && !s.soft_shadows)
+    decode_display_direct(*display, r.images.direct);
   trace_cone_stages(scene, s, r);
   return r;
 }
@@ -72,9 +91,16 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool so
 
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt) {
-  const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s);
-  apply_isolated_verdicts(end_to_end, compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt),
-                          s.soft_shadows);
+  const DisplayTransform* display = &test_set.conventions.display;
+  const DirectInput direct = s.soft_shadows ? DirectInput::Linear : direct_input_of(display);
+  const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s, display);
+  CompareOptions iso_opt = opt;
+  iso_opt.direct_decoded_from_display = direct == DirectInput::Decoded;
+  Report isolated = compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, iso_opt);
+  if (direct == DirectInput::Undecodable)
+    for (StageVerdict& v : isolated.stages)
+      if (v.stage == stage_names::kImageFinal) v.verdict = Verdict::Missing;  // end-to-end verdict stays
+  apply_isolated_verdicts(end_to_end, isolated, s.soft_shadows);
   // Multibounce: the last frame's voxels on the test's own bounce input.
   if (std::optional<VoxelGrid> grid = reference_voxels_on_test_bounce_input(scene, test, s)) {
     FrameResult r = test;

@@ -10,6 +10,7 @@
 
 #include <optional>
 
+#include "compare/display_transform.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "compare/verdict.h"
@@ -21,8 +22,21 @@ namespace vct::cmp {
 
 /// The reference's cone-traced images computed from `test`'s G-buffer, direct light, particles
 /// and mips; the other stages are copied from `test`. Soft shadows (cone-traced direct light)
-/// are re-traced too when enabled.
-FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s);
+/// are re-traced too when enabled. `display`: the test's declared display transform; when it
+/// names image.direct, the composite adds that image decoded to linear light
+/// (DisplayTransform::decode; decode_display_direct).
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                     const DisplayTransform* display = nullptr);
+
+/// How the test's image.direct enters the re-traced composite under a declared display
+/// transform: as it is (not display-encoded), decoded (a concave transform: image.final's bound
+/// grows by one step), or not at all (a transform no decoded value can be bounded through:
+/// image.final keeps its end-to-end verdict).
+enum class DirectInput { Linear, Decoded, Undecodable };
+DirectInput direct_input_of(const DisplayTransform* display);
+
+/// `direct` (display-encoded by `display`, colour channels) decoded to linear light in place.
+void decode_display_direct(const DisplayTransform& display, Image& direct);
 
 /// A multibounce frame's voxels as the reference computes them from the test's own bounce input:
 /// its last frame injected again with the bounce light traced in mips it builds from

@@ -13,6 +13,7 @@
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "stages/shadow_map.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
@@ -197,12 +198,18 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
         for (int c = 0; c < std::min(ref.channels, 3); ++c) shown.at(x, y, c) = float(display->apply(ref.at(x, y, c)));
     v.bound += "; carried through the declared display transform (" + to_string(display->op) + ", exposure " +
                std::to_string(display->exposure) + ", gamma " + std::to_string(display->gamma) + ", " +
-               std::to_string(display->bits) + " bits): its change over [r - b, r + b] + half a step";
+               std::to_string(display->bits) + " bits): its change over [r - b, r + b] + one step";
   }
+  // The re-traced composite built on a decoded display-encoded direct light is within one more
+  // step of the exact one (DisplayTransform::decodable).
+  const double decoded_input = displayed && opt.direct_decoded_from_display && stage == stage_names::kImageFinal
+                                   ? display->quantisation_allowance()
+                                   : 0.0;
+  if (decoded_input > 0) v.bound += " + one step for image.direct decoded from display";
   const Image& judged = displayed ? shown : ref;
   auto pixel_bound = [&](int x, int y, int c) {
     const double b = linear_bound(x, y, c);
-    return displayed && c < 3 ? display->carry_bound(ref.at(x, y, c), b) : b;
+    return displayed && c < 3 ? display->carry_bound(ref.at(x, y, c), b) + decoded_input : b;
   };
   for (int y = 0; y < ref.height; ++y)
     for (int x = 0; x < ref.width; ++x) {

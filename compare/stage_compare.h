@@ -22,6 +22,11 @@ struct CompareOptions {
   // shadow_depth_format: one UNORM step q = 1/(2^b - 1) (0 for float); the depth bound grows by
   // 2q (docs/compare.md, the shadow_depth_format row).
   double depth_quantum = 0.0;
+  // Set by judge_cones_on_test_inputs (compare/isolated_stages.h) when the re-traced composite
+  // added the test's display-encoded image.direct decoded through the declared transform:
+  // image.final's display bound grows by one step of its bit depth (docs/compare.md, "Display
+  // transform").
+  bool direct_decoded_from_display = false;
 };
 
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});

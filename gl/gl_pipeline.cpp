@@ -74,6 +74,18 @@ void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOpti
     throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
                                  "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
                                  "shadow_ortho_box are for the reference");
+  if (settings.vct.indirect_fresnel != IndirectFresnel::Schlick)
+    // The composite's Fresnel is the shared sh::fresnel_schlick in indirect.frag; an engine's
+    // other one (issue 21) is the reference's only.
+    throw InputError("settings", "the GL backend runs the oracle's composite Fresnel; indirect_fresnel = "
+                                 "schlick_roughness is for the reference");
+  const VctSettings& v = settings.vct;
+  if (v.specular_offset_voxels >= 0.0f || v.specular_quality > 0.0f || v.specular_aperture != SpecularAperture::Ggx ||
+      v.specular_view != SpecularView::Surface)
+    // indirect.frag traces the specular cone with the diffuse cones' march and the shared
+    // sh::specular_cone_aperture; an engine's own specular cone (issue 21) is the reference's only.
+    throw InputError("settings", "the GL backend runs the oracle's specular cone; specular_offset_voxels, "
+                                 "specular_quality, specular_aperture and specular_view are for the reference");
 }
 
 FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settings& settings, const GlOptions& options) {

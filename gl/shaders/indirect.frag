@@ -9,6 +9,7 @@ uniform int u_specular_cones;
 uniform int u_random_rotation;
 uniform uint u_frame;
 uniform int u_image_height;
+uniform float u_indirect_diffuse_gain;  // an engine's gain on the indirect diffuse (settings.h)
 
 layout(location = 0) out vec4 o_indirect_diffuse;
 layout(location = 1) out vec4 o_indirect_specular;
@@ -33,7 +34,7 @@ void main() {
     float rotation = u_random_rotation != 0
                          ? diffuse_cone_rotation(uint(px.x), uint(u_image_height - 1 - px.y), u_frame, u_diffuse_set)
                          : 0.0f;
-    diffuse = trace_diffuse(origin, g.normal, rotation, 0.0f);
+    diffuse = trace_diffuse(origin, g.normal, rotation, 0.0f) * u_indirect_diffuse_gain;
   }
   vec3 specular = vec3(0.0f);
   if (u_specular_cones != 0) {

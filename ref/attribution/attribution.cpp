@@ -27,9 +27,24 @@ void check_components(const std::vector<std::string>& names, const std::string& 
       throw InputError(flag, "unknown component '" + n + "' (known: indirect_diffuse, indirect_specular, direct)");
 }
 
+void check_attributable(const VctSettings& vs) {
+  if (!vs.diffuse_cone_set.empty() || vs.cone_tangent_frame != ConeTangentFrame::Branchless)
+    throw InputError("settings", "vct attribute splits the diffuse_cone_count/tilt set; diffuse_cone_set and "
+                                 "cone_tangent_frame are for vct render and vct compare");
+  if (vs.indirect_diffuse_gain != 1.0f || vs.indirect_fresnel != IndirectFresnel::Schlick)
+    throw InputError("settings", "vct attribute splits the oracle's own composite; indirect_diffuse_gain and "
+                                 "indirect_fresnel are for vct render and vct compare");
+  if (vs.specular_offset_voxels >= 0.0f || vs.specular_quality > 0.0f || vs.specular_aperture != SpecularAperture::Ggx ||
+      vs.specular_view != SpecularView::Surface)
+    throw InputError("settings", "vct attribute splits the oracle's specular cone; specular_offset_voxels, "
+                                 "specular_quality, specular_aperture and specular_view are for vct render and vct "
+                                 "compare");
+}
+
 Attribution attribute_frame(const Scene& scene, const Settings& settings, const FrameResult& frame,
                             const AttributionOptions& opt) {
   check_components(opt.components, "--components");
+  check_attributable(settings.vct);
   const LadderContext ctx(scene, settings, frame, opt.rays_per_pixel, opt.pt_cache);
   Attribution a;
   for (const std::string& name : component_names()) {

@@ -34,6 +34,12 @@ struct Attribution {
 /// Checks option values against the lists; throws InputError naming `flag`.
 void check_components(const std::vector<std::string>& names, const std::string& flag);
 
+/// Throws InputError("settings", ...) for settings the ladders cannot split: an engine's
+/// conventions (issue 21: a declared diffuse cone set or tangent frame, indirect_diffuse_gain,
+/// indirect_fresnel, the specular cone's own settings), which vct compare judges instead.
+/// `vct attribute` calls it before it creates its run directory.
+void check_attributable(const VctSettings& s);
+
 /// Renders the reference VCT frame of `settings` and runs the ladders (path tracer: settings.pt
 /// spp and seed, at the VCT image size). Deterministic for any thread count.
 Attribution attribute(const Scene& scene, const Settings& settings, const AttributionOptions& opt);

@@ -1,5 +1,7 @@
 #include "attribution/diffuse_ladder.h"
 
+#include "attribution/attribution.h"
+
 #include <cmath>
 
 #include "core/error.h"
@@ -91,11 +93,9 @@ RungImage cone_set_base_level_steps(const LadderContext& ctx) {
 
 std::vector<Rung> diffuse_rungs(const LadderContext& ctx) {
   const VctSettings& vs = ctx.settings().vct;
-  // The ladders split the oracle's count/tilt set; an engine's declared set (issue 21) is judged
-  // by vct compare, not attributed.
-  if (!vs.diffuse_cone_set.empty() || vs.cone_tangent_frame != ConeTangentFrame::Branchless)
-    throw InputError("settings", "vct attribute splits the diffuse_cone_count/tilt set; diffuse_cone_set and "
-                                 "cone_tangent_frame are for vct render and vct compare");
+  // The ladders split the oracle's own cones and composite; an engine's conventions (issue 21) are
+  // judged by vct compare, not attributed (attribution.h check_attributable).
+  check_attributable(vs);
   const LadderContext* c = &ctx;
   return {
       {"truth", "path tracer, one-bounce diffuse (pt_indirect_diffuse)", false,

@@ -1,5 +1,7 @@
 #include "attribution/specular_ladder.h"
 
+#include "attribution/attribution.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -74,6 +76,7 @@ RungImage specular_cone_base_level_steps(const LadderContext& ctx) {
 }
 
 std::vector<Rung> specular_rungs(const LadderContext& ctx) {
+  check_attributable(ctx.settings().vct);  // an engine's conventions are judged, not split (issue 21)
   const LadderContext* c = &ctx;
   return {
       {"truth", "path tracer, one-bounce specular (pt_indirect_specular)", false,

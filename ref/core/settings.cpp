@@ -125,6 +125,9 @@ void validate_settings(const Settings& s) {
   // The axis offset after the normal offset is the normal start's; the axis start has one offset.
   require(s.vct.cone_axis_offset_voxels == 0.0f || s.vct.cone_start == ConeStart::Normal,
           "cone_axis_offset_voxels needs cone_start = normal (with axis, cone_offset_voxels is the axis offset)");
+  // A step of 0 would never end: 0 means "cone_quality", else the diffuse cones' own floor.
+  require(s.vct.specular_quality == 0.0f || s.vct.specular_quality > 0.01f,
+          "specular_quality must be 0 (= cone_quality) or in (0.01, 4]");
   check_memory_budget(s);  // a grid or image that would not fit: say how much it needs
 }
 

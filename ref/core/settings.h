@@ -32,6 +32,22 @@ enum class ShadowDepthFormat { Depth32f, Depth24, Depth16 };
 // ortho()): t = normalize(n x (0.1, 0, 1)), or n x (1, 0, 0) when |n . normalize(0.1, 0, 1)| >=
 // 0.999, and b = n x t. stages/cone_sets.h.
 enum class ConeTangentFrame { Branchless, CrossHint };
+// The Fresnel factor of the indirect terms in the final composite (issue 21): ours, Schlick with
+// the material's f90; or Schlick with f90 = max(1 - roughness^2, f0) per channel, the "roughness"
+// variant of split-sum image-based lighting that the source design uses (righier/gidemo
+// voxelcone.frag FresnelSchlickRoughness, fed roughness^2). stages/composite.h.
+enum class IndirectFresnel { Schlick, SchlickRoughness };
+// The specular cone's full aperture from perceptual roughness r (issue 21): ours,
+// 2 atan(r^2) clamped to [1, 90] degrees (sh::specular_cone_aperture); or the polynomial fit of
+// Rosseaux's "How to use voxel cone tracing with two bounces ..." that the source design uses
+// (righier/gidemo voxelcone.frag roughnessToAperture, fed a = r^2): half-angle
+// 0.0003474660443456835 + a (1.3331290497744692 - 0.5040552688878546 a) radians, a clamped to
+// [0, 1], unclamped above (95.04 degrees at r = 1). stages/cone_sets.h specular_cone_aperture_of.
+enum class SpecularAperture { Ggx, Rosseaux };
+// Where the specular cone's view vector is taken from (issue 21): the shaded point (ours) or the
+// cone's origin after its normal offset (the source design: camDir = normalize(pos - camPos)
+// with pos already moved 4 voxels along n).
+enum class SpecularView { Surface, Origin };
 
 // Largest diffuse_cone_count; equals sh::MAX_DIFFUSE_CONES (static_assert in stages/cone_sets.cpp).
 inline constexpr int kMaxDiffuseConeCount = 16;
@@ -94,6 +110,21 @@ struct VctSettings {
   // Empty = diffuse_cone_count / diffuse_cone_tilt_deg / diffuse_aperture_deg / diffuse_weighting.
   std::string diffuse_cone_set;
   ConeTangentFrame cone_tangent_frame = ConeTangentFrame::Branchless;
+  // A gain on the frame's indirect diffuse light (issue 21): image.indirect_diffuse is the
+  // diffuse cones' result times this, and the composite adds that (the source design's
+  // u_restitution, 0.15 in its box scene, multiplies its indirect-diffuse render mode and its
+  // composite alike). 1 = ours.
+  float indirect_diffuse_gain = 1.0f;
+  IndirectFresnel indirect_fresnel = IndirectFresnel::Schlick;
+  // The specular cone's own conventions (issue 21; docs/pipeline.md, "Specular cone"): its start
+  // offset in voxels (< 0: the diffuse cones' cone_offset_voxels and cone_axis_offset_voxels;
+  // >= 0: under cone_start = normal the origin moves this far along n and the march starts at
+  // t = 0, under axis the first sample is this far along the cone), its step factor (0 = the
+  // diffuse cones' cone_quality), its aperture function and the point its view vector leaves.
+  float specular_offset_voxels = -1.0f;
+  float specular_quality = 0.0f;
+  SpecularAperture specular_aperture = SpecularAperture::Ggx;
+  SpecularView specular_view = SpecularView::Surface;
   float max_distance = 1.7320508f;  // in voxel-texture units ([0,1]^3 cube diagonal)
   float soft_shadow_aperture_deg = 10.0f;
   // Sample opacity corrected for the step length: 1 - (1 - a)^(step / voxel size at the lod)
@@ -157,5 +188,8 @@ std::string to_string(ConeStart c);
 std::string to_string(ShadowCompare c);
 std::string to_string(ShadowDepthFormat f);
 std::string to_string(ConeTangentFrame f);
+std::string to_string(IndirectFresnel f);
+std::string to_string(SpecularAperture a);
+std::string to_string(SpecularView v);
 
 }  // namespace vct

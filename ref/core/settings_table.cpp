@@ -76,6 +76,27 @@ const std::vector<std::pair<ConeTangentFrame, const char*>>& enum_names() {
   return m;
 }
 
+template <>
+const std::vector<std::pair<IndirectFresnel, const char*>>& enum_names() {
+  static const std::vector<std::pair<IndirectFresnel, const char*>> m{
+      {IndirectFresnel::Schlick, "schlick"}, {IndirectFresnel::SchlickRoughness, "schlick_roughness"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<SpecularAperture, const char*>>& enum_names() {
+  static const std::vector<std::pair<SpecularAperture, const char*>> m{{SpecularAperture::Ggx, "ggx"},
+                                                                       {SpecularAperture::Rosseaux, "rosseaux"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<SpecularView, const char*>>& enum_names() {
+  static const std::vector<std::pair<SpecularView, const char*>> m{{SpecularView::Surface, "surface"},
+                                                                   {SpecularView::Origin, "origin"}};
+  return m;
+}
+
 template <typename Enum>
 std::string enum_name(Enum e) {
   for (const auto& [value, name] : enum_names<Enum>())
@@ -177,6 +198,9 @@ std::string to_string(ConeStart c) { return enum_name(c); }
 std::string to_string(ShadowCompare c) { return enum_name(c); }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
 std::string to_string(ConeTangentFrame f) { return enum_name(f); }
+std::string to_string(IndirectFresnel f) { return enum_name(f); }
+std::string to_string(SpecularAperture a) { return enum_name(a); }
+std::string to_string(SpecularView v) { return enum_name(v); }
 
 const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
   // clang-format off
@@ -217,6 +241,12 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("cone_axis_offset_voxels", &V::cone_axis_offset_voxels, at_least(0), "with cone_start = normal: first sample this far along the axis, voxels"),
     field("diffuse_cone_set", &V::diffuse_cone_set, any(), "diffuse cones as data \"x,y,z,aperture_deg,weight ...\", tangent frame (empty = count/tilt)"),
     choice("cone_tangent_frame", &V::cone_tangent_frame, "tangent frame of the diffuse cones: ours (branchless) or the source design's (cross_hint)"),
+    field("specular_offset_voxels", &V::specular_offset_voxels, any(), "specular cone start, voxels, as cone_start says (< 0 = the diffuse cones' offsets; normal: origin along n, march from t = 0)"),
+    field("specular_quality", &V::specular_quality, closed(0, 4), "specular cone step = diameter x this (0 = cone_quality)"),
+    choice("specular_aperture", &V::specular_aperture, "specular cone aperture from roughness r: 2 atan(r^2) (ggx), or 2 (c0 + a (c1 - c2 a)), a = r^2 (rosseaux, the source design's)"),
+    choice("specular_view", &V::specular_view, "specular view vector from the shaded point (surface) or from the cone's origin after its normal offset (origin)"),
+    field("indirect_diffuse_gain", &V::indirect_diffuse_gain, at_least(0), "gain on image.indirect_diffuse and so on its composite term (an engine's, e.g. the source design's u_restitution)", "u_indirect_diffuse_gain"),
+    choice("indirect_fresnel", &V::indirect_fresnel, "Fresnel of the composite's indirect terms: Schlick with the material's f90, or f90 = max(1 - roughness^2, f0) (schlick_roughness)"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),

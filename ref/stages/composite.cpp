@@ -11,7 +11,15 @@ namespace {
 vec3 rgb_or_zero(const Image& img, int x, int y) { return img.empty() ? vec3(0.0f) : img.rgb(x, y); }
 }  // namespace
 
-void composite_frame(const Scene& scene, const GBuffer& g, FrameImages& im) {
+vec3 indirect_fresnel(IndirectFresnel kind, const vec3& f0, float f90, float roughness, float cos_theta) {
+  if (kind == IndirectFresnel::Schlick) return sh::fresnel_schlick(f0, f90, cos_theta);
+  const float r = std::clamp(roughness, 0.0f, 1.0f);
+  const float m = std::clamp(1.0f - cos_theta, 0.0f, 1.0f);
+  const float m5 = m * m * m * m * m;
+  return f0 + (glm::max(vec3(1.0f - r * r), f0) - f0) * m5;
+}
+
+void composite_frame(const Scene& scene, const GBuffer& g, const VctSettings& settings, FrameImages& im) {
   const int w = g.coverage.width, h = g.coverage.height;
   im.diffuse_term = Image(w, h, 3);
   im.specular_term = Image(w, h, 3);
@@ -31,7 +39,8 @@ void composite_frame(const Scene& scene, const GBuffer& g, FrameImages& im) {
                                                  g.material.at(x, y, 2), g.specular_color.rgb(x, y));
         // n.v: the cosine of the specular cone's axis too (reflect keeps the angle to n), and
         // the split-sum convention for image-based light.
-        const vec3 f = sh::fresnel_schlick(s.f0, s.f90, std::max(glm::dot(n, v), 0.0f));
+        const vec3 f = indirect_fresnel(settings.indirect_fresnel, s.f0, s.f90, g.material.at(x, y, 1),
+                                        std::max(glm::dot(n, v), 0.0f));
         const vec3 diffuse = sh::diffuse_weight(s, f) * s.albedo * rgb_or_zero(im.indirect_diffuse, x, y);
         const vec3 specular = f * rgb_or_zero(im.indirect_specular, x, y);
         const vec3 emission = g.emission.rgb(x, y);

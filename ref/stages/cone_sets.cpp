@@ -82,8 +82,10 @@ ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const Vct
                      bool prepare)
     : mips_(mips), volume_(volume), block_(diffuse_cone_block(s)) {
   count_ = sh::diffuse_cone_count(block_);
-  base_params_ = MarchParams::from_settings(s, grid_of(mips));
-  params_ = base_params_;
+  params_ = MarchParams::from_settings(s, grid_of(mips));
+  specular_params_ = MarchParams::specular_from_settings(s, grid_of(mips));
+  specular_aperture_ = s.specular_aperture;
+  specular_view_ = s.specular_view;
   shadow_params_ = MarchParams::shadow_from_settings(s, grid_of(mips));
   params_.min_lod = min_lod;
   diffuse_aperture_ = radians(s.diffuse_aperture_deg);
@@ -148,7 +150,12 @@ vec3 ConeFrame::rotated(int i, float rotation, bool unrotated) const {
 
 vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
                          std::vector<ConeSample>* record) const {
-  return trace(specular_cone(volume_, p, n, v, roughness, base_params_.normal_offset), base_params_, record);
+  return trace(specular_cone(volume_, p, n, v, roughness, specular_params_.normal_offset, specular_aperture_),
+               specular_params_, record);
+}
+
+vec3 ConeFrame::specular_view_point(const vec3& p, const vec3& n) const {
+  return vct::specular_view_point(volume_, specular_view_, specular_params_.normal_offset, p, n);
 }
 
 Cone ConeFrame::shadow_cone(const vec3& p, const Light& light, float* max_distance) const {
@@ -189,20 +196,36 @@ float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y) {
   return sh::diffuse_cone_rotation(uint32_t(x), uint32_t(y), uint32_t(s.frame), block);
 }
 
+float specular_cone_aperture_of(SpecularAperture kind, float roughness) {
+  // Same clamp as sh::surface_pbr, so the cone matches the roughness the BRDF uses.
+  if (kind == SpecularAperture::Ggx) return sh::specular_cone_aperture(std::max(roughness, sh::MIN_ROUGHNESS));
+  // righier/gidemo voxelcone.frag: roughnessToAperture(r^2) returns tan(half-angle), doubled into
+  // the apertureTan2 = 2 tan(aperture / 2) its ConeTracing takes.
+  const float r = std::clamp(roughness, 0.0f, 1.0f);
+  const float a = r * r;
+  return 2.0f * (0.0003474660443456835f + a * (1.3331290497744692f - a * 0.5040552688878546f));
+}
+
 Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness,
-                  float normal_offset) {
+                  float normal_offset, SpecularAperture kind) {
   Cone cone;
   cone.origin = volume.to_texture(p) + n * normal_offset;
   cone.direction = glm::normalize(glm::reflect(-v, n));
-  // Same clamp as sh::surface_pbr, so the cone matches the roughness the BRDF uses.
-  cone.aperture = sh::specular_cone_aperture(std::max(roughness, sh::MIN_ROUGHNESS));
+  cone.aperture = specular_cone_aperture_of(kind, roughness);
   return cone;
+}
+
+vec3 specular_view_point(const VoxelVolume& volume, SpecularView view, float normal_offset, const vec3& p,
+                         const vec3& n) {
+  // Texture units to world: the volume's uniform scale.
+  return view == SpecularView::Origin ? p + n * (normal_offset * volume.size) : p;
 }
 
 vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                          const vec3& n, const vec3& v, float roughness, std::vector<ConeSample>* record) {
-  const MarchParams params = MarchParams::from_settings(s, grid_of(mips));
-  return trace_cone(mips, specular_cone(volume, p, n, v, roughness, params.normal_offset), params, record);
+  const MarchParams params = MarchParams::specular_from_settings(s, grid_of(mips));
+  return trace_cone(mips, specular_cone(volume, p, n, v, roughness, params.normal_offset, s.specular_aperture),
+                    params, record);
 }
 
 float trace_shadow_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,

@@ -69,6 +69,8 @@ class ConeFrame {
   float rotation_for_pixel(int x, int y) const;
   vec4 specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
                 std::vector<ConeSample>* record = nullptr) const;
+  /// The world point the specular cone's view vector leaves (settings specular_view).
+  vec3 specular_view_point(const vec3& p, const vec3& n) const;
   /// 1 - opacity toward the light, marched no further than a spot or point light's position; a
   /// directional light's cone goes against its direction until it leaves the volume.
   float shadow(const vec3& p, const Light& light, std::vector<ConeSample>* record = nullptr) const;
@@ -88,7 +90,9 @@ class ConeFrame {
   sh::DiffuseConeBlock block_;
   int count_ = 0;
   MarchParams params_;       // diffuse and specular
-  MarchParams base_params_;  // without min_lod: the specular cone's
+  MarchParams specular_params_;  // MarchParams::specular_from_settings, without min_lod
+  SpecularAperture specular_aperture_ = SpecularAperture::Ggx;
+  SpecularView specular_view_ = SpecularView::Surface;
   MarchParams shadow_params_;  // MarchParams::shadow_from_settings
   float diffuse_aperture_ = 0.0f, shadow_aperture_ = 0.0f;
   // A declared cone set (diffuse_cone_set): each cone's own aperture and weight, rotated about n
@@ -111,10 +115,21 @@ DiffuseConeSet trace_diffuse_cones(const VoxelMips& mips, const VoxelVolume& vol
 /// The cone rotation of pixel (x, y) (row 0 = top) for this frame, or 0 when rotation is off.
 float diffuse_rotation_for_pixel(const VctSettings& s, int x, int y);
 
-/// Specular cone at p: along reflect(-v, n), aperture sh::specular_cone_aperture(roughness); its
-/// origin moved `normal_offset` (texture units, MarchParams::normal_offset) along n.
+/// The specular cone's full aperture (radians) for perceptual roughness (settings
+/// specular_aperture): sh::specular_cone_aperture(max(r, MIN_ROUGHNESS)), or the source design's
+/// 2 (c0 + a (c1 - c2 a)) with a = clamp(r, 0, 1)^2.
+float specular_cone_aperture_of(SpecularAperture kind, float roughness);
+
+/// Specular cone at p: along reflect(-v, n), aperture specular_cone_aperture_of(kind, roughness);
+/// its origin moved `normal_offset` (texture units, MarchParams::normal_offset) along n.
 Cone specular_cone(const VoxelVolume& volume, const vec3& p, const vec3& n, const vec3& v, float roughness,
-                   float normal_offset = 0.0f);
+                   float normal_offset = 0.0f, SpecularAperture kind = SpecularAperture::Ggx);
+/// The world point the specular view vector leaves: p, or (SpecularView::Origin) p moved
+/// `normal_offset` texture units along n, where the cone starts.
+vec3 specular_view_point(const VoxelVolume& volume, SpecularView view, float normal_offset, const vec3& p,
+                         const vec3& n);
+/// The specular cone of the settings (MarchParams::specular_from_settings, specular_aperture),
+/// with the view vector v the caller took (specular_view_point).
 vec4 trace_specular_cone(const VoxelMips& mips, const VoxelVolume& volume, const VctSettings& s, const vec3& p,
                          const vec3& n, const vec3& v, float roughness, std::vector<ConeSample>* record = nullptr);
 

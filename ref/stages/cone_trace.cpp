@@ -29,6 +29,17 @@ MarchParams MarchParams::from_settings(const VctSettings& s, int grid) {
   return p;
 }
 
+MarchParams MarchParams::specular_from_settings(const VctSettings& s, int grid) {
+  MarchParams p = from_settings(s, grid);
+  if (s.specular_offset_voxels >= 0.0f) {
+    const float offset = s.specular_offset_voxels / float(grid);
+    p.normal_offset = s.cone_start == ConeStart::Normal ? offset : 0.0f;
+    p.start_offset = s.cone_start == ConeStart::Normal ? 0.0f : offset;
+  }
+  if (s.specular_quality > 0.0f) p.quality = s.specular_quality;
+  return p;
+}
+
 MarchParams MarchParams::shadow_from_settings(const VctSettings& s, int grid) {
   MarchParams p = from_settings(s, grid);
   p.start_offset = s.cone_offset_voxels / float(grid);

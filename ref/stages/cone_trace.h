@@ -27,6 +27,9 @@ struct MarchParams {
   float min_lod = 0.0f;       // multibounce traces start at level >= 1
   bool step_correction = false;  // sh::step_corrected_sample with dt / dt0 = step / (2^lod / N)
   static MarchParams from_settings(const VctSettings& s, int grid);
+  /// The specular cone's: from_settings with the specular_offset_voxels and specular_quality an
+  /// engine may give it (settings.h; the source design's: 4 voxels along n, t from 0, step 0.6).
+  static MarchParams specular_from_settings(const VctSettings& s, int grid);
   /// The soft-shadow cone's: no surface normal, so it starts along its axis under either cone_start.
   static MarchParams shadow_from_settings(const VctSettings& s, int grid);
   /// Where a cone leaving texture-space point p with unit surface normal n starts.

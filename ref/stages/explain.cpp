@@ -60,11 +60,13 @@ std::vector<TracedCone> trace_all(const Scene& scene, const FrameResult& f, cons
     cones.push_back({"diffuse", i, set.geometry[size_t(i)], set.weights[size_t(i)], set.cones[size_t(i)],
                      std::move(records[size_t(i)])});
   }
-  TracedCone spec{"specular", 0, specular_cone(scene.volume, p, n, view_vector(scene, p), g.material.at(x, y, 1),
-                                                MarchParams::from_settings(s, f.mips.iso.empty() ? 1 : f.mips.iso[0].nx).normal_offset),
+  const MarchParams spec_params = MarchParams::specular_from_settings(s, f.mips.iso.empty() ? 1 : f.mips.iso[0].nx);
+  const vec3 spec_v = view_vector(scene, specular_view_point(scene.volume, s.specular_view, spec_params.normal_offset, p, n));
+  TracedCone spec{"specular", 0,
+                  specular_cone(scene.volume, p, n, spec_v, g.material.at(x, y, 1), spec_params.normal_offset,
+                                s.specular_aperture),
                   1.0f, vec4(0.0f), {}};
-  spec.result = trace_specular_cone(f.mips, scene.volume, s, p, n, view_vector(scene, p), g.material.at(x, y, 1),
-                                    &spec.samples);
+  spec.result = trace_specular_cone(f.mips, scene.volume, s, p, n, spec_v, g.material.at(x, y, 1), &spec.samples);
   cones.push_back(std::move(spec));
   for (size_t li = 0; li < scene.lights.size(); ++li) {
     TracedCone sc{"shadow", int(li), Cone{}, 1.0f, vec4(0.0f), {}};

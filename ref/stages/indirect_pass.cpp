@@ -22,7 +22,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       const vec3 n = g.normal.rgb(x, y);
       if (s.diffuse_cones) {
         const DiffuseConeSet set = cones.diffuse(p, n, cones.rotation_for_pixel(x, y));
-        out.diffuse.set_rgb(x, y, set.radiance);
+        out.diffuse.set_rgb(x, y, set.radiance * s.indirect_diffuse_gain);  // an engine's gain (settings.h)
         for (int i = 0; i < set.count; ++i) {
           float* px = out.diffuse_cones[size_t(i)].pixel(x, y);
           for (int c = 0; c < 4; ++c) px[c] = set.cones[size_t(i)][c];
@@ -30,7 +30,8 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       }
       if (s.specular_cones) {
         const float roughness = g.material.at(x, y, 1);
-        out.specular.set_rgb(x, y, vec3(cones.specular(p, n, view_vector(scene, p), roughness)));
+        const vec3 v = view_vector(scene, cones.specular_view_point(p, n));
+        out.specular.set_rgb(x, y, vec3(cones.specular(p, n, v, roughness)));
       }
     }
   });

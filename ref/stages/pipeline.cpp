@@ -74,7 +74,7 @@ void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r)
     im.indirect_specular = std::move(ind.specular);
     im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());
   });
-  timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, im); });
+  timed(r, "composite", [&] { composite_frame(scene, r.gbuffer, s, im); });
 }
 
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings) {

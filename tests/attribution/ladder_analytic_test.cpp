@@ -50,7 +50,7 @@ OnePixel one_pixel(const Volume& base, const vec3& p) {
   IndirectImages ind = trace_indirect(o.scene, g, o.frame.mips, o.settings.vct);
   o.frame.images.indirect_diffuse = ind.diffuse;
   o.frame.images.indirect_specular = ind.specular;
-  composite_frame(o.scene, g, o.frame.images);
+  composite_frame(o.scene, g, o.settings.vct, o.frame.images);
   return o;
 }
 
@@ -80,7 +80,7 @@ FrameImages unit_composite(const OnePixel& o) {
   FrameImages im;
   im.indirect_diffuse = Image(1, 1, 3, 1.0f);
   im.indirect_specular = Image(1, 1, 3, 1.0f);
-  composite_frame(o.scene, o.frame.gbuffer, im);
+  composite_frame(o.scene, o.frame.gbuffer, o.settings.vct, im);
   return im;
 }
 double kd_albedo_of(const OnePixel& o) { return luminance(unit_composite(o).diffuse_term.rgb(0, 0)); }

@@ -61,6 +61,11 @@ TEST(AttributeCli, BadInputIsRefusedBeforeAnyOutput) {
   EXPECT_EQ(run_vct("attribute --sweep no_such_key=1,2 --out " + out.string() + kSmall), 2);
   EXPECT_EQ(run_vct("attribute --sweep grid=64,33 --out " + out.string() + kSmall), 2);
   EXPECT_EQ(run_vct("attribute /no/such/scene.gltf --out " + out.string() + kSmall), 2);
+  // An engine's conventions (issue 21) are judged by vct compare, not split by the ladders.
+  EXPECT_EQ(run_vct("attribute --set diffuse_cone_set=0,0,1,30,1 --out " + out.string() + kSmall), 2);
+  EXPECT_EQ(run_vct("attribute --set indirect_diffuse_gain=0.15 --out " + out.string() + kSmall), 2);
+  EXPECT_EQ(run_vct("attribute --set specular_aperture=rosseaux --out " + out.string() + kSmall), 2);
+  EXPECT_EQ(run_vct("attribute --sweep specular_view=surface,origin --out " + out.string() + kSmall), 2);
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -160,6 +160,10 @@ TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
   };
   const std::vector<Case> cases = {
       {"render --backend gl" + cfg, "settings: the GL backend runs the pcf_kernel square"},
+      {"render --backend gl --set indirect_fresnel=schlick_roughness",
+       "settings: the GL backend runs the oracle's composite Fresnel"},
+      {"render --backend gl --set specular_view=origin", "settings: the GL backend runs the oracle's specular cone"},
+      {"render --backend gl --set specular_aperture=rosseaux", "settings: the GL backend runs the oracle's specular cone"},
       {"render --backend gl --explain 1,1", "--explain: needs --backend ref"},
       {"render --backend gl --gl-device -1", "--gl-device: device index must be 0 or more"},
       {"render --backend gl --gl-fault nosuchfault", "unknown GL fault"},

@@ -324,7 +324,9 @@ void record_settings(vct_dump::StageSetWriter& w) {
   w.set_setting("shadow_far", 3.0);
   w.set_setting("shadow_bias", double(shadowBias));
   w.set_setting("bounces", 1);
-  w.set_setting("gidemo_final_restitution", double(restitution));  // informative: not a setting of ours  // one frame: the mips the voxel pass would trace are still empty
+  // u_restitution multiplies render mode 1 (image.indirect_diffuse) and the composite alike
+  // (voxelcone.frag: indirectDiffuse *= u_restitution): our indirect_diffuse_gain.
+  w.set_setting("indirect_diffuse_gain", double(restitution));
 }
 
 void dump_all() {
@@ -377,7 +379,7 @@ int main() {
   addCornellBox(false);  // main.cpp's box: five planes, one spot (issue 21's "box scene")
   initVoxelize();
   // Experiment knob (docs/examples/gidemo.md): gidemo's "Diffuse restitution" slider, the gain of
-  // the final's indirect diffuse (addCornellBox sets 0.15), which no setting of ours states.
+  // its indirect diffuse (addCornellBox sets 0.15); the manifest records it as indirect_diffuse_gain.
   if (const char* r = std::getenv("VCT_HOOK_RESTITUTION")) restitution = float(std::atof(r));
   renderShadowMap(0.0);
   voxelize(0.0);
