@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "core/parallel.h"
 
@@ -67,6 +70,114 @@ std::vector<uint8_t> cell_occupancy(const Volume& v) {
   return cells;
 }
 
+// Where a lookup lands in one level: GL §8.14.2 as sample_level_trilinear computes it. The
+// weights are filled in only for an occupied cell (an empty one needs none).
+//
+// With SSE2 (every x86-64) the cell, its weights and the eight-texel sum are formed four lanes
+// at a time: each lane does the scalar reference's IEEE operation on the same operands in the
+// same order (u = uvw * size - 1/2, f = u - floor(u), w = (wi * wj) * wk, result += w * texel
+// starting from +0), and the build has no FMA contraction (no -march, -ffp-contract is moot
+// without FMA), so the bits are the reference's; tests/ref/mip_sampler_test.cpp compares them.
+// A texel's four channels are one 16-byte load.
+#if defined(__SSE2__)
+struct Cell {
+  int i0 = 0, j0 = 0, k0 = 0;
+  bool interior = false;  // all eight texels inside
+  bool located = false;   // i0..k0 in [-1, n-1]: the occupancy byte exists
+  size_t cell = 0;
+  __m128 f = _mm_setzero_ps();    // fractional parts (x, y, z, -)
+  bool have_weights = false;
+  __m128 w_lo = _mm_setzero_ps();  // weights (di, dj) = (0,0) (1,0) (0,1) (1,1) at dk = 0
+  __m128 w_hi = _mm_setzero_ps();  // the same at dk = 1
+};
+
+inline __m128 load_uvw(const vec3& uvw) { return _mm_setr_ps(uvw.x, uvw.y, uvw.z, 0.0f); }
+
+inline Cell locate(const Level& L, __m128 uvw) {
+  Cell c;
+  const __m128 u = _mm_sub_ps(_mm_mul_ps(uvw, _mm_loadu_ps(L.size4.data())), _mm_set1_ps(0.5f));
+  // floor by truncate-and-correct, as floor_to_int below: truncation went up where u < float(i).
+  __m128i i = _mm_cvttps_epi32(u);
+  i = _mm_add_epi32(i, _mm_castps_si128(_mm_cmplt_ps(u, _mm_cvtepi32_ps(i))));
+  c.f = _mm_sub_ps(u, _mm_cvtepi32_ps(i));
+  alignas(16) int idx[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(idx), i);
+  c.i0 = idx[0], c.j0 = idx[1], c.k0 = idx[2];
+  c.interior = c.i0 >= 0 && c.j0 >= 0 && c.k0 >= 0 && c.i0 + 1 < L.nx && c.j0 + 1 < L.ny && c.k0 + 1 < L.nz;
+  c.located = c.i0 >= -1 && c.j0 >= -1 && c.k0 >= -1 && c.i0 < L.nx && c.j0 < L.ny && c.k0 < L.nz;
+  if (c.located)
+    c.cell = (size_t(c.k0 + 1) * size_t(L.ny + 1) + size_t(c.j0 + 1)) * size_t(L.nx + 1) + size_t(c.i0 + 1);
+  return c;
+}
+
+// The reference's weights wi * wj * wk, lane by lane: (1 - f) and f per axis, the x-y products,
+// then times the z factor.
+inline void cell_weights(Cell& c) {
+  const __m128 g = _mm_sub_ps(_mm_set1_ps(1.0f), c.f);  // 1 - f
+  const __m128 gf = _mm_unpacklo_ps(g, c.f);             // (1-fx, fx, 1-fy, fy)
+  const __m128 wi = _mm_movelh_ps(gf, gf);               // (1-fx, fx, 1-fx, fx)
+  const __m128 wj = _mm_shuffle_ps(gf, gf, _MM_SHUFFLE(3, 3, 2, 2));  // (1-fy, 1-fy, fy, fy)
+  const __m128 wij = _mm_mul_ps(wi, wj);
+  c.w_lo = _mm_mul_ps(wij, _mm_shuffle_ps(g, g, _MM_SHUFFLE(2, 2, 2, 2)));
+  c.w_hi = _mm_mul_ps(wij, _mm_shuffle_ps(c.f, c.f, _MM_SHUFFLE(2, 2, 2, 2)));
+  c.have_weights = true;
+}
+
+template <int lane>
+inline __m128 broadcast(__m128 v) {
+  return _mm_shuffle_ps(v, v, _MM_SHUFFLE(lane, lane, lane, lane));
+}
+
+// result + w * texel for the four texels of one (dk) slice of the cell, in the reference's order.
+inline __m128 add_slice(__m128 result, __m128 w, __m128 t00, __m128 t10, __m128 t01, __m128 t11) {
+  result = _mm_add_ps(result, _mm_mul_ps(broadcast<0>(w), t00));
+  result = _mm_add_ps(result, _mm_mul_ps(broadcast<1>(w), t10));
+  result = _mm_add_ps(result, _mm_mul_ps(broadcast<2>(w), t01));
+  return _mm_add_ps(result, _mm_mul_ps(broadcast<3>(w), t11));
+}
+
+inline __m128 texel_or_border(const Level& L, int i, int j, int k) {
+  if (i < 0 || j < 0 || k < 0 || i >= L.nx || j >= L.ny || k >= L.nz) return _mm_setzero_ps();
+  return _mm_loadu_ps(L.data + size_t(k) * L.sz + size_t(j) * L.sy + size_t(i) * 4);
+}
+
+// The eight texels of `c` in `L` (same dimensions as the level `c` was located in), summed in
+// the reference's order. The weights are made on first need and reused (the anisotropic path
+// reads three volumes through one cell).
+inline __m128 gather(const Level& L, Cell& c) {
+  if (c.located && !L.occupied[c.cell]) return _mm_setzero_ps();  // eight zero texels: exactly +0
+  if (!c.have_weights) cell_weights(c);
+  __m128 result = _mm_setzero_ps();
+  if (c.interior) {
+    const float* p0 = L.data + size_t(c.k0) * L.sz + size_t(c.j0) * L.sy + size_t(c.i0) * 4;
+    const float* p1 = p0 + L.sz;
+    result = add_slice(result, c.w_lo, _mm_loadu_ps(p0), _mm_loadu_ps(p0 + 4), _mm_loadu_ps(p0 + L.sy),
+                       _mm_loadu_ps(p0 + L.sy + 4));
+    return add_slice(result, c.w_hi, _mm_loadu_ps(p1), _mm_loadu_ps(p1 + 4), _mm_loadu_ps(p1 + L.sy),
+                     _mm_loadu_ps(p1 + L.sy + 4));
+  }
+  const int i = c.i0, j = c.j0, k = c.k0;
+  result = add_slice(result, c.w_lo, texel_or_border(L, i, j, k), texel_or_border(L, i + 1, j, k),
+                     texel_or_border(L, i, j + 1, k), texel_or_border(L, i + 1, j + 1, k));
+  return add_slice(result, c.w_hi, texel_or_border(L, i, j, k + 1), texel_or_border(L, i + 1, j, k + 1),
+                   texel_or_border(L, i, j + 1, k + 1), texel_or_border(L, i + 1, j + 1, k + 1));
+}
+
+using Texel = __m128;
+using Uvw = __m128;
+inline Texel zero_texel() { return _mm_setzero_ps(); }
+inline vec4 to_vec4(__m128 v) {
+  vec4 r;
+  _mm_storeu_ps(&r.x, v);
+  return r;
+}
+inline __m128 add_scaled(__m128 result, float w, __m128 t) { return _mm_add_ps(result, _mm_mul_ps(_mm_set1_ps(w), t)); }
+
+// (1 - f) * t1 + f * t2, each channel as the reference's vec4 expression forms it.
+inline __m128 blend(float f, __m128 t1, __m128 t2) {
+  return _mm_add_ps(_mm_mul_ps(_mm_set1_ps(1.0f - f), t1), _mm_mul_ps(_mm_set1_ps(f), t2));
+}
+#else
 // Where a lookup lands in one level: GL §8.14.2 as sample_level_trilinear computes it. The
 // weights are filled in only for an occupied cell (an empty one needs none).
 struct Cell {
@@ -149,7 +260,16 @@ inline vec4 gather(const Level& L, Cell& c) {
   return result;
 }
 
-inline vec4 trilinear(const Level& L, const vec3& uvw) {
+using Texel = vec4;
+using Uvw = vec3;
+inline Texel zero_texel() { return vec4(0.0f); }
+inline vec3 load_uvw(const vec3& uvw) { return uvw; }
+inline vec4 to_vec4(const vec4& v) { return v; }
+inline vec4 add_scaled(const vec4& result, float w, const vec4& t) { return result + w * t; }
+inline vec4 blend(float f, const vec4& t1, const vec4& t2) { return (1.0f - f) * t1 + f * t2; }
+#endif
+
+inline Texel trilinear(const Level& L, Uvw uvw) {
   Cell c = locate(L, uvw);
   return gather(L, c);
 }
@@ -183,22 +303,21 @@ inline vec4 combine_anisotropic(const std::array<std::vector<Level>, 6>& aniso_,
   const int axis_dir[3] = {dir.x >= 0.0f ? kPosX : kNegX, dir.y >= 0.0f ? kPosY : kNegY,
                            dir.z >= 0.0f ? kPosZ : kNegZ};
   const bool base1 = p.d1 == 0;
-  const vec4 shared1 = base1 ? gather(aniso_[0][0], c1) : vec4(0.0f);
-  vec4 result(0.0f);
+  const Texel shared1 = base1 ? gather(aniso_[0][0], c1) : zero_texel();
+  Texel result = zero_texel();
   for (int a = 0; a < 3; ++a) {
     if (w[a] == 0.0f) continue;  // as voxel_sampler.cpp: the axis does not contribute
     const std::vector<Level>& chain = aniso_[size_t(axis_dir[a])];
-    const vec4 t1 = base1 ? shared1 : gather(chain[size_t(p.d1)], c1);
+    const Texel t1 = base1 ? shared1 : gather(chain[size_t(p.d1)], c1);
     if (!p.two) {
-      result += w[a] * t1;
+      result = add_scaled(result, w[a], t1);  // result += w[a] * t1
       continue;
     }
-    const vec4 t2 = gather(chain[size_t(p.d1) + 1], c2);
-    result += w[a] * ((1.0f - p.f) * t1 + p.f * t2);
+    const Texel t2 = gather(chain[size_t(p.d1) + 1], c2);
+    result = add_scaled(result, w[a], blend(p.f, t1, t2));  // result += w[a] * ((1 - f) t1 + f t2)
   }
-  return result;
+  return to_vec4(result);
 }
-
 
 Level make_level(const Volume& v, const std::vector<uint8_t>& occupied) {
   Level L;
@@ -207,6 +326,7 @@ Level make_level(const Volume& v, const std::vector<uint8_t>& occupied) {
   L.sy = size_t(v.nx) * 4;
   L.sz = L.sy * size_t(v.ny);
   L.size = vec3(float(v.nx), float(v.ny), float(v.nz));
+  L.size4 = {float(v.nx), float(v.ny), float(v.nz), 0.0f};
   L.occupied = occupied.data();
   return L;
 }
@@ -255,18 +375,19 @@ vec4 MipSampler::sample(const vec3& uvw, float lod, const vec3& dir) const {
 
 vec4 MipSampler::sample_isotropic(const vec3& uvw, float lod) const {
   const LevelPick p = pick_levels(int(iso_.size()), lod);
-  const vec4 t1 = trilinear(iso_[size_t(p.d1)], uvw);
-  if (!p.two) return t1;
-  const vec4 t2 = trilinear(iso_[size_t(p.d1) + 1], uvw);
-  return (1.0f - p.f) * t1 + p.f * t2;
+  const Uvw at = load_uvw(uvw);
+  const Texel t1 = trilinear(iso_[size_t(p.d1)], at);
+  if (!p.two) return to_vec4(t1);
+  return to_vec4(blend(p.f, t1, trilinear(iso_[size_t(p.d1) + 1], at)));
 }
 
 vec4 MipSampler::sample_anisotropic(const vec3& uvw, float lod, const vec3& dir) const {
   const LevelPick p = pick_levels(int(aniso_[0].size()), lod);
   // The six directional chains share each level's size (and level 0 itself): one cell per level.
-  Cell c1 = locate(aniso_[0][size_t(p.d1)], uvw);
+  const Uvw at = load_uvw(uvw);
+  Cell c1 = locate(aniso_[0][size_t(p.d1)], at);
   Cell c2;
-  if (p.two) c2 = locate(aniso_[0][size_t(p.d1) + 1], uvw);
+  if (p.two) c2 = locate(aniso_[0][size_t(p.d1) + 1], at);
   return combine_anisotropic(aniso_, p, c1, c2, dir);
 }
 

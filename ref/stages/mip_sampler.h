@@ -43,6 +43,7 @@ class MipSampler {
     int nx = 0, ny = 0, nz = 0;
     size_t sy = 0, sz = 0;      // floats per row, per slice (4 channels)
     vec3 size{0.0f};            // (nx, ny, nz) as floats, as sample_level_trilinear forms it
+    std::array<float, 4> size4{};  // (nx, ny, nz, 0): the same for a four-lane load
     const uint8_t* occupied = nullptr;  // (nx+1)(ny+1)(nz+1) cells, cell (i0,j0,k0) at i0+1, ...
   };
 
