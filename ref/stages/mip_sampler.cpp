@@ -84,7 +84,7 @@ struct Cell {
   int i0 = 0, j0 = 0, k0 = 0;
   bool interior = false;  // all eight texels inside
   bool located = false;   // i0..k0 in [-1, n-1]: the occupancy byte exists
-  size_t cell = 0;
+  ptrdiff_t cell = 0;
   __m128 f = _mm_setzero_ps();    // fractional parts (x, y, z, -)
   bool have_weights = false;
   __m128 w_lo = _mm_setzero_ps();  // weights (di, dj) = (0,0) (1,0) (0,1) (1,1) at dk = 0
@@ -100,13 +100,15 @@ inline Cell locate(const Level& L, __m128 uvw) {
   __m128i i = _mm_cvttps_epi32(u);
   i = _mm_add_epi32(i, _mm_castps_si128(_mm_cmplt_ps(u, _mm_cvtepi32_ps(i))));
   c.f = _mm_sub_ps(u, _mm_cvtepi32_ps(i));
-  alignas(16) int idx[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(idx), i);
-  c.i0 = idx[0], c.j0 = idx[1], c.k0 = idx[2];
-  c.interior = c.i0 >= 0 && c.j0 >= 0 && c.k0 >= 0 && c.i0 + 1 < L.nx && c.j0 + 1 < L.ny && c.k0 + 1 < L.nz;
-  c.located = c.i0 >= -1 && c.j0 >= -1 && c.k0 >= -1 && c.i0 < L.nx && c.j0 < L.ny && c.k0 < L.nz;
-  if (c.located)
-    c.cell = (size_t(c.k0 + 1) * size_t(L.ny + 1) + size_t(c.j0 + 1)) * size_t(L.nx + 1) + size_t(c.i0 + 1);
+  c.i0 = _mm_cvtsi128_si32(i);
+  c.j0 = _mm_cvtsi128_si32(_mm_shuffle_epi32(i, _MM_SHUFFLE(1, 1, 1, 1)));
+  c.k0 = _mm_cvtsi128_si32(_mm_shuffle_epi32(i, _MM_SHUFFLE(2, 2, 2, 2)));
+  // Interior: 0 <= i0 and i0 + 1 < n on x, y and z, i.e. -1 < i0 < n - 1, as one lane test.
+  const __m128i above = _mm_cmpgt_epi32(i, _mm_set1_epi32(-1));
+  const __m128i below = _mm_cmpgt_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(L.last4.data())), i);
+  c.interior = (_mm_movemask_ps(_mm_castsi128_ps(_mm_and_si128(above, below))) & 7) == 7;
+  c.located = c.interior || (c.i0 >= -1 && c.j0 >= -1 && c.k0 >= -1 && c.i0 < L.nx && c.j0 < L.ny && c.k0 < L.nz);
+  c.cell = L.cell_origin + ptrdiff_t(c.k0) * L.cell_sz + ptrdiff_t(c.j0) * L.cell_sy + c.i0;
   return c;
 }
 
@@ -149,7 +151,7 @@ inline __m128 gather(const Level& L, Cell& c) {
   if (!c.have_weights) cell_weights(c);
   __m128 result = _mm_setzero_ps();
   if (c.interior) {
-    const float* p0 = L.data + size_t(c.k0) * L.sz + size_t(c.j0) * L.sy + size_t(c.i0) * 4;
+    const float* p0 = L.data + ptrdiff_t(c.k0) * ptrdiff_t(L.sz) + ptrdiff_t(c.j0) * ptrdiff_t(L.sy) + c.i0 * 4;
     const float* p1 = p0 + L.sz;
     result = add_slice(result, c.w_lo, _mm_loadu_ps(p0), _mm_loadu_ps(p0 + 4), _mm_loadu_ps(p0 + L.sy),
                        _mm_loadu_ps(p0 + L.sy + 4));
@@ -327,6 +329,10 @@ Level make_level(const Volume& v, const std::vector<uint8_t>& occupied) {
   L.sz = L.sy * size_t(v.ny);
   L.size = vec3(float(v.nx), float(v.ny), float(v.nz));
   L.size4 = {float(v.nx), float(v.ny), float(v.nz), 0.0f};
+  L.last4 = {v.nx - 1, v.ny - 1, v.nz - 1, 0};
+  L.cell_sy = ptrdiff_t(v.nx) + 1;
+  L.cell_sz = L.cell_sy * (ptrdiff_t(v.ny) + 1);
+  L.cell_origin = L.cell_sz + L.cell_sy + 1;
   L.occupied = occupied.data();
   return L;
 }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -44,7 +45,10 @@ class MipSampler {
     size_t sy = 0, sz = 0;      // floats per row, per slice (4 channels)
     vec3 size{0.0f};            // (nx, ny, nz) as floats, as sample_level_trilinear forms it
     std::array<float, 4> size4{};  // (nx, ny, nz, 0): the same for a four-lane load
+    std::array<int, 4> last4{};    // (nx - 1, ny - 1, nz - 1, 0): the interior test's bounds
     const uint8_t* occupied = nullptr;  // (nx+1)(ny+1)(nz+1) cells, cell (i0,j0,k0) at i0+1, ...
+    // occupied[cell_origin + k0 * cell_sz + j0 * cell_sy + i0] is cell (i0, j0, k0)'s byte.
+    ptrdiff_t cell_sy = 0, cell_sz = 0, cell_origin = 0;
   };
 
  private:
