@@ -59,8 +59,11 @@ class MipSampler {
   bool usable_ = false;
   bool anisotropic_ = false;
   std::vector<Level> iso_;                   // iso_[k] = mips.iso[k]
+  int iso_count_ = 0;                        // iso_.size() (isotropic mips only)
   std::array<std::vector<Level>, 6> aniso_;  // aniso_[d][k] = level k of direction d (k = 0: the base)
   std::vector<std::vector<uint8_t>> occupancy_;  // storage behind Level::occupied
 };
 
 }  // namespace vct
+
+#include "stages/mip_sampler_lookup.h"  // the inline lookups
