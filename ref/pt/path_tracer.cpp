@@ -4,15 +4,16 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "core/parallel.h"
 
 namespace vct::pt {
 
 namespace {
 constexpr int kTile = 16;
-// The per-pixel first vertices (Integrator::FirstVertex, ~250 bytes) are kept across passes up to
-// this much memory (a 1024^2 image); larger images trace each sample's first vertex anew.
-constexpr size_t kFirstVertexBudget = size_t(256) << 20;
+// The per-pixel first vertices are kept across passes up to kPtFirstVertexBudget (a 1024^2
+// image); larger images trace each sample's first vertex anew. estimate_memory counts them.
+static_assert(sizeof(Integrator::FirstVertex) <= kPtFirstVertexBytes, "core/memory_budget.h's size");
 }  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles)
@@ -36,7 +37,7 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
   // floats (Integrator::FirstVertex). Its camera and punctual-light shadow rays are traced, and
   // counted, once per pixel.
   const size_t pixels = size_t(acc.width()) * size_t(acc.height());
-  const bool keep_first = pixels * sizeof(Integrator::FirstVertex) <= kFirstVertexBudget;
+  const bool keep_first = pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget;
   std::vector<Integrator::FirstVertex> first(keep_first ? pixels : 0);
   const uint32_t first_pass = acc.samples();
   for (uint32_t s = acc.samples(); s < target_spp; ++s) {
