@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#if defined(__SSE2__)
+// VCT_SCALAR_LOOKUPS forces the scalar path (for checking it where SSE2 exists).
+#if defined(__SSE2__) && !defined(VCT_SCALAR_LOOKUPS)
+#define VCT_SSE2_LOOKUPS 1
 #include <emmintrin.h>
 #endif
 
@@ -22,7 +24,7 @@ using Level = MipSampler::Level;
 // starting from +0), and the build has no FMA contraction (no -march, -ffp-contract is moot
 // without FMA), so the bits are the reference's; tests/ref/mip_sampler_test.cpp compares them.
 // A texel's four channels are one 16-byte load.
-#if defined(__SSE2__)
+#if defined(VCT_SSE2_LOOKUPS)
 struct Cell {
   int i0 = 0, j0 = 0, k0 = 0;
   bool interior = false;  // all eight texels inside
