@@ -119,7 +119,9 @@ nlohmann::json path_tracer(const Scene& scene, const Settings& s, const BenchOpt
           {"spp", o.pt_spp},
           {"width", ps.width},
           {"height", ps.height},
-          {"primary_only", rate_json(pt::measure_path_tracer(scene, primary, o.pt_spp))},
+          // One pass: later passes reuse each pixel's first vertex (pt::Integrator::FirstVertex)
+          // and trace nothing at max_depth 0.
+          {"primary_only", rate_json(pt::measure_path_tracer(scene, primary, 1))},
           {"full_paths", rate_json(pt::measure_path_tracer(scene, ps, o.pt_spp))}};
 }
 

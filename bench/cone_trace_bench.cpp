@@ -4,6 +4,7 @@
 // indirect pass (diffuse + specular cones) and of the cone soft shadows, and their ratio. Also
 // checks that both paths give the same bits. Prints; never passes or fails.
 // Usage: cone_trace_bench [SCENE] [--size W] [--grid N] [--aniso] [--repeat R] [--threads T]
+//        [--no-diffuse] [--no-specular] [--frame-path-only]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -84,12 +85,16 @@ int main(int argc, char** argv) {
   s.vct.width = s.vct.height = 512;
   s.vct.grid = 128;
   int repeat = 3;
+  bool frame_only = false;  // for profiling the frame path alone
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) s.vct.width = s.vct.height = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--grid") && i + 1 < argc) s.vct.grid = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) repeat = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) set_thread_count(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--aniso")) s.vct.anisotropic = true;
+    else if (!std::strcmp(argv[i], "--no-diffuse")) s.vct.diffuse_cones = false;
+    else if (!std::strcmp(argv[i], "--no-specular")) s.vct.specular_cones = false;
+    else if (!std::strcmp(argv[i], "--frame-path-only")) frame_only = true;
     else scene_path = argv[i];
   }
   const Scene scene = load_scene(scene_path);
@@ -98,12 +103,13 @@ int main(int argc, char** argv) {
   std::printf("scene %s, %dx%d, grid %d^3, %s, %d threads, best of %d by process CPU time\n", scene.source.c_str(),
               s.vct.width, s.vct.height, s.vct.grid, s.vct.anisotropic ? "anisotropic" : "isotropic", thread_count(), repeat);
   IndirectImages fast, slow;
-  const double slow_ms = best_cpu_ms(repeat, [&] { slow = readable_indirect(scene, g, f.mips, s.vct); });
+  const double slow_ms = frame_only ? 0.0 : best_cpu_ms(repeat, [&] { slow = readable_indirect(scene, g, f.mips, s.vct); });
   const double fast_ms = best_cpu_ms(repeat, [&] { fast = trace_indirect(scene, g, f.mips, s.vct); });
   std::printf("indirect cones: readable %9.1f ms   frame path %9.1f ms   speed-up %.2fx   same bits: %s\n", slow_ms, fast_ms,
               slow_ms / fast_ms, same_bits(fast.diffuse, slow.diffuse) && same_bits(fast.specular, slow.specular) ? "yes" : "NO");
   Image vis_slow, vis_fast;
-  const double shadow_slow = best_cpu_ms(repeat, [&] { vis_slow = readable_shadows(scene, g, f.mips, s.vct); });
+  const double shadow_slow =
+      frame_only ? 0.0 : best_cpu_ms(repeat, [&] { vis_slow = readable_shadows(scene, g, f.mips, s.vct); });
   const double shadow_fast = best_cpu_ms(repeat, [&] { shade_direct_soft(scene, g, f.mips, s.vct, &vis_fast); });
   std::printf("soft shadows:   readable %9.1f ms   frame path %9.1f ms   speed-up %.2fx   (includes shading)\n", shadow_slow,
               shadow_fast, shadow_slow / shadow_fast);

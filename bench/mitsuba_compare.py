@@ -28,6 +28,7 @@ import base64
 import json
 import math
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -169,10 +170,10 @@ def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
     import mitsuba_cook_torrance
     mitsuba_cook_torrance.register()
     scene = mi.load_dict(mitsuba_scene(g, work, size, spp, depth, seed))
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()  # process_time: every thread of this process
     if not centres:
         img = np.array(mi.render(scene, seed=seed), dtype=np.float64)[:, :, :3]
-        return img, time.perf_counter() - t0
+        return img, time.perf_counter() - t0, time.process_time() - c0
     sensor, integrator = scene.sensors()[0], scene.integrator()
     sampler = sensor.sampler().clone()
     sampler.seed(seed, 1)
@@ -188,7 +189,7 @@ def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
                     acc[c] += spec[c] * weight[c]
                 sampler.advance()
             img[y, x] = np.array(acc) / spp
-    return img, time.perf_counter() - t0
+    return img, time.perf_counter() - t0, time.process_time() - c0
 
 
 def render_ours(vct, scene_path, work, size, spp, depth, seed, threads):
@@ -196,15 +197,19 @@ def render_ours(vct, scene_path, work, size, spp, depth, seed, threads):
     cfg = os.path.join(work, "seed_%d.json" % seed)
     with open(cfg, "w") as f:
         json.dump({"pt": {"seed": seed}}, f)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run([vct, "pathtrace", scene_path, "--config", cfg, "--width", str(size), "--height", str(size),
                     "--spp", str(spp), "--max-depth", str(depth), "--threads", str(threads), "--quiet", "--out", out],
                    check=True, stdout=subprocess.DEVNULL)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    # The whole child's CPU time (scene load and BVH build included: a small overcount of ours).
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     with open(os.path.join(out, "run.json")) as f:
         seconds = json.load(f)["pathtrace"]["render_seconds"]
     import mitsuba as mi
     mi.set_variant("scalar_rgb")
     img = np.array(mi.Bitmap(os.path.join(out, "pt_full.exr")), dtype=np.float64)[:, :, :3]
-    return img, seconds
+    return img, seconds, cpu
 
 
 # ------------------------------------------------------------------ statistics
@@ -254,11 +259,16 @@ def main(argv):
         ok = bool(np.all(np.abs(z) <= a.k)) and bool(np.all(om > 0))
         print("PASS" if ok else "FAIL")
         return 0 if ok else 1
-    ot, mt = min(t for _, t in ours), min(t for _, t in theirs)
+    ot, mt = min(r[1] for r in ours), min(r[1] for r in theirs)
+    oc, mc = min(r[2] for r in ours), min(r[2] for r in theirs)
     oe, me = 1.0 / (ot * ovar), 1.0 / (mt * mvar)
+    print("  samplers: ours independent PCG32 per (pixel, sample), pixel centres; mitsuba 'independent' (its default), box filter")
     print("  ours     %.2f s (%d thread%s), per-pixel variance %.5g, efficiency %.4g" % (ot, a.threads, "s"[:a.threads > 1], ovar, oe))
     print("  mitsuba  %.2f s, per-pixel variance %.5g, efficiency %.4g" % (mt, mvar, me))
     print("  efficiency ratio ours / mitsuba: %.2f" % (oe / me))
+    # The same by CPU time (all threads of each renderer): steadier on a shared machine.
+    print("  by CPU time: ours %.2f s, mitsuba %.2f s; efficiency ratio ours / mitsuba: %.2f"
+          % (oc, mc, (1.0 / (oc * ovar)) / (1.0 / (mc * mvar))))
     return 0
 
 

@@ -98,8 +98,11 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images.
   e.raster_scratch = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
-  // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel.
-  e.path_tracer = uint64_t(s.pt.width) * uint64_t(s.pt.height) * 16 * 8;
+  // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each
+  // pixel's first vertex while they fit in their budget.
+  const uint64_t pt_pixels = uint64_t(s.pt.width) * uint64_t(s.pt.height);
+  e.path_tracer = pt_pixels * 16 * 8;
+  if (pt_pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget) e.path_tracer += pt_pixels * kPtFirstVertexBytes;
   return e;
 }
 

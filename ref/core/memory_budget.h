@@ -9,6 +9,12 @@
 
 namespace vct {
 
+/// The path tracer keeps each pixel's first vertex across its passes (pt::Integrator::FirstVertex,
+/// at most this many bytes: ref/pt/path_tracer.cpp checks) while the image's total stays within
+/// kPtFirstVertexBudget; larger images trace it per sample instead.
+constexpr uint64_t kPtFirstVertexBytes = 256;
+constexpr uint64_t kPtFirstVertexBudget = uint64_t(256) << 20;
+
 /// Estimated peak resident bytes of the CPU pipelines for `s` (what the ref backend allocates; the
 /// GL backend needs less host memory), derived from the buffers each stage keeps alive
 /// (memory_budget.cpp lists them). The scene is not known up front: its fragments are assumed to

@@ -84,14 +84,6 @@ void credit_nee(PathSample& out, const Integrator::Throughput& tp, int depth, co
 
 }  // namespace
 
-struct Integrator::Vertex {
-  BsdfPoint bp;
-  vec3 pos;  // on the surface: light geometry is evaluated here
-  vec3 p;    // lifted along ng: rays start here
-  uint32_t triangle;
-  int depth;
-};
-
 Integrator::Integrator(const Scene& scene, const EmbreeScene& rt, const EmissiveTriangles& lights,
                        const PtSettings& s, const ParticleLights* particles, const Image* particle_layer)
     : scene_(scene),
@@ -178,53 +170,65 @@ void Integrator::nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng
 }
 
 PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) const {
-  PathSample out;
-  Pcg32 rng = sample_rng(uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
+  return trace(first_vertex(x, y, counts), x, y, sample, counts);
+}
+
+Integrator::FirstVertex Integrator::first_vertex(int x, int y, RayCounts& counts) const {
+  FirstVertex first;
   const Ray cam = camera_ray(scene_.camera, settings_.width, settings_.height, float(x) + 0.5f, float(y) + 0.5f);
   ++counts.primary;
-  Hit hit = rt_.intersect(cam.org, cam.dir, cam.tnear, cam.tfar);
-  vec3 dir = cam.dir;
-  Throughput tp;
-  float prev_pdf = 0.0f;
+  const Hit hit = rt_.intersect(cam.org, cam.dir, cam.tnear, cam.tfar);
   if (particle_layer_) {
-    out.aov[kParticles] = particle_layer_->rgb(x, y);
-    out.aov[kFull] += out.aov[kParticles];
+    first.out.aov[kParticles] = particle_layer_->rgb(x, y);
+    first.out.aov[kFull] += first.out.aov[kParticles];
   }
+  if (hit.hit) first.continues = shade(hit, cam.dir, 1, Throughput{}, 0.0f, first.out, counts, first.vertex);
+  return first;
+}
 
-  for (int depth = 1; hit.hit; ++depth) {
-    const SurfacePoint sp = interpolate_surface(scene_, hit.triangle, hit.b1, hit.b2);
-    // The primary hit looks textures up at the pixel's ray-cone footprint (pt/ray_cone.h), as the
-    // G-buffer does at its LOD; later vertices integrate the texture by Monte Carlo at level 0.
-    const SlotLods lods = depth == 1
-                              ? ray_cone_lods(scene_, hit.triangle, hit.t, dir,
-                                              pixel_spread_angle(scene_.camera, settings_.height))
-                              : SlotLods{};
-    const SurfaceMaterial mat = evaluate_material(scene_, sp, lods);
-    const vec3 wo = -dir;
+bool Integrator::shade(const Hit& hit, const vec3& dir, int depth, const Throughput& tp, float prev_pdf,
+                       PathSample& out, RayCounts& counts, Vertex& v) const {
+  const SurfacePoint sp = interpolate_surface(scene_, hit.triangle, hit.b1, hit.b2);
+  // The primary hit looks textures up at the pixel's ray-cone footprint (pt/ray_cone.h), as the
+  // G-buffer does at its LOD; later vertices integrate the texture by Monte Carlo at level 0.
+  const SlotLods lods = depth == 1
+                            ? ray_cone_lods(scene_, hit.triangle, hit.t, dir,
+                                            pixel_spread_angle(scene_.camera, settings_.height))
+                            : SlotLods{};
+  const SurfaceMaterial mat = evaluate_material(scene_, sp, lods);
+  const vec3 wo = -dir;
 
-    // Emission seen from the previous vertex (or the camera); MIS against step 3's sampling.
-    const vec3 le = emitted_radiance(scene_, sp, mat, wo);
-    if (le != vec3(0.0f)) {
-      if (depth == 1) {
-        out.aov[kEmission] += le;
-        out.aov[kFull] += le;
-      } else {
-        const float cos_l = std::abs(glm::dot(sp.geometric_normal, wo));
-        const float pdf_light = lights_.pdf_area(hit.triangle) * hit.t * hit.t / std::max(cos_l, 1e-8f);
-        credit_emission(out, tp, depth, le * power_heuristic(prev_pdf, pdf_light));
-      }
+  // Emission seen from the previous vertex (or the camera); MIS against step 3's sampling.
+  const vec3 le = emitted_radiance(scene_, sp, mat, wo);
+  if (le != vec3(0.0f)) {
+    if (depth == 1) {
+      out.aov[kEmission] += le;
+      out.aov[kFull] += le;
+    } else {
+      const float cos_l = std::abs(glm::dot(sp.geometric_normal, wo));
+      const float pdf_light = lights_.pdf_area(hit.triangle) * hit.t * hit.t / std::max(cos_l, 1e-8f);
+      credit_emission(out, tp, depth, le * power_heuristic(prev_pdf, pdf_light));
     }
-    if (depth > settings_.max_depth) break;
+  }
+  if (depth > settings_.max_depth) return false;
 
-    vec3 ng, ns;
-    orient_normals(sp, mat, wo, ng, ns);
-    const sh::SurfacePbr pbr =
-        sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
-    // Light geometry is evaluated at the true surface point; only rays start from the point
-    // lifted off the surface (along ng, the side every accepted direction leaves on).
-    const Vertex v{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, hit.triangle, depth};
+  vec3 ng, ns;
+  orient_normals(sp, mat, wo, ng, ns);
+  const sh::SurfacePbr pbr =
+      sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
+  // Light geometry is evaluated at the true surface point; only rays start from the point
+  // lifted off the surface (along ng, the side every accepted direction leaves on).
+  v = Vertex{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, ns, hit.triangle, depth};
+  nee_punctual(v, tp, out, counts);
+  return true;
+}
 
-    nee_punctual(v, tp, out, counts);
+PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const {
+  PathSample out = first.out;
+  Pcg32 rng = sample_rng(uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
+  Throughput tp;
+  Vertex v = first.vertex;
+  for (bool shaded = first.continues; shaded;) {
     if (!lights_.empty()) nee_emitters(v, tp, rng, out, counts);
     if (particles_) nee_particles(v, tp, rng, out, counts);
 
@@ -235,25 +239,24 @@ PathSample Integrator::trace(int x, int y, uint32_t sample, RayCounts& counts) c
     if (!bs.valid) break;
     const BsdfValue f = eval_bsdf(v.bp, bs.l);
     if (f.total() == vec3(0.0f)) break;
-    const float k = glm::dot(ns, bs.l) / bs.pdf;
-    if (depth == 1) {
+    const float k = glm::dot(v.ns, bs.l) / bs.pdf;
+    if (v.depth == 1) {
       tp.lobe_d = f.diffuse * k;
       tp.lobe_s = f.specular * k;
       tp.beta = tp.lobe_d + tp.lobe_s;
     } else {
       tp.beta *= f.total() * k;
     }
-    if (depth >= settings_.rr_start_depth) {  // Russian roulette
+    if (v.depth >= settings_.rr_start_depth) {  // Russian roulette
       const float q = std::min(1.0f, max_component(tp.beta));
       if (rng.next_float() >= q) break;
       tp.beta /= q;
       tp.lobe_d /= q;
       tp.lobe_s /= q;
     }
-    prev_pdf = bs.pdf;
-    dir = bs.l;
     ++counts.secondary;
-    hit = rt_.intersect(v.p, dir, leave_tnear(dir), kInf);
+    const Hit hit = rt_.intersect(v.p, bs.l, leave_tnear(bs.l), kInf);
+    shaded = hit.hit && shade(hit, bs.l, v.depth + 1, tp, bs.pdf, out, counts, v);
   }
 
   if (!finite(out)) {

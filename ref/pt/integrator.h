@@ -10,6 +10,7 @@
 
 #include "core/math.h"
 #include "core/settings.h"
+#include "pt/bsdf_sampling.h"
 #include "pt/emissive_lights.h"
 #include "pt/embree_scene.h"
 #include "pt/particle_lights.h"
@@ -57,8 +58,35 @@ class Integrator {
     vec3 beta{1.0f}, lobe_d{0.0f}, lobe_s{0.0f};
   };
 
+  /// A shading point: BSDF, true position, lifted ray origin, shading normal, depth.
+  struct Vertex {
+    BsdfPoint bp;
+    vec3 pos;  // on the surface: light geometry is evaluated here
+    vec3 p;    // lifted along ng: rays start here
+    vec3 ns;   // the oriented shading normal (the BSDF sample's cosine)
+    uint32_t triangle;
+    int depth;
+  };
+
+  /// What every sample of a pixel shares (issue 16): camera rays go through the pixel centre, so
+  /// the primary hit, its shading, its emission and its punctual-light NEE use no random number
+  /// and are the same for every sample. trace(first_vertex(x, y), x, y, s) gives the same floats
+  /// as trace(x, y, s); a renderer computes first_vertex once per pixel and reuses it.
+  struct FirstVertex {
+    PathSample out;        // the particle layer, the first hit's emission and punctual light
+    bool continues = false;  // a hit within max_depth: the path goes on from `vertex`
+    Vertex vertex{};
+  };
+  /// Traces the camera ray of pixel (x, y) and shades its hit (counted in `counts`).
+  FirstVertex first_vertex(int x, int y, RayCounts& counts) const;
+  /// Sample `sample` of pixel (x, y) from its first vertex.
+  PathSample trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const;
+
  private:
-  struct Vertex;  // a shading point: BSDF, true position, lifted ray origin, depth
+  /// Shades the vertex at `hit` reached along `dir`: its emission (MIS-weighted past the first
+  /// vertex) and punctual NEE into `out`. False when the path ends there (depth > max_depth).
+  bool shade(const Hit& hit, const vec3& dir, int depth, const Throughput& tp, float prev_pdf, PathSample& out,
+             RayCounts& counts, Vertex& v) const;
   void nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
   void nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
   void nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;

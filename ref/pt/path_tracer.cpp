@@ -4,13 +4,17 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "core/parallel.h"
 
 namespace vct::pt {
 
 namespace {
 constexpr int kTile = 16;
-}
+// The per-pixel first vertices are kept across passes up to kPtFirstVertexBudget (a 1024^2
+// image); larger images trace each sample's first vertex anew. estimate_memory counts them.
+static_assert(sizeof(Integrator::FirstVertex) <= kPtFirstVertexBytes, "core/memory_budget.h's size");
+}  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles)
     : scene_(scene),
@@ -28,13 +32,29 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
   const int64_t tiles = int64_t(tiles_x) * tiles_y;
   RayCounts total;
   std::vector<RayCounts> per_tile(static_cast<size_t>(tiles));
+  // Every sample of a pixel starts from the same first vertex (camera rays through the pixel
+  // centre): it is traced and shaded in the first pass and reused by the others, with the same
+  // floats (Integrator::FirstVertex). Its camera and punctual-light shadow rays are traced, and
+  // counted, once per pixel.
+  const size_t pixels = size_t(acc.width()) * size_t(acc.height());
+  const bool keep_first = pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget;
+  std::vector<Integrator::FirstVertex> first(keep_first ? pixels : 0);
+  const uint32_t first_pass = acc.samples();
   for (uint32_t s = acc.samples(); s < target_spp; ++s) {
     parallel_for(tiles, [&](int64_t t) {
       const int x0 = int(t % tiles_x) * kTile, y0 = int(t / tiles_x) * kTile;
       const int x1 = std::min(x0 + kTile, acc.width()), y1 = std::min(y0 + kTile, acc.height());
       RayCounts counts;
       for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) acc.add(x, y, s, integrator_.trace(x, y, s, counts));
+        for (int x = x0; x < x1; ++x) {
+          if (!keep_first) {
+            acc.add(x, y, s, integrator_.trace(x, y, s, counts));
+            continue;
+          }
+          Integrator::FirstVertex& f = first[size_t(y) * size_t(acc.width()) + size_t(x)];
+          if (s == first_pass) f = integrator_.first_vertex(x, y, counts);
+          acc.add(x, y, s, integrator_.trace(f, x, y, s, counts));
+        }
       per_tile[size_t(t)] = counts;
     });
     acc.set_samples(s + 1);

@@ -16,6 +16,9 @@ namespace vct::pt {
 
 struct RawRayRates {
   double intersect = 0.0, occluded = 0.0;  // rays per second (best of 3 runs)
+  // The same per second of process CPU time (best of 3): steadier than wall time on a shared
+  // machine, where other jobs take turns on the cores.
+  double intersect_cpu = 0.0, occluded_cpu = 0.0;
   size_t rays = 0;
 };
 
@@ -24,6 +27,7 @@ RawRayRates measure_raw_embree(const Scene& scene, size_t rays = 2000000);
 
 struct TracerRate {
   double rays_per_second = 0.0, seconds = 0.0;
+  double rays_per_cpu_second = 0.0, cpu_seconds = 0.0;  // process CPU time, best of 3
   RayCounts counts;
 };
 

@@ -103,10 +103,28 @@ ConeFrame::ConeFrame(const VoxelMips& mips, const VoxelVolume& volume, const Vct
     sampler_ = std::make_unique<MipSampler>(mips);
     if (!sampler_->usable()) sampler_.reset();
   }
+  if (sampler_) {
+    const float voxel = 1.0f / float(sampler_->base_size());  // as trace_cone forms it
+    const auto add_schedule = [&](float aperture, const MarchParams& params) {
+      for (const MarchSchedule& known : schedules_)
+        if (known.fits(aperture, params, voxel)) return;
+      schedules_.emplace_back(aperture, params, voxel);
+    };
+    if (declared_.empty()) add_schedule(diffuse_aperture_, params_);
+    for (const DiffuseConeSpec& spec : declared_) add_schedule(spec.aperture, params_);
+    add_schedule(shadow_aperture_, shadow_params_);
+  }
+}
+
+const MarchSchedule* ConeFrame::schedule_for(const Cone& cone, const MarchParams& params) const {
+  const float voxel = 1.0f / float(sampler_->base_size());
+  for (const MarchSchedule& schedule : schedules_)
+    if (schedule.fits(cone.aperture, params, voxel)) return &schedule;
+  return nullptr;
 }
 
 vec4 ConeFrame::trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const {
-  if (sampler_ && !record) return trace_cone(*sampler_, cone, params);
+  if (sampler_ && !record) return trace_cone(*sampler_, cone, params, schedule_for(cone, params));
   return trace_cone(mips_, cone, params, record);
 }
 

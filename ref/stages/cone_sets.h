@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "shared/vct_shared.h"
 #include "stages/cone_trace.h"
+#include "stages/march_schedule.h"
 #include "stages/mip_sampler.h"
 
 namespace vct {
@@ -81,12 +82,16 @@ class ConeFrame {
 
  private:
   vec4 trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const;
+  /// The schedule among schedules_ this cone marches, or null.
+  const MarchSchedule* schedule_for(const Cone& cone, const MarchParams& params) const;
   /// Cone i's tangent-frame direction turned by `rotation` about the normal.
   vec3 rotated(int i, float rotation, bool unrotated) const;
 
   const VoxelMips& mips_;
   const VoxelVolume& volume_;
   std::unique_ptr<MipSampler> sampler_;  // null: not prepared (or not preparable)
+  // With sampler_: the march steps of the diffuse apertures and of the soft-shadow cone.
+  std::vector<MarchSchedule> schedules_;
   sh::DiffuseConeBlock block_;
   int count_ = 0;
   MarchParams params_;       // diffuse and specular

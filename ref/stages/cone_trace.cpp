@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shared/vct_shared.h"
+#include "stages/march_schedule.h"
 #include "stages/mip_sampler.h"
 #include "stages/voxel_sampler.h"
 
@@ -54,21 +55,21 @@ bool inside_unit_cube(const vec3& p) {
 
 // The march itself, for either sampler (voxel_sampler.h or the frame's MipSampler, which agree
 // bit for bit): one loop, so the two entry points cannot drift apart.
+// A `schedule` that fits the cone gives its first steps' geometry (march_schedule.h: the same
+// recurrence, computed once per frame).
 template <class Sample>
 vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sample& sample,
-           std::vector<ConeSample>* record) {
+           std::vector<ConeSample>* record, const MarchSchedule* schedule = nullptr) {
+  const size_t scheduled = schedule && schedule->fits(cone.aperture, params, voxel) ? schedule->size() : 0;
   const float tan_half = std::tan(0.5f * cone.aperture);
   vec3 color(0.0f);
   float alpha = 0.0f;
   float t = params.start_offset;
-  while (alpha < 1.0f && t < params.max_distance) {
+  for (size_t k = 0; alpha < 1.0f && t < params.max_distance; ++k) {
     const vec3 pos = cone.origin + cone.direction * t;
     if (!inside_unit_cube(pos)) break;
-    const float diameter = std::max(voxel, 2.0f * t * tan_half);
-    const float lod = std::max(std::log2(diameter / voxel), params.min_lod);
-    // A degenerate step (quality 0) would never end; the settings validator forbids it, but a
-    // hand-built MarchParams might not.
-    const float step = std::max(diameter * params.quality, 1e-6f);
+    const MarchStep g = k < scheduled ? (*schedule)[k] : march_step(t, tan_half, voxel, params);
+    const float diameter = g.diameter, lod = g.lod, step = g.step;
     vec4 s = sample(pos, lod, cone.direction);
     // dt0: the side of a voxel of the level sampled (lod as computed, before any clamp).
     if (params.step_correction) s = sh::step_corrected_sample(s, step / (voxel * std::exp2(lod)));
@@ -90,10 +91,10 @@ vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& para
   return march(cone, params, 1.0f / float(mips.iso[0].nx), sample, record);
 }
 
-vec4 trace_cone(const MipSampler& mips, const Cone& cone, const MarchParams& params) {
+vec4 trace_cone(const MipSampler& mips, const Cone& cone, const MarchParams& params, const MarchSchedule* schedule) {
   if (mips.base_size() == 0) return vec4(0.0f);
   const auto sample = [&mips](const vec3& pos, float lod, const vec3& dir) { return mips.sample(pos, lod, dir); };
-  return march(cone, params, 1.0f / float(mips.base_size()), sample, nullptr);
+  return march(cone, params, 1.0f / float(mips.base_size()), sample, nullptr, schedule);
 }
 
 }  // namespace vct

@@ -53,7 +53,11 @@ vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& para
                 std::vector<ConeSample>* record = nullptr);
 
 class MipSampler;
+class MarchSchedule;
 /// The same march on the frame's prepared mips (stages/mip_sampler.h): the same bits, faster.
-vec4 trace_cone(const MipSampler& mips, const Cone& cone, const MarchParams& params);
+/// A `schedule` (stages/march_schedule.h) that fits the cone's aperture and params supplies its
+/// steps' geometry; any other is ignored.
+vec4 trace_cone(const MipSampler& mips, const Cone& cone, const MarchParams& params,
+                const MarchSchedule* schedule = nullptr);
 
 }  // namespace vct

@@ -67,138 +67,6 @@ std::vector<uint8_t> cell_occupancy(const Volume& v) {
   return cells;
 }
 
-// Where a lookup lands in one level: GL §8.14.2 as sample_level_trilinear computes it. The
-// weights are filled in only for an occupied cell (an empty one needs none).
-struct Cell {
-  int i0 = 0, j0 = 0, k0 = 0;
-  bool interior = false;  // all eight texels inside
-  bool located = false;   // i0..k0 in [-1, n-1]: the occupancy byte exists
-  size_t cell = 0;
-  vec3 f{0.0f};           // fractional parts
-  bool have_weights = false;
-  float w[8];             // filled on first need (an empty cell needs none)
-};
-
-// floor(u) as an int, exactly std::floor for |u| < 2^31 (uvw in [0,1]^3 gives u in [-0.5, n)):
-// truncate, then step down where truncation went up (negative non-integers). The float of the
-// result is the float std::floor returns, so f = u - floor(u) keeps its bits.
-inline int floor_to_int(float u) {
-  const int i = int(u);
-  return i - (u < float(i) ? 1 : 0);
-}
-
-inline Cell locate(const Level& L, const vec3& uvw) {
-  Cell c;
-  const vec3 u = uvw * L.size - vec3(0.5f);
-  c.i0 = floor_to_int(u.x), c.j0 = floor_to_int(u.y), c.k0 = floor_to_int(u.z);
-  c.f = u - vec3(float(c.i0), float(c.j0), float(c.k0));
-  c.interior = c.i0 >= 0 && c.j0 >= 0 && c.k0 >= 0 && c.i0 + 1 < L.nx && c.j0 + 1 < L.ny && c.k0 + 1 < L.nz;
-  c.located = c.i0 >= -1 && c.j0 >= -1 && c.k0 >= -1 && c.i0 < L.nx && c.j0 < L.ny && c.k0 < L.nz;
-  if (c.located)
-    c.cell = (size_t(c.k0 + 1) * size_t(L.ny + 1) + size_t(c.j0 + 1)) * size_t(L.nx + 1) + size_t(c.i0 + 1);
-  return c;
-}
-
-// Weights in the order (dk, dj, di) of the reference loop, each formed as it forms them.
-inline void cell_weights(const vec3& f, float w[8]) {
-  int o = 0;
-  for (int dk = 0; dk < 2; ++dk) {
-    const float wk = dk ? f.z : 1.0f - f.z;
-    for (int dj = 0; dj < 2; ++dj) {
-      const float wj = dj ? f.y : 1.0f - f.y;
-      for (int di = 0; di < 2; ++di) {
-        const float wi = di ? f.x : 1.0f - f.x;
-        w[o++] = wi * wj * wk;
-      }
-    }
-  }
-}
-
-inline vec4 texel_or_border(const Level& L, int i, int j, int k) {
-  if (i < 0 || j < 0 || k < 0 || i >= L.nx || j >= L.ny || k >= L.nz) return vec4(0.0f);
-  const float* t = L.data + size_t(k) * L.sz + size_t(j) * L.sy + size_t(i) * 4;
-  return vec4(t[0], t[1], t[2], t[3]);
-}
-
-// The eight texels of `c` in `L` (same dimensions as the level `c` was located in), summed in
-// the reference's order. The weights are made on first need and reused (the anisotropic path
-// reads three volumes through one cell).
-inline vec4 gather(const Level& L, Cell& c) {
-  if (c.located && !L.occupied[c.cell]) return vec4(0.0f);  // eight zero texels: exactly +0
-  if (!c.have_weights) {
-    cell_weights(c.f, c.w);
-    c.have_weights = true;
-  }
-  const float* w = c.w;
-  vec4 result(0.0f);
-  if (c.interior) {
-    const float* p0 = L.data + size_t(c.k0) * L.sz + size_t(c.j0) * L.sy + size_t(c.i0) * 4;
-    int o = 0;
-    for (int dk = 0; dk < 2; ++dk)
-      for (int dj = 0; dj < 2; ++dj)
-        for (int di = 0; di < 2; ++di) {
-          const float* t = p0 + size_t(dk) * L.sz + size_t(dj) * L.sy + size_t(di) * 4;
-          result += w[o++] * vec4(t[0], t[1], t[2], t[3]);
-        }
-    return result;
-  }
-  int o = 0;
-  for (int dk = 0; dk < 2; ++dk)
-    for (int dj = 0; dj < 2; ++dj)
-      for (int di = 0; di < 2; ++di) result += w[o++] * texel_or_border(L, c.i0 + di, c.j0 + dj, c.k0 + dk);
-  return result;
-}
-
-inline vec4 trilinear(const Level& L, const vec3& uvw) {
-  Cell c = locate(L, uvw);
-  return gather(L, c);
-}
-
-// GL §8.14.3 level selection, as sample_chain does it: lambda clamped to [0, q]; at or above q
-// level q alone, else floor(lambda) and the next blended by fract(lambda) (one level when 0).
-struct LevelPick {
-  int d1 = 0;
-  float f = 0.0f;
-  bool two = false;
-};
-inline LevelPick pick_levels(int level_count, float lod) {
-  const int q = level_count - 1;
-  const float lambda = std::min(std::max(lod, 0.0f), float(q));
-  LevelPick p;
-  if (lambda >= float(q)) {
-    p.d1 = q;
-    return p;
-  }
-  p.d1 = int(std::floor(lambda));
-  p.f = lambda - float(p.d1);
-  p.two = p.f != 0.0f;
-  return p;
-}
-
-// The anisotropic lookup from its located cells, as voxel_sampler.cpp's sample_anisotropic
-// combines its three chains (same terms, same order).
-inline vec4 combine_anisotropic(const std::array<std::vector<Level>, 6>& aniso_, const LevelPick& p, Cell& c1, Cell& c2,
-                                const vec3& dir) {
-  const vec3 w = dir * dir;
-  const int axis_dir[3] = {dir.x >= 0.0f ? kPosX : kNegX, dir.y >= 0.0f ? kPosY : kNegY,
-                           dir.z >= 0.0f ? kPosZ : kNegZ};
-  const bool base1 = p.d1 == 0;
-  const vec4 shared1 = base1 ? gather(aniso_[0][0], c1) : vec4(0.0f);
-  vec4 result(0.0f);
-  for (int a = 0; a < 3; ++a) {
-    if (w[a] == 0.0f) continue;  // as voxel_sampler.cpp: the axis does not contribute
-    const std::vector<Level>& chain = aniso_[size_t(axis_dir[a])];
-    const vec4 t1 = base1 ? shared1 : gather(chain[size_t(p.d1)], c1);
-    if (!p.two) {
-      result += w[a] * t1;
-      continue;
-    }
-    const vec4 t2 = gather(chain[size_t(p.d1) + 1], c2);
-    result += w[a] * ((1.0f - p.f) * t1 + p.f * t2);
-  }
-  return result;
-}
-
 
 Level make_level(const Volume& v, const std::vector<uint8_t>& occupied) {
   Level L;
@@ -207,6 +75,11 @@ Level make_level(const Volume& v, const std::vector<uint8_t>& occupied) {
   L.sy = size_t(v.nx) * 4;
   L.sz = L.sy * size_t(v.ny);
   L.size = vec3(float(v.nx), float(v.ny), float(v.nz));
+  L.size4 = {float(v.nx), float(v.ny), float(v.nz), 0.0f};
+  L.last4 = {v.nx - 1, v.ny - 1, v.nz - 1, 0};
+  L.cell_sy = ptrdiff_t(v.nx) + 1;
+  L.cell_sz = L.cell_sy * (ptrdiff_t(v.ny) + 1);
+  L.cell_origin = L.cell_sz + L.cell_sy + 1;
   L.occupied = occupied.data();
   return L;
 }
@@ -238,6 +111,7 @@ MipSampler::MipSampler(const VoxelMips& mips) {
   occupancy_.reserve(16 * 7);
   if (!anisotropic_) {
     for (size_t k = 0; k < std::min<size_t>(mips.iso.size(), 16); ++k) iso_.push_back(add(mips.iso[k]));
+    iso_count_ = int(iso_.size());
     return;
   }
   const Level base = add(mips.iso[0]);
@@ -247,27 +121,6 @@ MipSampler::MipSampler(const VoxelMips& mips) {
     const auto& chain = mips.aniso[size_t(d)];
     for (size_t k = 0; k + 1 < std::min<size_t>(chain.size() + 1, 16); ++k) aniso_[size_t(d)].push_back(add(chain[k]));
   }
-}
-
-vec4 MipSampler::sample(const vec3& uvw, float lod, const vec3& dir) const {
-  return anisotropic_ ? sample_anisotropic(uvw, lod, dir) : sample_isotropic(uvw, lod);
-}
-
-vec4 MipSampler::sample_isotropic(const vec3& uvw, float lod) const {
-  const LevelPick p = pick_levels(int(iso_.size()), lod);
-  const vec4 t1 = trilinear(iso_[size_t(p.d1)], uvw);
-  if (!p.two) return t1;
-  const vec4 t2 = trilinear(iso_[size_t(p.d1) + 1], uvw);
-  return (1.0f - p.f) * t1 + p.f * t2;
-}
-
-vec4 MipSampler::sample_anisotropic(const vec3& uvw, float lod, const vec3& dir) const {
-  const LevelPick p = pick_levels(int(aniso_[0].size()), lod);
-  // The six directional chains share each level's size (and level 0 itself): one cell per level.
-  Cell c1 = locate(aniso_[0][size_t(p.d1)], uvw);
-  Cell c2;
-  if (p.two) c2 = locate(aniso_[0][size_t(p.d1) + 1], uvw);
-  return combine_anisotropic(aniso_, p, c1, c2, dir);
 }
 
 }  // namespace vct

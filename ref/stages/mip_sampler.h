@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +44,11 @@ class MipSampler {
     int nx = 0, ny = 0, nz = 0;
     size_t sy = 0, sz = 0;      // floats per row, per slice (4 channels)
     vec3 size{0.0f};            // (nx, ny, nz) as floats, as sample_level_trilinear forms it
+    std::array<float, 4> size4{};  // (nx, ny, nz, 0): the same for a four-lane load
+    std::array<int, 4> last4{};    // (nx - 1, ny - 1, nz - 1, 0): the interior test's bounds
     const uint8_t* occupied = nullptr;  // (nx+1)(ny+1)(nz+1) cells, cell (i0,j0,k0) at i0+1, ...
+    // occupied[cell_origin + k0 * cell_sz + j0 * cell_sy + i0] is cell (i0, j0, k0)'s byte.
+    ptrdiff_t cell_sy = 0, cell_sz = 0, cell_origin = 0;
   };
 
  private:
@@ -54,8 +59,11 @@ class MipSampler {
   bool usable_ = false;
   bool anisotropic_ = false;
   std::vector<Level> iso_;                   // iso_[k] = mips.iso[k]
+  int iso_count_ = 0;                        // iso_.size() (isotropic mips only)
   std::array<std::vector<Level>, 6> aniso_;  // aniso_[d][k] = level k of direction d (k = 0: the base)
   std::vector<std::vector<uint8_t>> occupancy_;  // storage behind Level::occupied
 };
 
 }  // namespace vct
+
+#include "stages/mip_sampler_lookup.h"  // the inline lookups

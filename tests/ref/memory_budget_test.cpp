@@ -31,7 +31,7 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   // + frame images 96 + cone images 2 x 80.
   EXPECT_EQ(e.images, 50ull * 50 * 4 + 100ull * 100 * 532);
   EXPECT_EQ(e.raster_scratch, 100ull * 100 * 82);  // the camera's visibility buffer is larger
-  EXPECT_EQ(e.path_tracer, 100ull * 16 * 8);
+  EXPECT_EQ(e.path_tracer, 100ull * (16 * 8 + 256));  // accumulators + the kept first vertices
   EXPECT_EQ(e.baseline, 136ull << 20);
   EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
   // Shadow maps are rasterized depth-only: a large map adds its floats, no scratch.

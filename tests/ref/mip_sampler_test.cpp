@@ -7,6 +7,7 @@
 #include <random>
 
 #include "stages/cone_trace.h"
+#include "stages/march_schedule.h"
 #include "stages/mip_sampler.h"
 #include "stages/mips.h"
 #include "stages/voxel_sampler.h"
@@ -82,6 +83,67 @@ TEST(MipSampler, ConeMarchHasTheReferenceBits) {
       differ += !same_bits(trace_cone(fast, c, params), trace_cone(mips, c, params));
     }
     EXPECT_EQ(differ, 0) << (aniso ? "anisotropic" : "isotropic");
+  }
+}
+
+// A zero aperture keeps the diameter at one voxel: every step is voxel x quality, so the steps
+// are counted by hand. 1/16 start, 1/32 steps (exact binary fractions), t < 1: t = 1/16 + k/32
+// for k = 0..29, 30 steps.
+TEST(MarchSchedule, ZeroApertureStepsAreCountedByHand) {
+  MarchParams params;
+  params.start_offset = 1.0f / 16.0f;
+  params.max_distance = 1.0f;
+  params.quality = 0.5f;
+  const MarchSchedule schedule(0.0f, params, 1.0f / 16.0f);
+  ASSERT_EQ(schedule.size(), 30u);
+  for (size_t k = 0; k < schedule.size(); ++k) {
+    EXPECT_EQ(schedule[k].diameter, 1.0f / 16.0f);
+    EXPECT_EQ(schedule[k].lod, 0.0f);
+    EXPECT_EQ(schedule[k].step, 1.0f / 32.0f);
+  }
+  EXPECT_TRUE(schedule.fits(0.0f, params, 1.0f / 16.0f));
+  MarchParams other = params;
+  other.max_distance = 0.5f;  // stops earlier on the same steps
+  EXPECT_TRUE(schedule.fits(0.0f, other, 1.0f / 16.0f));
+  other = params;
+  other.quality = 0.25f;
+  EXPECT_FALSE(schedule.fits(0.0f, other, 1.0f / 16.0f));
+  other = params;
+  other.start_offset = 0.0f;
+  EXPECT_FALSE(schedule.fits(0.0f, other, 1.0f / 16.0f));
+  other = params;
+  other.min_lod = 1.0f;
+  EXPECT_FALSE(schedule.fits(0.0f, other, 1.0f / 16.0f));
+  EXPECT_FALSE(schedule.fits(0.1f, params, 1.0f / 16.0f));
+  EXPECT_FALSE(schedule.fits(0.0f, params, 1.0f / 32.0f));
+}
+
+// The frame's march with a schedule (whole, shorter than the march so that it computes the rest,
+// or for another aperture so that it is ignored) against the readable march: the same bits.
+TEST(MarchSchedule, ScheduledMarchHasTheReferenceBits) {
+  for (bool aniso : {false, true}) {
+    const VoxelMips mips = build_mips(sparse_volume(5), aniso);
+    const MipSampler fast(mips);
+    std::mt19937 rng(6);
+    std::uniform_real_distribution<float> u(0.05f, 0.95f), d(-1.0f, 1.0f);
+    int differ = 0, scheduled = 0;
+    for (int n = 0; n < 3000; ++n) {
+      MarchParams params;
+      params.start_offset = 1.0f / 16.0f;
+      params.min_lod = n % 3 == 0 ? 1.0f : 0.0f;
+      params.step_correction = n % 4 == 0;
+      Cone c;
+      c.origin = vec3(u(rng), u(rng), u(rng));
+      c.direction = glm::normalize(vec3(d(rng), d(rng), d(rng)));
+      c.aperture = 0.02f + 1.2f * u(rng);
+      MarchParams built = params;
+      if (n % 5 == 1) built.max_distance = 0.2f;  // runs out before the march ends
+      const MarchSchedule schedule(n % 5 == 2 ? c.aperture * 0.5f : c.aperture, built, 1.0f / 16.0f);
+      scheduled += schedule.fits(c.aperture, params, 1.0f / 16.0f);
+      differ += !same_bits(trace_cone(fast, c, params, &schedule), trace_cone(mips, c, params));
+    }
+    EXPECT_EQ(differ, 0) << (aniso ? "anisotropic" : "isotropic");
+    EXPECT_EQ(scheduled, 2400);  // all but the other-aperture fifth
   }
 }
 
