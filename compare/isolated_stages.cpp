@@ -1,6 +1,12 @@
 #include "compare/isolated_stages.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "compare/tolerance.h"
+#include "stages/cube_map.h"
+#include "stages/direct.h"
+#include "stages/direct_ties.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
 #include "stages/multibounce.h"
@@ -12,10 +18,47 @@
 
 namespace vct::cmp {
 
-FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s) {
+namespace {
+// The test's own shadow maps with the matrices both backends look them up through (GL takes the
+// CPU's; a stage set's maps carry none: stage_set_frame.cpp), as render_shadow_maps builds them.
+// Empty unless every light has its map.
+std::vector<ShadowMap> test_maps_with_matrices(const Scene& scene, const FrameResult& test, const VctSettings& s) {
+  if (test.shadow_maps.size() != scene.lights.size()) return {};
+  std::vector<ShadowMap> maps = test.shadow_maps;
+  for (size_t i = 0; i < maps.size(); ++i) {
+    const Light& light = scene.lights[i];
+    ShadowMap& m = maps[i];
+    if (light.is_point()) {
+      const vec2 range = light_depth_range(light, scene.bounds);
+      for (int f = 0; f < 6; ++f) {
+        if (m.cube[size_t(f)].empty() || m.cube[size_t(f)].width != m.cube[0].width) return {};
+        m.cube_view_proj[size_t(f)] = cube_face_view_proj(f, light.position, range.x, range.y);
+      }
+    } else {
+      if (m.depth.empty()) return {};
+      m.view_proj = light_view_proj(scene, i, s);
+    }
+  }
+  return maps;
+}
+}  // namespace
+
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s, int march_end) {
   FrameResult r = test;
   r.backend = "ref-on-" + test.backend + "-inputs";
-  trace_cone_stages(scene, s, r);
+  std::vector<ShadowMap> maps;
+  if (!s.soft_shadows) {
+    // Direct light re-shaded from the test's G-buffer and shadow maps (docs/compare.md, "Shading
+    // stages on the test's own inputs"); without the test's maps it is not judged here (missing,
+    // so the end-to-end verdict stands).
+    maps = test_maps_with_matrices(scene, test, s);
+    r.images.direct = maps.empty() && !scene.lights.empty() ? Image() : shade_direct(scene, r.gbuffer, maps, s);
+  }
+  trace_cone_stages(scene, s, r, march_end);
+  // The only ties left on these inputs: PCF taps the lookup's float arithmetic may flip; none for
+  // emission. Replaces any raster range the test carried (its G-buffer stages are not judged here).
+  r.gbuffer.tie_range = shading_tie_range(scene, r.gbuffer, maps, s, s.soft_shadows ? Image() : r.images.direct,
+                                          r.images.emission);
   return r;
 }
 
@@ -61,20 +104,85 @@ void replace_with_isolated(StageVerdict& v, const StageVerdict& iso, const char*
 }
 }  // namespace
 
+bool is_shading_on_own_inputs(const std::string& stage, bool soft_shadows) {
+  return stage == stage_names::kImageEmission || (!soft_shadows && stage == stage_names::kImageDirect);
+}
+
 void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool soft_shadows) {
   for (StageVerdict& v : end_to_end.stages) {
-    if (!is_cone_traced(v.stage, soft_shadows)) continue;
+    const bool shading = is_shading_on_own_inputs(v.stage, soft_shadows);
+    if (!shading && !is_cone_traced(v.stage, soft_shadows)) continue;
     const StageVerdict* iso = find_stage(isolated, v.stage);
     if (!iso || iso->verdict == Verdict::Missing) continue;
-    replace_with_isolated(v, *iso, "the test's own voxels");
+    replace_with_isolated(v, *iso, shading ? "the test's own G-buffer and shadow maps" : "the test's own voxels");
   }
+}
+
+namespace {
+// The cone images a march-end variant changes (the indirect cones and what the composite makes of them).
+constexpr Image FrameImages::*kMarchEndImages[] = {&FrameImages::indirect_diffuse, &FrameImages::indirect_specular,
+                                                   &FrameImages::diffuse_term, &FrameImages::specular_term,
+                                                   &FrameImages::final_image};
+
+float largest_difference(const Image& a, const Image& b, int x, int y) {
+  float d = 0.0f;
+  for (int c = 0; c < std::min(a.channels, b.channels); ++c) d = std::max(d, std::abs(a.at(x, y, c) - b.at(x, y, c)));
+  return d;
+}
+
+bool any_cone_stage_fails(const Report& r, bool soft_shadows) {
+  for (const StageVerdict& v : r.stages)
+    if (is_cone_traced(v.stage, soft_shadows) && v.verdict == Verdict::Fail) return true;
+  return false;
+}
+}  // namespace
+
+FrameResult closest_march_end(const FrameResult& plain, const FrameResult& shorter, const FrameResult& longer,
+                              const FrameResult& test, size_t* pixels_moved) {
+  FrameResult out = plain;
+  size_t moved = 0;
+  for (Image FrameImages::*slot : kMarchEndImages) {
+    Image& o = out.images.*slot;
+    const Image& t = test.images.*slot;
+    const Image* variants[2] = {&(shorter.images.*slot), &(longer.images.*slot)};
+    if (o.empty() || t.width != o.width || t.height != o.height) continue;
+    for (int y = 0; y < o.height; ++y)
+      for (int x = 0; x < o.width; ++x) {
+        float best = largest_difference(o, t, x, y);
+        for (const Image* v : variants) {
+          if (v->width != o.width || v->height != o.height) continue;
+          const float d = largest_difference(*v, t, x, y);
+          if (d >= best) continue;
+          best = d;
+          for (int c = 0; c < o.channels; ++c) o.at(x, y, c) = v->at(x, y, c);
+          ++moved;
+        }
+      }
+  }
+  if (pixels_moved) *pixels_moved = moved;
+  return out;
 }
 
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt) {
   const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s);
-  apply_isolated_verdicts(end_to_end, compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt),
-                          s.soft_shadows);
+  Report isolated = compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, opt);
+  // The march-end tie (docs/compare.md): only where the plain re-trace fails a cone stage, each
+  // cone-image pixel is judged against the closest of the three admissible march ends.
+  if (any_cone_stage_fails(isolated, s.soft_shadows)) {
+    size_t moved = 0;
+    const FrameResult closest = closest_march_end(ref_on_test, reference_on_test_inputs(scene, test, s, -1),
+                                                  reference_on_test_inputs(scene, test, s, +1), test, &moved);
+    isolated = compare_stage_sets(stage_set_from_frame(closest, s), test_set, opt);
+    for (StageVerdict& v : isolated.stages)
+      if (is_cone_traced(v.stage, s.soft_shadows)) {
+        v.note += "; march-end alternatives (a last sample within the step positions' precision of the volume's "
+                  "face or max_distance) taken where closer: " +
+                  std::to_string(moved) + " pixel values over the cone images";
+        v.extra["march_end_alternatives"] = moved;
+      }
+  }
+  apply_isolated_verdicts(end_to_end, isolated, s.soft_shadows);
   // Multibounce: the last frame's voxels on the test's own bounce input.
   if (std::optional<VoxelGrid> grid = reference_voxels_on_test_bounce_input(scene, test, s)) {
     FrameResult r = test;

@@ -21,8 +21,20 @@ namespace vct::cmp {
 
 /// The reference's cone-traced images computed from `test`'s G-buffer, direct light, particles
 /// and mips; the other stages are copied from `test`. Soft shadows (cone-traced direct light)
-/// are re-traced too when enabled.
-FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s);
+/// are re-traced too when enabled; otherwise direct light is re-shaded from `test`'s G-buffer and
+/// shadow maps (left empty when `test` lacks a light's map). gbuffer.tie_range then holds the
+/// shading stages' admissible ranges on these inputs (stages/direct_ties.h), nothing else.
+/// `march_end`: the indirect cones' MarchParams::march_end (-1 / +1: the march-end tie's
+/// alternatives, docs/compare.md "The march-end tie").
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                     int march_end = 0);
+
+/// The march-end tie: `plain` with each pixel of its indirect cone images (and the terms and
+/// final image made of them) replaced by `shorter`'s or `longer`'s (the re-trace with march_end
+/// -1 / +1) where that is closer to `test` (largest channel difference), as dEQP accepts any
+/// admissible result. `pixels_moved`: how many pixel values were replaced.
+FrameResult closest_march_end(const FrameResult& plain, const FrameResult& shorter, const FrameResult& longer,
+                              const FrameResult& test, size_t* pixels_moved = nullptr);
 
 /// A multibounce frame's voxels as the reference computes them from the test's own bounce input:
 /// its last frame injected again with the bounce light traced in mips it builds from
@@ -33,15 +45,21 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
 std::optional<VoxelGrid> reference_voxels_on_test_bounce_input(const Scene& scene, const FrameResult& test,
                                                               const VctSettings& s);
 
-/// For every cone-traced stage, replaces the end-to-end verdict by the isolated one (stage judged
-/// on the test's own inputs) and keeps the end-to-end verdict in the note and in
-/// extra["end_to_end"], so a cone stage fails only when the test's marcher is wrong.
-/// `soft_shadows`: direct light was cone-traced, so it is replaced too.
+/// True for the shading stages judged on the test's own G-buffer and shadow maps: image.emission,
+/// and image.direct unless soft shadows cone-trace it.
+bool is_shading_on_own_inputs(const std::string& stage, bool soft_shadows);
+
+/// For every cone-traced stage and the shading stages (is_shading_on_own_inputs), replaces the
+/// end-to-end verdict by the isolated one (stage judged on the test's own inputs) and keeps the
+/// end-to-end verdict in the note and in extra["end_to_end"], so such a stage fails only when the
+/// test's own arithmetic is wrong. `soft_shadows`: direct light was cone-traced, so it is replaced
+/// as a cone stage.
 void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool soft_shadows);
 
 /// The whole isolated judgement, as `vct validate` and `vct compare --scene` run it: the reference
 /// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`
-/// (no masks by default), then applied to `end_to_end`; in multibounce frames voxel.radiance too
+/// (no masks by default) — where a cone stage fails there, again against the closest march end
+/// (closest_march_end) — then applied to `end_to_end`; in multibounce frames voxel.radiance too
 /// (reference_voxels_on_test_bounce_input).
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt = {});

@@ -153,7 +153,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
                                       ? tie_range_channels(stage, *tie_range, ch)
                                       : TieRangeChannels();
   const bool alternatives_only = !alt_ch.empty();
-  if (alternatives_only)
+  // The shading stages' range comes from the reference re-shaded on the test's own G-buffer and
+  // shadow maps (stages/direct_ties.h): only PCF taps its lookup's float arithmetic may flip.
+  const bool pcf_range = alternatives_only && m.id == ToleranceModel::Shading;
+  if (pcf_range)
+    v.bound += "; ties: only PCF taps that the lookup's float arithmetic may flip on the test's own shadow maps, "
+               "no edge or interior share";
+  else if (alternatives_only)
     v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
@@ -286,11 +292,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   v.note = buf;
   if (alternatives)
     v.note += "; " + std::to_string(alternatives) +
-              " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)";
+              (pcf_range ? " within the range of PCF taps that may flip (float lookup arithmetic)"
+                         : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
-              (alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
-                                 : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
+              (pcf_range ? " outside the range of PCF taps that may flip (not a value a tie can give)"
+               : alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
+                                   : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},

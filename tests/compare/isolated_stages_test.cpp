@@ -44,15 +44,19 @@ StageVerdict verdict(const std::string& stage, Verdict v) {
 TEST(IsolatedStages, UpstreamTiesWarnButAWrongMarcherStillFails) {
   Report e2e;
   e2e.stages = {verdict("voxel.occupancy", Verdict::Warn), verdict("image.indirect_diffuse", Verdict::Fail),
-                verdict("image.indirect_specular", Verdict::Fail), verdict("image.direct", Verdict::Fail)};
+                verdict("image.indirect_specular", Verdict::Fail), verdict("gbuffer.albedo", Verdict::Fail),
+                verdict("image.direct", Verdict::Fail)};
   Report iso;
   iso.stages = {verdict("image.indirect_diffuse", Verdict::Pass), verdict("image.indirect_specular", Verdict::Fail),
-                verdict("image.direct", Verdict::Pass)};
+                verdict("gbuffer.albedo", Verdict::Pass), verdict("image.direct", Verdict::Pass)};
   apply_isolated_verdicts(e2e, iso, false);
   EXPECT_EQ(e2e.stages[1].verdict, Verdict::Warn);  // ties upstream, marcher right
   EXPECT_EQ(e2e.stages[1].extra["end_to_end"]["verdict"], "fail");
   EXPECT_EQ(e2e.stages[2].verdict, Verdict::Fail);  // marcher wrong on its own inputs
-  EXPECT_EQ(e2e.stages[3].verdict, Verdict::Fail);  // not cone-traced: untouched
+  EXPECT_EQ(e2e.stages[3].verdict, Verdict::Fail);  // not judged on the test's inputs: untouched
+  // Direct light is re-shaded on the test's G-buffer and shadow maps (docs/compare.md, "Shading
+  // stages on the test's own inputs"): right there, so the end-to-end failure came from upstream.
+  EXPECT_EQ(e2e.stages[4].verdict, Verdict::Warn);
   EXPECT_EQ(e2e.first_failing(), "image.indirect_specular");
 }
 
