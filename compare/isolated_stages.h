@@ -36,14 +36,16 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
 FrameResult closest_march_end(const FrameResult& plain, const FrameResult& shorter, const FrameResult& longer,
                               const FrameResult& test, size_t* pixels_moved = nullptr);
 
-/// A multibounce frame's voxels as the reference computes them from the test's own bounce input:
-/// its last frame injected again with the bounce light traced in mips it builds from
-/// test.bounce_input (the test's frame before the last), particles added. End to end, every
-/// voxel the test's earlier frames legitimately moved (a tie, a shading slack) changes the bounce
-/// light of its neighbours, and the reference's own frames cannot show that. Nullopt when the test
-/// ran one frame (no bounce input).
-std::optional<VoxelGrid> reference_voxels_on_test_bounce_input(const Scene& scene, const FrameResult& test,
-                                                              const VctSettings& s);
+/// The voxels as the reference computes them from the test's own inputs: its own voxelization,
+/// injected through the test's shadow maps (with the matrices both backends use; the reference's
+/// own where the test has none) and, in a multibounce frame, with the bounce light traced in mips
+/// built from test.bounce_input (the test's frame before the last); particles added; the shading
+/// slack taken on those maps. End to end, a shadow-map texel that ties on GL's own map moves every
+/// fragment that samples it, and every voxel an earlier frame legitimately moved changes the
+/// bounce light of its neighbours: the reference's own frame cannot show either. Nullopt when
+/// there is neither (no lights or no test maps, one frame), or with the running-mean reduction.
+std::optional<VoxelGrid> reference_voxels_on_test_inputs(const Scene& scene, const FrameResult& test,
+                                                         const VctSettings& s);
 
 /// True for the shading stages judged on the test's own G-buffer and shadow maps: image.emission,
 /// and image.direct unless soft shadows cone-trace it.
@@ -59,8 +61,8 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool so
 /// The whole isolated judgement, as `vct validate` and `vct compare --scene` run it: the reference
 /// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`
 /// (no masks by default) — where a cone stage fails there, again against the closest march end
-/// (closest_march_end) — then applied to `end_to_end`; in multibounce frames voxel.radiance too
-/// (reference_voxels_on_test_bounce_input).
+/// (closest_march_end) — then applied to `end_to_end`; voxel.radiance too, on the test's shadow
+/// maps and bounce input (reference_voxels_on_test_inputs).
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt = {});
 

@@ -403,7 +403,6 @@ bool face_neighbour_in(const Volume& v, const std::vector<uint8_t>& set, size_t 
 }
 
 constexpr double kTieFraction = 0.01;  // ties beyond 1% of occupied voxels are not ties
-constexpr double kShadingTieFraction = 0.005;  // shadow-test ties beyond 0.5% of voxels are not ties
 
 StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
   const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
@@ -535,6 +534,12 @@ StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const Compare
   return v;
 }
 
+std::string percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g%%", 100.0 * fraction);
+  return buf;
+}
+
 StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
   const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
   const Volume& test = ts.volumes.at(st::kVoxelRadiance);
@@ -628,7 +633,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   // one side only, moving that fragment by 1/taps of its light. They are rare and sit on shadow
   // edges; up to kShadingTieFraction of the voxels they warn, beyond that they fail.
   const bool shading_ties_tolerated =
-      double(shading_ties) <= kShadingTieFraction * double(std::max<size_t>(v.checked, 1));
+      double(shading_ties) <= opt.shading_tie_fraction * double(std::max<size_t>(v.checked, 1));
   if (shading_ties_tolerated) v.allowed += shading_ties;
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const bool too_many = double(count_ties) > 2.0 * kTieFraction * double(std::max<size_t>(v.checked, 1));
@@ -645,8 +650,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   if (exact) v.note += "; " + std::to_string(exact_differ) + " of " + std::to_string(exact_checked) + " exact voxels differ";
   v.extra["shading_ties"] = shading_ties;
   if (shading_ties)
-    v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound (shadow-test ties" +
-              (shading_ties_tolerated ? ", tolerated up to 0.5%)" : ": more than 0.5%, not ties)");
+    v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound" +
+              (opt.shading_tie_fraction <= 0.0
+                   ? std::string(" on the test's own shadow maps (no share: not ties)")
+                   : " (shadow-test ties" + std::string(shading_ties_tolerated ? ", tolerated up to " : ": more than ") +
+                         percent(opt.shading_tie_fraction) + (shading_ties_tolerated ? ")" : ", not ties)"));
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_volume_mask(opt, v, mask);

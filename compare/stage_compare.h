@@ -22,6 +22,10 @@ struct CompareOptions {
   // shadow_depth_format: one UNORM step q = 1/(2^b - 1) (0 for float); the depth bound grows by
   // 2q (docs/compare.md, the shadow_depth_format row).
   double depth_quantum = 0.0;
+  // voxel.radiance: voxels beyond bound + shading slack (shadow-test ties the slack does not
+  // see) tolerated up to this fraction of the checked voxels (warn); 0: none (docs/compare.md,
+  // "Voxel radiance on the test's own shadow maps", says why 0.5 % stays).
+  double shading_tie_fraction = 0.005;
 };
 
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});

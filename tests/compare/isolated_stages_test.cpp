@@ -73,13 +73,14 @@ TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce
   s.vct.bounces = 3;
   const FrameResult ref = render_ref_frame(scene, s);
   ASSERT_EQ(ref.bounce_input.nx, 16);
-  const std::optional<VoxelGrid> again = reference_voxels_on_test_bounce_input(scene, ref, s.vct);
+  const std::optional<VoxelGrid> again = reference_voxels_on_test_inputs(scene, ref, s.vct);
   ASSERT_TRUE(again.has_value());
   EXPECT_EQ(again->radiance.data, ref.voxels.radiance.data);
-  // One frame: nothing to judge on.
+  // One frame and no shadow maps of its own: nothing to judge on.
   FrameResult one = ref;
   one.bounce_input = Volume();
-  EXPECT_FALSE(reference_voxels_on_test_bounce_input(scene, one, s.vct).has_value());
+  one.shadow_maps.clear();
+  EXPECT_FALSE(reference_voxels_on_test_inputs(scene, one, s.vct).has_value());
 
   // The faulty test: its last frame's bounce light x 1.5, everything else the reference's.
   VctSettings strong = s.vct;
@@ -96,7 +97,7 @@ TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce
                                      [](const StageVerdict& v) { return v.stage == "voxel.radiance"; });
   ASSERT_NE(radiance, rep.stages.end());
   EXPECT_EQ(radiance->verdict, Verdict::Fail) << radiance->note;
-  EXPECT_NE(radiance->note.find("the test's own bounce input"), std::string::npos) << radiance->note;
+  EXPECT_NE(radiance->note.find("the test's own shadow maps and bounce input"), std::string::npos) << radiance->note;
   // The right frame judged the same way passes.
   const StageSet ref_set = stage_set_from_frame(ref, s.vct);
   Report same = compare_stage_sets(ref_set, ref_set);
