@@ -62,7 +62,8 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool so
 /// re-traced on `test`'s inputs, judged against `test_set` (the stage set of `test`) with `opt`
 /// (no masks by default) — where a cone stage fails there, again against the closest march end
 /// (closest_march_end) — then applied to `end_to_end`; voxel.radiance too, on the test's shadow
-/// maps and bounce input (reference_voxels_on_test_inputs).
+/// maps and bounce input (reference_voxels_on_test_inputs), in a multibounce frame always, in a
+/// single frame where the end-to-end verdict counted shading ties (the re-injection's cost).
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt = {});
 
