@@ -159,14 +159,15 @@ FrameResult closest_march_end(const FrameResult& plain, const FrameResult& short
     for (int y = 0; y < o.height; ++y)
       for (int x = 0; x < o.width; ++x) {
         float best = largest_difference(o, t, x, y);
+        const Image* chosen = nullptr;
         for (const Image* v : variants) {
           if (v->width != o.width || v->height != o.height) continue;
           const float d = largest_difference(*v, t, x, y);
-          if (d >= best) continue;
-          best = d;
-          for (int c = 0; c < o.channels; ++c) o.at(x, y, c) = v->at(x, y, c);
-          ++moved;
+          if (d < best) best = d, chosen = v;
         }
+        if (!chosen) continue;
+        for (int c = 0; c < o.channels; ++c) o.at(x, y, c) = chosen->at(x, y, c);
+        ++moved;
       }
   }
   if (pixels_moved) *pixels_moved = moved;
