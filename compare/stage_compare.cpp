@@ -154,7 +154,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
                                       ? tie_range_channels(stage, *tie_range, ch)
                                       : TieRangeChannels();
   const bool alternatives_only = !alt_ch.empty();
-  if (alternatives_only)
+  // The shading stages' range comes from the reference re-shaded on the test's own G-buffer and
+  // shadow maps (stages/direct_ties.h): only PCF taps its lookup's float arithmetic may flip.
+  const bool pcf_range = alternatives_only && m.id == ToleranceModel::Shading;
+  if (pcf_range)
+    v.bound += "; ties: only PCF taps that the lookup's float arithmetic may flip on the test's own shadow maps, "
+               "no edge or interior share";
+  else if (alternatives_only)
     v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
@@ -293,11 +299,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   v.note = buf;
   if (alternatives)
     v.note += "; " + std::to_string(alternatives) +
-              " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)";
+              (pcf_range ? " within the range of PCF taps that may flip (float lookup arithmetic)"
+                         : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
-              (alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
-                                 : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
+              (pcf_range ? " outside the range of PCF taps that may flip (not a value a tie can give)"
+               : alternatives_only ? " not among the reference's raster alternatives (not a value a tie can give)"
+                                   : " outside the reference's 3x3 range plus the bound (not a value a tie can give)");
   v.extra = {{"edge_pixels", edge_pixels},
              {"edge_fraction", fe},
              {"interior_fraction", fi},
@@ -402,7 +410,6 @@ bool face_neighbour_in(const Volume& v, const std::vector<uint8_t>& set, size_t 
 }
 
 constexpr double kTieFraction = 0.01;  // ties beyond 1% of occupied voxels are not ties
-constexpr double kShadingTieFraction = 0.005;  // shadow-test ties beyond 0.5% of voxels are not ties
 
 StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
   const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
@@ -534,6 +541,12 @@ StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const Compare
   return v;
 }
 
+std::string percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g%%", 100.0 * fraction);
+  return buf;
+}
+
 StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const CompareOptions& opt, Taint& taint) {
   const Volume& ref = rs.volumes.at(st::kVoxelRadiance);
   const Volume& test = ts.volumes.at(st::kVoxelRadiance);
@@ -627,7 +640,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   // one side only, moving that fragment by 1/taps of its light. They are rare and sit on shadow
   // edges; up to kShadingTieFraction of the voxels they warn, beyond that they fail.
   const bool shading_ties_tolerated =
-      double(shading_ties) <= kShadingTieFraction * double(std::max<size_t>(v.checked, 1));
+      double(shading_ties) <= opt.shading_tie_fraction * double(std::max<size_t>(v.checked, 1));
   if (shading_ties_tolerated) v.allowed += shading_ties;
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(ch, 1)))));
   const bool too_many = double(count_ties) > 2.0 * kTieFraction * double(std::max<size_t>(v.checked, 1));
@@ -644,8 +657,11 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   if (exact) v.note += "; " + std::to_string(exact_differ) + " of " + std::to_string(exact_checked) + " exact voxels differ";
   v.extra["shading_ties"] = shading_ties;
   if (shading_ties)
-    v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound (shadow-test ties" +
-              (shading_ties_tolerated ? ", tolerated up to 0.5%)" : ": more than 0.5%, not ties)");
+    v.note += "; " + std::to_string(shading_ties) + " beyond the shading bound" +
+              (opt.shading_tie_fraction <= 0.0
+                   ? std::string(" on the test's own shadow maps (no share: not ties)")
+                   : " (shadow-test ties" + std::string(shading_ties_tolerated ? ", tolerated up to " : ": more than ") +
+                         percent(opt.shading_tie_fraction) + (shading_ties_tolerated ? ")" : ", not ties)"));
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_volume_mask(opt, v, mask);

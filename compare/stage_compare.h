@@ -27,6 +27,10 @@ struct CompareOptions {
   // image.final's display bound grows by one step of its bit depth (docs/compare.md, "Display
   // transform").
   bool direct_decoded_from_display = false;
+  // voxel.radiance: voxels beyond bound + shading slack (shadow-test ties the slack does not
+  // see) tolerated up to this fraction of the checked voxels (warn); 0: none (docs/compare.md,
+  // "Voxel radiance on the test's own shadow maps", says why 0.5 % stays).
+  double shading_tie_fraction = 0.005;
 };
 
 Report compare_stage_sets(const StageSet& reference, const StageSet& test, const CompareOptions& opt = {});

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "stages/gbuffer_ties.h"
+#include "stages/stage_registry.h"
 
 namespace vct::cmp {
 
@@ -16,8 +17,11 @@ int channel_named(const Image& im, const std::string& name) {
 TieRangeChannels tie_range_channels(const std::string& stage, const Image& range, int channels) {
   const std::string prefix = "gbuffer.";
   TieRangeChannels out;
-  if (stage.compare(0, prefix.size(), prefix) != 0) return out;
-  const std::string group = stage.substr(prefix.size());
+  // G-buffer stages by their attachment's name (stages/gbuffer_ties.h), the shading stages judged
+  // on the test's own inputs by their stage name (stages/direct_ties.h).
+  const bool gbuffer = stage.compare(0, prefix.size(), prefix) == 0;
+  if (!gbuffer && stage != stage_names::kImageDirect && stage != stage_names::kImageEmission) return out;
+  const std::string group = gbuffer ? stage.substr(prefix.size()) : stage;
   for (int c = 0; c < channels; ++c) {
     const int lo = channel_named(range, tie_range_channel_name(group, c, false));
     const int hi = channel_named(range, tie_range_channel_name(group, c, true));

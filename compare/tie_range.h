@@ -13,8 +13,9 @@
 namespace vct::cmp {
 
 /// Channels of `range` holding `stage`'s lower and upper ends, channel by channel (lo[c], hi[c]
-/// for c < channels); empty when `stage` is not a G-buffer stage the range covers or the image
-/// lacks one of them.
+/// for c < channels); empty when `stage` is not a G-buffer stage the range covers (nor
+/// image.direct / image.emission, whose ranges the reference computes on the test's own inputs,
+/// stages/direct_ties.h) or the image lacks one of them.
 struct TieRangeChannels {
   std::vector<int> lo, hi;
   bool empty() const { return lo.empty(); }

@@ -196,6 +196,10 @@ for name in sorted(os.listdir(os.path.join(res, "sets"))):
         # it only through exact voxels that carry light; on scenes without them the first stage
         # that can is the mip step judged on the test's own level 0 (docs/compare.md "Mip rounding").
         same = same or (fault == "half_truncate" and first == "mip.iso.1")
+        # fresnel_exponent_4 lives in the shared Fresnel both the direct pass and the composite
+        # use: where direct light's highlights are faint next to its 2^-6 bound (material_room at
+        # 64^2: 0 pixels beyond), the composite's Fresnel-weighted terms show it first.
+        same = same or (fault == "fresnel_exponent_4" and first in ("image.diffuse_term", "image.specular_term"))
         ok, expect = v["overall"] == "fail" and same, blamed
     bad += 0 if ok else 1
     f = runner["facts"]

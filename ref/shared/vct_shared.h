@@ -62,7 +62,11 @@ VCT_FN float schlick_ggx_g1(float n_dot_x, float roughness) {
 // so specular_factor = 0 gives F = 0 exactly (a pure Lambertian surface).
 VCT_FN vec3 fresnel_schlick(vec3 f0, float f90, float cos_theta) {
   float m = clamp(1.0f - cos_theta, 0.0f, 1.0f);
+#if defined(VCT_GLSL) && defined(VCT_FAULT_FRESNEL_EXPONENT_4)
+  float m5 = m * m * m * m;  // the GL fault switch (gl/gl_faults.h): exponent 4, issue 13 case 2
+#else
   float m5 = m * m * m * m * m;
+#endif
   return f0 + (vec3(f90) - f0) * m5;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "shared/vct_shared.h"
 #include "stages/march_schedule.h"
@@ -48,9 +49,57 @@ MarchParams MarchParams::shadow_from_settings(const VctSettings& s, int grid) {
   return p;
 }
 
+float march_end_margin(float t, double drift, int tan_steps) {
+  constexpr double kU = 1.0 / 16777216.0;
+  return tan_steps == 0 ? 0.0f : float(double(t) * (drift + double(tan_steps + 2) * kU));
+}
+
+double march_end_step_drift(float aperture, float t, float step) {
+  constexpr double kU = 1.0 / 16777216.0, kTrig = 1.0 / 2048.0;
+  const double h = 0.5 * double(aperture), sh = std::sin(h), ch = std::cos(h);
+  if (sh <= 0.0 || ch <= 0.0) return 1.0;
+  const double eps = kTrig * (1.0 / sh + 1.0 / ch) + kTrig * h / (sh * ch) + 3.0 * kU;
+  return eps * double(step) / double(t + step);
+}
+
 namespace {
 bool inside_unit_cube(const vec3& p) {
   return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= 1.0f && p.y <= 1.0f && p.z <= 1.0f;
+}
+
+// The march-end variants (MarchParams::march_end): whether a sample at `pos` is where a correct
+// GL, whose position may lie `margin` further or nearer along `dir`, may already have left the
+// volume through a face the cone leaves by (-1: stop here), and the in-volume point a GL whose
+// sample fell just inside samples (+1: `pos` clamped to the cube, when it lies within the margin
+// outside those faces only). Faces behind the cone are the plain march's: a cone starting on a
+// wall of the volume is not cut short.
+// Along one axis: the distance's margin, plus two roundings of origin + dir * t where the
+// distances differ at all (a margin of 0: both sides' positions are the same floats).
+float position_margin(float pos, float dir, float margin) {
+  return margin > 0.0f ? std::abs(dir) * margin + 2.0f * std::numeric_limits<float>::epsilon() * std::abs(pos) : 0.0f;
+}
+
+bool near_exit_face(const vec3& pos, const vec3& dir, float margin) {
+  for (int i = 0; i < 3; ++i) {
+    const float m = position_margin(pos[i], dir[i], margin);
+    if ((dir[i] > 0.0f && 1.0f - pos[i] <= m) || (dir[i] < 0.0f && pos[i] <= m)) return true;
+  }
+  return false;
+}
+
+bool just_past_exit_face(const vec3& pos, const vec3& dir, float margin, vec3& clamped) {
+  clamped = pos;
+  for (int i = 0; i < 3; ++i) {
+    const float m = position_margin(pos[i], dir[i], margin);
+    if (pos[i] > 1.0f) {
+      if (!(dir[i] > 0.0f && pos[i] - 1.0f <= m)) return false;
+      clamped[i] = 1.0f;
+    } else if (pos[i] < 0.0f) {
+      if (!(dir[i] < 0.0f && -pos[i] <= m)) return false;
+      clamped[i] = 0.0f;
+    }
+  }
+  return true;
 }
 
 // The march itself, for either sampler (voxel_sampler.h or the frame's MipSampler, which agree
@@ -65,9 +114,15 @@ vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sampl
   vec3 color(0.0f);
   float alpha = 0.0f;
   float t = params.start_offset;
-  for (size_t k = 0; alpha < 1.0f && t < params.max_distance; ++k) {
-    const vec3 pos = cone.origin + cone.direction * t;
-    if (!inside_unit_cube(pos)) break;
+  double drift = 0.0;  // the march-end variants' relative drift of a correct GL's t (march_end_step_drift)
+  int tan_steps = 0;
+  for (size_t k = 0; alpha < 1.0f; ++k) {
+    const float margin = params.march_end ? march_end_margin(t, drift, tan_steps) : 0.0f;
+    if (!(t < params.max_distance + float(params.march_end) * margin)) break;
+    vec3 pos = cone.origin + cone.direction * t;
+    if (params.march_end < 0 && margin > 0.0f && near_exit_face(pos, cone.direction, margin)) break;
+    if (!inside_unit_cube(pos) && !(params.march_end > 0 && just_past_exit_face(pos, cone.direction, margin, pos)))
+      break;
     const MarchStep g = k < scheduled ? (*schedule)[k] : march_step(t, tan_half, voxel, params);
     const float diameter = g.diameter, lod = g.lod, step = g.step;
     vec4 s = sample(pos, lod, cone.direction);
@@ -77,6 +132,10 @@ vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sampl
     color += transmit * vec3(s);
     alpha += transmit * s.a;
     if (record) record->push_back({pos, t, diameter, lod, s, vec4(color, alpha)});
+    if (params.march_end && diameter > voxel) {  // a step whose length came from tan(aperture / 2)
+      drift += march_end_step_drift(cone.aperture, t, step);
+      ++tan_steps;
+    }
     t += step;
   }
   return vec4(color, std::min(alpha, 1.0f));

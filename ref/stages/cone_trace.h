@@ -26,6 +26,11 @@ struct MarchParams {
   float quality = 0.5f;       // step = diameter * quality
   float min_lod = 0.0f;       // multibounce traces start at level >= 1
   bool step_correction = false;  // sh::step_corrected_sample with dt / dt0 = step / (2^lod / N)
+  // The march-end tie (docs/compare.md, "The march-end tie"): 0 the march itself; -1 the faces the
+  // cone leaves through and max_distance moved inward, +1 outward, by how far a correct GL's step
+  // positions may lie from ours (march_end_margin): the march a GL whose last in-volume sample
+  // fell just outside (-1) or just inside (+1, sampled at the face) gives.
+  int march_end = 0;
   static MarchParams from_settings(const VctSettings& s, int grid);
   /// The specular cone's: from_settings with the specular_offset_voxels and specular_quality an
   /// engine may give it (settings.h; the source design's: 4 voxels along n, t from 0, step 0.6).
@@ -51,6 +56,18 @@ struct ConeSample {
 /// every sample is appended to it.
 vec4 trace_cone(const VoxelMips& mips, const Cone& cone, const MarchParams& params,
                 std::vector<ConeSample>* record = nullptr);
+
+/// How far (texture units, along the axis) a correct GL's distance t may lie from ours after the
+/// march so far: `drift` = the relative error accumulated by the steps whose length came from
+/// tan(aperture / 2) (march_end_step_drift), plus one rounding of t per such step.
+float march_end_margin(float t, double drift, int tan_steps);
+
+/// The relative drift one step of length `step` (from t to t + step) adds where its length came
+/// from tan(aperture / 2): GLSL 4.50 section 4.7.1 leaves tan to sin / cos (absolute 2^-11 each
+/// on [-pi, pi]) and the specular aperture to atan (4096 ulp, tests/gl/shared_header_element_test.cpp),
+/// so GL's tan(h) is within eps = 2^-11 (1 / sin h + 1 / cos h) + 2^-11 h / (sin h cos h) + 3 u
+/// relative of ours, and t_{k+1} = t_k + step carries eps * step / t_{k+1} more.
+double march_end_step_drift(float aperture, float t, float step);
 
 class MipSampler;
 class MarchSchedule;

@@ -17,16 +17,27 @@ float visibility(const Scene& scene, const std::vector<ShadowMap>& maps, size_t 
 
 }  // namespace
 
+vec3 unshadowed_light(const Scene& scene, size_t i, const VctSettings& settings, const vec3& p, const vec3& n,
+                      const vec3& view_dir, const sh::SurfacePbr& pbr) {
+  const LightSample ls = sample_light(scene.lights[i], settings.light_model, p);
+  const vec3 l = ls.l, e = ls.irradiance;
+  const float n_dot_l = glm::dot(n, l);
+  if (n_dot_l <= 0.0f || e == vec3(0.0f)) return vec3(0.0f);
+  return sh::cook_torrance(pbr, n, view_dir, l) * e * n_dot_l;
+}
+
+sh::SurfacePbr surface_of(const SurfaceMaterial& m) {
+  return sh::surface_pbr(m.albedo, m.metallic, m.roughness, m.specular_factor, m.specular_color);
+}
+
 vec3 direct_radiance(const Scene& scene, const std::vector<ShadowMap>& maps, const VctSettings& settings, const vec3& p,
                      const vec3& n, const vec3& view_dir, const SurfaceMaterial& m) {
-  const sh::SurfacePbr pbr = sh::surface_pbr(m.albedo, m.metallic, m.roughness, m.specular_factor, m.specular_color);
+  const sh::SurfacePbr pbr = surface_of(m);
   vec3 sum(0.0f);
   for (size_t i = 0; i < scene.lights.size(); ++i) {
-    const LightSample ls = sample_light(scene.lights[i], settings.light_model, p);
-    const vec3 l = ls.l, e = ls.irradiance;
-    const float n_dot_l = glm::dot(n, l);
-    if (n_dot_l <= 0.0f || e == vec3(0.0f)) continue;
-    sum += sh::cook_torrance(pbr, n, view_dir, l) * e * n_dot_l * visibility(scene, maps, i, settings, p);
+    const vec3 c = unshadowed_light(scene, i, settings, p, n, view_dir, pbr);
+    // ((brdf * E) * n.l) * visibility, the product's order as before (and as direct.frag).
+    if (c != vec3(0.0f)) sum += c * visibility(scene, maps, i, settings, p);
   }
   return sum;
 }

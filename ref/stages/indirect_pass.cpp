@@ -6,13 +6,15 @@ namespace vct {
 
 vec3 view_vector(const Scene& scene, const vec3& p) { return scene.camera.to_eye(p); }
 
-IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s) {
+IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s,
+                              int march_end) {
   const int w = g.coverage.width, h = g.coverage.height;
   IndirectImages out;
   out.diffuse = Image(w, h, 3);
   out.specular = Image(w, h, 3);
   out.diffuse.channel_names = out.specular.channel_names = {"R", "G", "B"};
-  const ConeFrame cones(mips, scene.volume, s);  // once per frame: the per-pixel loop only traces
+  ConeFrame cones(mips, scene.volume, s);  // once per frame: the per-pixel loop only traces
+  cones.set_march_end(march_end);
   out.diffuse_cones.assign(size_t(cones.diffuse_count()), Image(w, h, 4));
   for (auto& img : out.diffuse_cones) img.channel_names = {"R", "G", "B", "A"};
   parallel_rows(h, [&](int y) {

@@ -19,8 +19,9 @@ struct IndirectImages {
 };
 
 /// Disabled cone sets (settings.diffuse_cones / specular_cones false) give zero images.
+/// `march_end`: MarchParams::march_end of every cone (the march-end tie's alternatives).
 IndirectImages trace_indirect(const Scene& scene, const GBuffer& gbuffer, const VoxelMips& mips,
-                              const VctSettings& s);
+                              const VctSettings& s, int march_end = 0);
 
 /// The view vector (unit, surface -> eye) of a world point.
 vec3 view_vector(const Scene& scene, const vec3& p);

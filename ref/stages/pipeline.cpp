@@ -64,12 +64,12 @@ void add_running_mean_interval(const Scene& scene, const Voxelization& vox, cons
 }
 }  // namespace
 
-void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r) {
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end) {
   FrameImages& im = r.images;
   if (s.soft_shadows)
     timed(r, "direct_soft_shadows", [&] { im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow); });
   timed(r, "indirect_cones", [&] {
-    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s);
+    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s, march_end);
     im.indirect_diffuse = std::move(ind.diffuse);
     im.indirect_specular = std::move(ind.specular);
     im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());

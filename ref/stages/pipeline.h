@@ -13,7 +13,8 @@ namespace vct {
 /// renderer's: compare/isolated_stages.h): soft-shadowed direct light when soft_shadows is on,
 /// the indirect cones, then the composite. r.images.direct (PCF) and r.images.particles are its
 /// inputs otherwise. Records "direct_soft_shadows", "indirect_cones", "composite" timings.
-void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r);
+/// `march_end`: the indirect cones' MarchParams::march_end (the march-end tie's alternatives).
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end = 0);
 
 /// Runs every stage of the CPU reference. Threads come from set_thread_count(); the result is
 /// byte-identical for any thread count.

@@ -44,15 +44,19 @@ StageVerdict verdict(const std::string& stage, Verdict v) {
 TEST(IsolatedStages, UpstreamTiesWarnButAWrongMarcherStillFails) {
   Report e2e;
   e2e.stages = {verdict("voxel.occupancy", Verdict::Warn), verdict("image.indirect_diffuse", Verdict::Fail),
-                verdict("image.indirect_specular", Verdict::Fail), verdict("image.direct", Verdict::Fail)};
+                verdict("image.indirect_specular", Verdict::Fail), verdict("gbuffer.albedo", Verdict::Fail),
+                verdict("image.direct", Verdict::Fail)};
   Report iso;
   iso.stages = {verdict("image.indirect_diffuse", Verdict::Pass), verdict("image.indirect_specular", Verdict::Fail),
-                verdict("image.direct", Verdict::Pass)};
+                verdict("gbuffer.albedo", Verdict::Pass), verdict("image.direct", Verdict::Pass)};
   apply_isolated_verdicts(e2e, iso, false);
   EXPECT_EQ(e2e.stages[1].verdict, Verdict::Warn);  // ties upstream, marcher right
   EXPECT_EQ(e2e.stages[1].extra["end_to_end"]["verdict"], "fail");
   EXPECT_EQ(e2e.stages[2].verdict, Verdict::Fail);  // marcher wrong on its own inputs
-  EXPECT_EQ(e2e.stages[3].verdict, Verdict::Fail);  // not cone-traced: untouched
+  EXPECT_EQ(e2e.stages[3].verdict, Verdict::Fail);  // not judged on the test's inputs: untouched
+  // Direct light is re-shaded on the test's G-buffer and shadow maps (docs/compare.md, "Shading
+  // stages on the test's own inputs"): right there, so the end-to-end failure came from upstream.
+  EXPECT_EQ(e2e.stages[4].verdict, Verdict::Warn);
   EXPECT_EQ(e2e.first_failing(), "image.indirect_specular");
 }
 
@@ -69,13 +73,14 @@ TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce
   s.vct.bounces = 3;
   const FrameResult ref = render_ref_frame(scene, s);
   ASSERT_EQ(ref.bounce_input.nx, 16);
-  const std::optional<VoxelGrid> again = reference_voxels_on_test_bounce_input(scene, ref, s.vct);
+  const std::optional<VoxelGrid> again = reference_voxels_on_test_inputs(scene, ref, s.vct);
   ASSERT_TRUE(again.has_value());
   EXPECT_EQ(again->radiance.data, ref.voxels.radiance.data);
-  // One frame: nothing to judge on.
+  // One frame and no shadow maps of its own: nothing to judge on.
   FrameResult one = ref;
   one.bounce_input = Volume();
-  EXPECT_FALSE(reference_voxels_on_test_bounce_input(scene, one, s.vct).has_value());
+  one.shadow_maps.clear();
+  EXPECT_FALSE(reference_voxels_on_test_inputs(scene, one, s.vct).has_value());
 
   // The faulty test: its last frame's bounce light x 1.5, everything else the reference's.
   VctSettings strong = s.vct;
@@ -92,7 +97,7 @@ TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce
                                      [](const StageVerdict& v) { return v.stage == "voxel.radiance"; });
   ASSERT_NE(radiance, rep.stages.end());
   EXPECT_EQ(radiance->verdict, Verdict::Fail) << radiance->note;
-  EXPECT_NE(radiance->note.find("the test's own bounce input"), std::string::npos) << radiance->note;
+  EXPECT_NE(radiance->note.find("the test's own shadow maps and bounce input"), std::string::npos) << radiance->note;
   // The right frame judged the same way passes.
   const StageSet ref_set = stage_set_from_frame(ref, s.vct);
   Report same = compare_stage_sets(ref_set, ref_set);

@@ -119,6 +119,24 @@ TEST(GlFaults, HalfTruncateFailsTheExactVoxels) {
     }
 }
 
+// Issue 13 case 2: Schlick's Fresnel with exponent 4 brightens the specular highlights. Judged on
+// the GL frame's own G-buffer and shadow maps (docs/compare.md, "Shading stages on the test's own
+// inputs"), image.direct is left only the shading arithmetic and PCF taps the lookup may flip,
+// so it fails there, before any voxel stage.
+TEST(GlFaults, FresnelExponentFourFailsDirectLight) {
+  VCT_REQUIRE_GL();
+  const cmp::Report rep = judge(*ctx, fault_settings("fresnel_exponent_4", Reduction::FixedPoint, false));
+  EXPECT_FIRST_FAILING(rep, "image.direct");
+  for (const cmp::StageVerdict& v : rep.stages)
+    if (v.stage == "image.direct") {
+      EXPECT_GT(v.extra.value("inadmissible", 0), 0) << v.note;
+      // End to end the one brighter highlight pixel is an edge tie within the counted share
+      // (measured: 1 of 4096 pixels, 1 of 1816 edge pixels): what let it through before.
+      EXPECT_EQ(v.extra["end_to_end"]["verdict"], "warn") << v.note;
+      std::printf("  image.direct: %s\n", v.note.c_str());
+    }
+}
+
 // Without the barrier between the voxelization draw and the resolve dispatch (GL 4.5 §7.12.2) a
 // GPU may resolve before the atomics land. llvmpipe finishes each pass before the next, so there
 // the frame is the correct one (the test says so and skips); on a GPU it asserts the stage.

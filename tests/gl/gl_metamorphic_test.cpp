@@ -78,6 +78,8 @@ const std::map<std::string, std::set<std::string>>& expected_catches() {
       // The march starting one step late is invariant under every transform, linear, and keeps
       // the furnace's bounds: not visible without a reference.
       {"cone_step", {}},
+      // A brighter Fresnel is invariant under every transform and linear in the lights.
+      {"fresnel_exponent_4", {}},
       // Faults in code the box never runs (it has no textures and no alpha masks): invisible
       // here by construction; validate catches them on tiled_floor and foliage (docs/compare.md).
       {"texture_level_zero", {}},

@@ -40,7 +40,7 @@ TEST(GlMultibounce, VoxelsAreJudgedOnTheTestsOwnBounceInput) {
     if (v.stage == "voxel.radiance") {
       std::printf("  %s: %s\n", to_string(v.verdict).c_str(), v.note.c_str());
       EXPECT_NE(v.verdict, cmp::Verdict::Fail);
-      EXPECT_NE(v.note.find("the test's own bounce input"), std::string::npos);
+      EXPECT_NE(v.note.find("the test's own shadow maps and bounce input"), std::string::npos);
     }
 }
 

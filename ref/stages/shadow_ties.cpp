@@ -1,0 +1,188 @@
+#include "stages/shadow_ties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/pcf_taps.h"
+#include "stages/cube_map.h"
+#include "stages/direct_slack.h"
+
+namespace vct {
+
+namespace {
+
+constexpr double kU = 1.0 / 16777216.0;  // 2^-24, one float rounding
+constexpr double kG4 = 4.0 * kU / (1.0 - 4.0 * kU);
+
+// A texel's compare for a point whose window depth is z +- ez: 2 lit for every admissible z,
+// 0 shadowed for every one, 1 either (stored + bias rounds the same way on both sides).
+int compare_state(float z, double ez, float stored, float bias) {
+  const double sb = double(stored + bias);
+  if (double(z) + ez <= sb) return 2;
+  if (double(z) - ez > sb) return 0;
+  return 1;
+}
+
+// The admissible lit fraction [lo, hi] of one tap at texel position t (y up) whose coordinate may
+// be off by e texels: nearest reads the texel t floors to (either neighbour within e of an edge),
+// linear weights the four around t - 1/2 (GL 4.5 section 8.23.1) with either floor.
+template <typename State>
+VisibilityRange tap_range(const vec2& t, double e, ShadowCompare compare, const State& state) {
+  VisibilityRange r{1.0f, 0.0f};
+  if (compare == ShadowCompare::Nearest) {
+    bool all_lit = true, any_lit = false;
+    for (int x = int(std::floor(t.x - e)); x <= int(std::floor(t.x + e)); ++x)
+      for (int y = int(std::floor(t.y - e)); y <= int(std::floor(t.y + e)); ++y) {
+        const int s = state(x, y);
+        all_lit = all_lit && s == 2;
+        any_lit = any_lit || s >= 1;
+      }
+    return {all_lit ? 1.0f : 0.0f, any_lit ? 1.0f : 0.0f};
+  }
+  const vec2 s = t - 0.5f;
+  for (int x0 = int(std::floor(s.x - e)); x0 <= int(std::floor(s.x + e)); ++x0)
+    for (int y0 = int(std::floor(s.y - e)); y0 <= int(std::floor(s.y + e)); ++y0) {
+      const float ax = std::clamp(s.x - float(x0), 0.0f, 1.0f), ay = std::clamp(s.y - float(y0), 0.0f, 1.0f);
+      const float w[4] = {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay};
+      const int st[4] = {state(x0, y0), state(x0 + 1, y0), state(x0, y0 + 1), state(x0 + 1, y0 + 1)};
+      float lo = 0.0f, hi = 0.0f;
+      for (int i = 0; i < 4; ++i) {
+        lo += st[i] == 2 ? w[i] : 0.0f;
+        hi += st[i] >= 1 ? w[i] : 0.0f;
+      }
+      r.lo = std::min(r.lo, lo);
+      r.hi = std::max(r.hi, hi);
+    }
+  return r;
+}
+
+// The taps around texel position (u, v), as stages/shadow_map.cpp places them (the kernel square
+// with the same float arithmetic, or the engine's offsets).
+std::vector<vec2> taps_at(float u, float v, const VctSettings& s) {
+  std::vector<vec2> out;
+  if (s.pcf_taps.empty()) {
+    const int k = std::max(1, s.pcf_kernel);
+    const float half = 0.5f * float(k - 1);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
+    return out;
+  }
+  for (const vec2& o : pcf_tap_offsets(s)) out.emplace_back(u + o.x, v + o.y);
+  return out;
+}
+
+// The mean of the taps' ranges, widened by the linear filter weights' 8-bit freedom.
+template <typename State>
+VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, const State& state) {
+  const std::vector<vec2> taps = taps_at(u, v, s);
+  // The tap offsets add to the coordinate on each side: two more roundings of magnitude <= |u| + 16.
+  const double e_tap = e + 4.0 * kU * (double(std::max(std::abs(u), std::abs(v))) + 16.0);
+  double lo = 0.0, hi = 0.0;
+  for (const vec2& t : taps) {
+    const VisibilityRange r = tap_range(t, e_tap, s.shadow_compare, state);
+    lo += r.lo;
+    hi += r.hi;
+  }
+  const double n = double(std::max<size_t>(taps.size(), 1));
+  const double w = s.shadow_compare == ShadowCompare::Linear ? double(kLinearCompareWeightStep) : 0.0;
+  return {float(std::max(0.0, lo / n - w)), float(std::min(1.0, hi / n + w))};
+}
+
+// Texel-unit margin of a coordinate (ndc * 0.5 + 0.5) * size whose NDC may be off by e_ndc: the
+// add and the multiply round once each on each side (<= u and u * size).
+double texel_margin(double e_ndc, int size) { return 0.5 * double(size) * e_ndc + 4.0 * kU * double(size); }
+
+// Window depth ndc * 0.5 + 0.5: the add rounds once on each side (<= u, the depth is <= 1).
+double depth_margin(double e_ndc) { return 0.5 * e_ndc + 2.0 * kU; }
+
+VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings& s) {
+  const vec4 c = map.view_proj * vec4(p, 1.0f);
+  if (c.w <= 0.0f) return {};
+  const vec3 ndc = vec3(c) / c.w;
+  double e[3];
+  bool near_border = false;
+  for (int i = 0; i < 3; ++i) {
+    e[i] = ndc_error(map.view_proj, p, i);
+    near_border = near_border || std::abs(std::abs(double(ndc[i])) - 1.0) <= e[i];
+  }
+  const bool inside = std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && std::abs(ndc.z) <= 1.0f;
+  if (!inside && !near_border) return {};
+  const Image& depth = map.depth;
+  const int w = depth.width, h = depth.height;
+  const float z = ndc.z * 0.5f + 0.5f;
+  const double ez = depth_margin(e[2]);
+  const auto state = [&](int tx, int ty) {
+    return compare_state(z, ez, depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0), s.shadow_bias);
+  };
+  const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
+  VisibilityRange r = pcf_range(u, v, std::max(texel_margin(e[0], w), texel_margin(e[1], h)), s, state);
+  if (near_border) r.hi = 1.0f;  // either side of the frustum's border: outside is lit
+  return r;
+}
+
+// A point light's cube: every face its direction may select (a near tie of the largest
+// coordinates), each with the taps and the past-the-edge reprojection of cube_shadow_visibility.
+VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, const vec3& p, const VctSettings& s) {
+  const vec3 r = p - light_position;
+  if (r == vec3(0.0f)) return {};
+  const int size = map.cube[0].width;
+  // The subtraction rounds once on each side.
+  const double er = 2.0 * kU * double(std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)}));
+  const double largest = std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)});
+  VisibilityRange out{1.0f, 0.0f};
+  for (int home = 0; home < 6; ++home) {
+    const vec3& axis = cube_face_axes(home).major_axis;
+    const double ma = double(glm::dot(r, axis));
+    if (home != cube_face(r) && !(ma > 0.0 && ma >= largest - 2.0 * er)) continue;
+    // s = (sc / |ma| + 1) / 2: sc and ma each off by er, the division 3 u relative.
+    const double e_q = 2.0 * er / std::max(std::abs(ma), 1e-30) + 3.0 * kU;
+    const vec2 st = cube_face_st(home, r);
+    const auto state = [&](int tx, int ty) {
+      int face = home;
+      if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
+        const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
+        face = cube_face(d);
+        const vec2 nst = cube_face_st(face, d);
+        tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
+        ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
+      }
+      const mat4& m = map.cube_view_proj[size_t(face)];
+      const vec4 c = m * vec4(p, 1.0f);
+      const float z = c.z / c.w * 0.5f + 0.5f;
+      const double ez = c.w > 0.0f ? depth_margin(ndc_error(m, p, 2)) : 0.0;
+      if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return z + ez < 0.0 || z - ez > 1.0 || !(c.w > 0.0f) ? 2 : 1;
+      const int st_ = compare_state(z, ez, map.cube[size_t(face)].at(tx, size - 1 - ty, 0), s.shadow_bias);
+      // Within the depth margin of the range's ends the point may count as outside (lit).
+      return (z - ez < 0.0 || z + ez > 1.0) ? std::max(st_, 1) : st_;
+    };
+    const VisibilityRange one = pcf_range(st.x * float(size), st.y * float(size), texel_margin(e_q, size), s, state);
+    out.lo = std::min(out.lo, one.lo);
+    out.hi = std::max(out.hi, one.hi);
+  }
+  return out;
+}
+
+}  // namespace
+
+double ndc_error(const mat4& m, const vec3& p, int row) {
+  const vec4 q(p, 1.0f);
+  double s_row = 0.0, s_w = 0.0, c_row = 0.0, c_w = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    s_row += std::abs(double(m[j][row]) * double(q[j]));
+    s_w += std::abs(double(m[j][3]) * double(q[j]));
+    c_row += double(m[j][row]) * double(q[j]);
+    c_w += double(m[j][3]) * double(q[j]);
+  }
+  if (c_w == 0.0) return 1e30;
+  const double ndc = std::abs(c_row / c_w);
+  return 2.0 * kG4 * (s_row + ndc * s_w) / std::abs(c_w) + 3.0 * kU * ndc;
+}
+
+VisibilityRange light_visibility_range(const ShadowMap& map, const Light& light, const vec3& p,
+                                       const VctSettings& settings) {
+  if (light.is_point()) return map.is_cube() ? range_cube(map, light.position, p, settings) : VisibilityRange{};
+  return map.depth.empty() ? VisibilityRange{} : range_2d(map, p, settings);
+}
+
+}  // namespace vct
