@@ -81,7 +81,7 @@ class ConeFrame {
   int diffuse_count() const { return count_; }
   /// Every diffuse and specular cone marched with MarchParams::march_end = `variant` (the
   /// march-end tie's alternatives; 0 = the march itself).
-  void set_march_end(int variant) { params_.march_end = base_params_.march_end = variant; }
+  void set_march_end(int variant) { params_.march_end = specular_params_.march_end = variant; }
 
  private:
   vec4 trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const;

@@ -21,7 +21,10 @@ constexpr float kBounceMinLod = 1.0f;
 
 /// The light a fragment gets from the previous frame's mips: restitution x albedo x (diffuse cone
 /// set at the fragment, normal = the material's shading normal, no rotation, lod >= 1).
+/// The light reads `previous` when called: it must outlive the BounceLight (a temporary may not
+/// bind, hence the deleted overload; ASan found a test that passed build_mips(...) directly).
 BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s);
+BounceLight make_bounce_light(const Scene& scene, VoxelMips&& previous, const VctSettings& s) = delete;
 
 /// Total RGB radiance summed over the base level (the energy recorded per frame), in a fixed
 /// order (double accumulation, voxel order).

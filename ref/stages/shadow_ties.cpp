@@ -32,8 +32,8 @@ VisibilityRange tap_range(const vec2& t, double e, ShadowCompare compare, const 
   VisibilityRange r{1.0f, 0.0f};
   if (compare == ShadowCompare::Nearest) {
     bool all_lit = true, any_lit = false;
-    for (int x = int(std::floor(t.x - e)); x <= int(std::floor(t.x + e)); ++x)
-      for (int y = int(std::floor(t.y - e)); y <= int(std::floor(t.y + e)); ++y) {
+    for (int x = int(std::floor(double(t.x) - e)); x <= int(std::floor(double(t.x) + e)); ++x)
+      for (int y = int(std::floor(double(t.y) - e)); y <= int(std::floor(double(t.y) + e)); ++y) {
         const int s = state(x, y);
         all_lit = all_lit && s == 2;
         any_lit = any_lit || s >= 1;
@@ -41,8 +41,8 @@ VisibilityRange tap_range(const vec2& t, double e, ShadowCompare compare, const 
     return {all_lit ? 1.0f : 0.0f, any_lit ? 1.0f : 0.0f};
   }
   const vec2 s = t - 0.5f;
-  for (int x0 = int(std::floor(s.x - e)); x0 <= int(std::floor(s.x + e)); ++x0)
-    for (int y0 = int(std::floor(s.y - e)); y0 <= int(std::floor(s.y + e)); ++y0) {
+  for (int x0 = int(std::floor(double(s.x) - e)); x0 <= int(std::floor(double(s.x) + e)); ++x0)
+    for (int y0 = int(std::floor(double(s.y) - e)); y0 <= int(std::floor(double(s.y) + e)); ++y0) {
       const float ax = std::clamp(s.x - float(x0), 0.0f, 1.0f), ay = std::clamp(s.y - float(y0), 0.0f, 1.0f);
       const float w[4] = {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay};
       const int st[4] = {state(x0, y0), state(x0 + 1, y0), state(x0, y0 + 1), state(x0 + 1, y0 + 1)};
@@ -81,8 +81,8 @@ VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, cons
   double lo = 0.0, hi = 0.0;
   for (const vec2& t : taps) {
     const VisibilityRange r = tap_range(t, e_tap, s.shadow_compare, state);
-    lo += r.lo;
-    hi += r.hi;
+    lo += double(r.lo);
+    hi += double(r.hi);
   }
   const double n = double(std::max<size_t>(taps.size(), 1));
   const double w = s.shadow_compare == ShadowCompare::Linear ? double(kLinearCompareWeightStep) : 0.0;

@@ -86,7 +86,8 @@ TEST(IsolatedStages, BounceVoxelsOnTheTestsOwnInputReproduceAndCatchAWrongBounce
   VctSettings strong = s.vct;
   strong.restitution *= 1.5f;
   const Voxelization vox = voxelize_gpu_rule(scene, 16, ref.facts.sample_positions);
-  const BounceLight bounce = make_bounce_light(scene, build_mips(ref.bounce_input, false), strong);
+  const VoxelMips bounce_mips = build_mips(ref.bounce_input, false);  // read by the bounce light
+  const BounceLight bounce = make_bounce_light(scene, bounce_mips, strong);
   FrameResult faulty = ref;
   faulty.voxels = inject_and_reduce(scene, vox, render_shadow_maps(scene, s.vct), s.vct, &bounce);
   add_particles_to_voxels(scene, s.vct, faulty.voxels.radiance);

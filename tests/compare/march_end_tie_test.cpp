@@ -73,7 +73,7 @@ TEST(MarchEndTie, ConesEndingEarlyAtTheFacesPassAndAWrongMarcherFails) {
   const Scene scene = load_scene(VCT_SOURCE_DIR "/scenes/material_room.gltf");
   Settings s = small();
   const FrameResult input = with_bright_faces(render_ref_frame(scene, s), s.vct);
-  FrameResult gl = reference_on_test_inputs(scene, input, s.vct, -1);
+  FrameResult gl = reference_on_test_inputs(scene, input, s.vct, nullptr, -1);
   gl.backend = "gl-sim";
   const StageSet gl_set = stage_set_from_frame(gl, s.vct);
   const StageSet ref_set = stage_set_from_frame(input, s.vct);
@@ -89,8 +89,8 @@ TEST(MarchEndTie, ConesEndingEarlyAtTheFacesPassAndAWrongMarcherFails) {
   // judge_cones_on_test_inputs takes the alternatives only where a cone stage fails; here the
   // closest frame is judged directly.
   const FrameResult closest = closest_march_end(reference_on_test_inputs(scene, gl, s.vct),
-                                                reference_on_test_inputs(scene, gl, s.vct, -1),
-                                                reference_on_test_inputs(scene, gl, s.vct, +1), gl);
+                                                reference_on_test_inputs(scene, gl, s.vct, nullptr, -1),
+                                                reference_on_test_inputs(scene, gl, s.vct, nullptr, +1), gl);
   const Report iso = compare_stage_sets(stage_set_from_frame(closest, s.vct), gl_set);
   for (const char* stage : {"image.indirect_diffuse", "image.indirect_specular", "image.diffuse_term",
                             "image.specular_term", "image.final"})
