@@ -149,13 +149,28 @@ void apply_isolated_verdicts(Report& end_to_end, const Report& isolated, bool so
 
 namespace {
 // The cone images a march-end variant changes (the indirect cones and what the composite makes of them).
-constexpr Image FrameImages::*kMarchEndImages[] = {&FrameImages::indirect_diffuse, &FrameImages::indirect_specular,
-                                                   &FrameImages::diffuse_term, &FrameImages::specular_term,
-                                                   &FrameImages::final_image};
+// The cone images the march-end tie replaces, with the stage each is judged as.
+struct MarchEndImage {
+  Image FrameImages::*slot;
+  const char* stage;
+};
+constexpr MarchEndImage kMarchEndImages[] = {
+    {&FrameImages::indirect_diffuse, stage_names::kImageIndirectDiffuse},
+    {&FrameImages::indirect_specular, stage_names::kImageIndirectSpecular},
+    {&FrameImages::diffuse_term, stage_names::kImageDiffuseTerm},
+    {&FrameImages::specular_term, stage_names::kImageSpecularTerm},
+    {&FrameImages::final_image, stage_names::kImageFinal}};
 
-float largest_difference(const Image& a, const Image& b, int x, int y) {
+// The largest channel difference between reference value `r` and the test's stored `t`, in the
+// space the stage is judged in: a stage the engine wrote display-encoded is compared after the
+// reference's colour goes through the same transform (compare/display_transform.h), as its
+// verdict is; "closest" in linear units against a display-encoded value would pick at random.
+float largest_difference(const Image& r, const Image& t, int x, int y, const DisplayTransform* display) {
   float d = 0.0f;
-  for (int c = 0; c < std::min(a.channels, b.channels); ++c) d = std::max(d, std::abs(a.at(x, y, c) - b.at(x, y, c)));
+  for (int c = 0; c < std::min(r.channels, t.channels); ++c) {
+    const float ref = display && c < 3 ? float(display->apply(double(r.at(x, y, c)))) : r.at(x, y, c);
+    d = std::max(d, std::abs(ref - t.at(x, y, c)));
+  }
   return d;
 }
 
@@ -167,21 +182,22 @@ bool any_cone_stage_fails(const Report& r, bool soft_shadows) {
 }  // namespace
 
 FrameResult closest_march_end(const FrameResult& plain, const FrameResult& shorter, const FrameResult& longer,
-                              const FrameResult& test, size_t* pixels_moved) {
+                              const FrameResult& test, size_t* pixels_moved, const DisplayTransform* display) {
   FrameResult out = plain;
   size_t moved = 0;
-  for (Image FrameImages::*slot : kMarchEndImages) {
-    Image& o = out.images.*slot;
-    const Image& t = test.images.*slot;
-    const Image* variants[2] = {&(shorter.images.*slot), &(longer.images.*slot)};
+  for (const MarchEndImage& image : kMarchEndImages) {
+    Image& o = out.images.*image.slot;
+    const Image& t = test.images.*image.slot;
+    const Image* variants[2] = {&(shorter.images.*image.slot), &(longer.images.*image.slot)};
+    const DisplayTransform* space = display && display->applies_to(image.stage) ? display : nullptr;
     if (o.empty() || t.width != o.width || t.height != o.height) continue;
     for (int y = 0; y < o.height; ++y)
       for (int x = 0; x < o.width; ++x) {
-        float best = largest_difference(o, t, x, y);
+        float best = largest_difference(o, t, x, y, space);
         const Image* chosen = nullptr;
         for (const Image* v : variants) {
           if (v->width != o.width || v->height != o.height) continue;
-          const float d = largest_difference(*v, t, x, y);
+          const float d = largest_difference(*v, t, x, y, space);
           if (d < best) best = d, chosen = v;
         }
         if (!chosen) continue;
@@ -206,7 +222,8 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
   if (any_cone_stage_fails(isolated, s.soft_shadows)) {
     size_t moved = 0;
     const FrameResult closest = closest_march_end(ref_on_test, reference_on_test_inputs(scene, test, s, display, -1),
-                                                  reference_on_test_inputs(scene, test, s, display, +1), test, &moved);
+                                                  reference_on_test_inputs(scene, test, s, display, +1), test, &moved,
+                                                  display);
     const Report plain = std::move(isolated);
     isolated = compare_stage_sets(stage_set_from_frame(closest, s), test_set, iso_opt);
     for (StageVerdict& v : isolated.stages)

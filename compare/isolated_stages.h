@@ -45,9 +45,11 @@ void decode_display_direct(const DisplayTransform& display, Image& direct);
 /// The march-end tie: `plain` with each pixel of its indirect cone images (and the terms and
 /// final image made of them) replaced by `shorter`'s or `longer`'s (the re-trace with march_end
 /// -1 / +1) where that is closer to `test` (largest channel difference), as dEQP accepts any
-/// admissible result. `pixels_moved`: how many pixel values were replaced.
+/// admissible result. `pixels_moved`: how many pixel values were replaced. `display`: the test's
+/// declared display transform; "closest" is measured in display space for the stages it names.
 FrameResult closest_march_end(const FrameResult& plain, const FrameResult& shorter, const FrameResult& longer,
-                              const FrameResult& test, size_t* pixels_moved = nullptr);
+                              const FrameResult& test, size_t* pixels_moved = nullptr,
+                              const DisplayTransform* display = nullptr);
 
 /// The voxels as the reference computes them from the test's own inputs: its own voxelization,
 /// injected through the test's shadow maps (with the matrices both backends use; the reference's

@@ -40,6 +40,20 @@ TEST(MarchEndTie, EachPixelTakesTheClosestMarchEnd) {
   EXPECT_EQ(moved, 0u);
 }
 
+// A stage the engine wrote display-encoded is matched in display space, as it is judged: the
+// engine stored gamma 2.2 of the shorter march's 0.16 (0.434); in linear units the longer march's
+// 0.36 would look closest (0.074 against 0.274), in display space the shorter one is exact.
+TEST(MarchEndTie, ADisplayEncodedStageIsMatchedInDisplaySpace) {
+  const FrameResult plain = one_pixel_frame(0.25f), shorter = one_pixel_frame(0.16f), longer = one_pixel_frame(0.36f);
+  DisplayTransform gamma;
+  gamma.gamma = 2.2;
+  gamma.stages = {"image.indirect_specular"};
+  const FrameResult test = one_pixel_frame(float(gamma.apply(0.16)));
+  EXPECT_EQ(closest_march_end(plain, shorter, longer, test).images.indirect_specular.at(1, 0, 0), 0.36f);
+  EXPECT_EQ(closest_march_end(plain, shorter, longer, test, nullptr, &gamma).images.indirect_specular.at(1, 0, 0),
+            0.16f);
+}
+
 Settings small() {
   Settings s;
   s.vct.width = s.vct.height = 32;
