@@ -36,28 +36,6 @@ Image depth_image(int size, std::vector<float> data, ShadowDepthFormat format) {
   return img;
 }
 
-// The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
-// u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
-// or the engine's offsets (core/pcf_taps.h).
-std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings) {
-  std::vector<vec2> out;
-  if (settings.pcf_taps.empty()) {
-    const int k = std::max(1, settings.pcf_kernel);
-    const float half = 0.5f * float(k - 1);
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
-    return out;
-  }
-  // Parsed once per thread and tap text: a lookup runs per fragment and per pixel.
-  thread_local std::string parsed_text;
-  thread_local std::vector<vec2> offsets;
-  if (parsed_text != settings.pcf_taps) {
-    offsets = parse_pcf_taps(settings.pcf_taps);
-    parsed_text = settings.pcf_taps;
-  }
-  for (const vec2& o : offsets) out.emplace_back(u + o.x, v + o.y);
-  return out;
-}
 
 // One tap at texel position `t` (continuous, y up): `lit(ix, iy)` of the texel it falls in
 // (nearest), or GL's LINEAR on a shadow sampler -- the four texels around t - 0.5 weighted
@@ -90,6 +68,29 @@ float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
 }
 
 }  // namespace
+
+// The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
+// u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
+// or the engine's offsets (core/pcf_taps.h).
+std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings) {
+  std::vector<vec2> out;
+  if (settings.pcf_taps.empty()) {
+    const int k = std::max(1, settings.pcf_kernel);
+    const float half = 0.5f * float(k - 1);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
+    return out;
+  }
+  // Parsed once per thread and tap text: a lookup runs per fragment and per pixel.
+  thread_local std::string parsed_text;
+  thread_local std::vector<vec2> offsets;
+  if (parsed_text != settings.pcf_taps) {
+    offsets = parse_pcf_taps(settings.pcf_taps);
+    parsed_text = settings.pcf_taps;
+  }
+  for (const vec2& o : offsets) out.emplace_back(u + o.x, v + o.y);
+  return out;
+}
 
 double depth_quantum(ShadowDepthFormat format) {
   switch (format) {

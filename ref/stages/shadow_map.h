@@ -59,6 +59,10 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
 /// per point light): what the memory estimate and the GL texture array count.
 int shadow_map_layers(const Scene& scene);
 
+/// The PCF tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
+/// u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats), or the engine's pcf_taps offsets.
+std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings);
+
 /// PCF visibility in [0,1] (1 = lit) of a world point for one light: the mean over the taps --
 /// settings.pcf_kernel^2 at texel offsets (i - (k-1)/2), or the engine's settings.pcf_taps
 /// (core/pcf_taps.h) -- of each tap's compare: its texel (shadow_compare nearest) or GL LINEAR's

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/pcf_taps.h"
+#include "stages/shadow_map.h"
 #include "stages/cube_map.h"
 #include "stages/direct_slack.h"
 
@@ -57,25 +57,10 @@ VisibilityRange tap_range(const vec2& t, double e, ShadowCompare compare, const 
   return r;
 }
 
-// The taps around texel position (u, v), as stages/shadow_map.cpp places them (the kernel square
-// with the same float arithmetic, or the engine's offsets).
-std::vector<vec2> taps_at(float u, float v, const VctSettings& s) {
-  std::vector<vec2> out;
-  if (s.pcf_taps.empty()) {
-    const int k = std::max(1, s.pcf_kernel);
-    const float half = 0.5f * float(k - 1);
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
-    return out;
-  }
-  for (const vec2& o : pcf_tap_offsets(s)) out.emplace_back(u + o.x, v + o.y);
-  return out;
-}
-
 // The mean of the taps' ranges, widened by the linear filter weights' 8-bit freedom.
 template <typename State>
 VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, const State& state) {
-  const std::vector<vec2> taps = taps_at(u, v, s);
+  const std::vector<vec2> taps = tap_positions(u, v, s);  // as the lookup places them
   // The tap offsets add to the coordinate on each side: two more roundings of magnitude <= |u| + 16.
   const double e_tap = e + 4.0 * kU * (double(std::max(std::abs(u), std::abs(v))) + 16.0);
   double lo = 0.0, hi = 0.0;
