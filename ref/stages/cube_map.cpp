@@ -1,5 +1,6 @@
 #include "stages/cube_map.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -43,6 +44,15 @@ vec2 cube_face_st(int face, const vec3& r) {
 vec3 cube_face_direction(int face, const vec2& st) {
   const CubeFaceAxes& f = kFaces[size_t(face)];
   return f.major_axis + (2.0f * st.x - 1.0f) * f.sc_axis + (2.0f * st.y - 1.0f) * f.tc_axis;
+}
+
+CubeTexel cube_texel(int home, int x, int y, int size) {
+  if (x >= 0 && y >= 0 && x < size && y < size) return {home, x, y};
+  const vec3 d = cube_face_direction(home, (vec2(float(x), float(y)) + 0.5f) / float(size));
+  const int face = cube_face(d);
+  const vec2 st = cube_face_st(face, d);
+  return {face, std::clamp(int(std::floor(st.x * float(size))), 0, size - 1),
+          std::clamp(int(std::floor(st.y * float(size))), 0, size - 1)};
 }
 
 mat4 cube_face_view_proj(int face, const vec3& center, float near_plane, float far_plane) {

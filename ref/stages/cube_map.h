@@ -32,6 +32,15 @@ vec2 cube_face_st(int face, const vec3& r);
 /// the inverse of cube_face_st, also for coordinates past the face's edge.
 vec3 cube_face_direction(int face, const vec2& st);
 
+/// A texel of a `size`² cube face addressed from face `home`, possibly past its edge.
+struct CubeTexel {
+  int face, x, y;
+};
+/// Texel (x, y) of face `home` as a cube lookup reads it: itself when inside the face; past the
+/// edge, the face and texel the direction through that virtual texel's centre selects (GL's own
+/// selection, so a PCF tap lands where a cube lookup would).
+CubeTexel cube_texel(int home, int x, int y, int size);
+
 /// World -> clip space of face f of a cube centred at `center`: a 90 degree square perspective
 /// whose NDC x, y are the face's sc/|ma|, tc/|ma| (so window (x, y) is the face's (s, t) texel).
 mat4 cube_face_view_proj(int face, const vec3& center, float near_plane, float far_plane);

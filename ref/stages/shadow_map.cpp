@@ -241,16 +241,9 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
   const int home = cube_face(r);
   const vec2 st = cube_face_st(home, r);
   const auto lit = [&](int tx, int ty) {
-    int face = home;
-    if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
-      // Past the edge: the direction through this virtual texel's centre picks the face and
-      // texel it reads (GL's own selection, so a tap lands where a cube lookup would).
-      const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
-      face = cube_face(d);
-      const vec2 nst = cube_face_st(face, d);
-      tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
-      ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
-    }
+    const CubeTexel texel = cube_texel(home, tx, ty, size);  // past the edge: the face GL reads
+    const int face = texel.face;
+    tx = texel.x, ty = texel.y;
     // The point's depth in the face this texel is on; outside that face's depth range it is lit.
     const vec4 c = map.cube_view_proj[size_t(face)] * vec4(world_pos, 1.0f);
     const float z = c.z / c.w * 0.5f + 0.5f;

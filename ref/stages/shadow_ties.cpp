@@ -124,14 +124,9 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
     const double e_q = 2.0 * er / std::max(std::abs(ma), 1e-30) + 3.0 * kU;
     const vec2 st = cube_face_st(home, r);
     const auto state = [&](int tx, int ty) {
-      int face = home;
-      if (tx < 0 || ty < 0 || tx >= size || ty >= size) {
-        const vec3 d = cube_face_direction(home, (vec2(float(tx), float(ty)) + 0.5f) / float(size));
-        face = cube_face(d);
-        const vec2 nst = cube_face_st(face, d);
-        tx = std::clamp(int(std::floor(nst.x * float(size))), 0, size - 1);
-        ty = std::clamp(int(std::floor(nst.y * float(size))), 0, size - 1);
-      }
+      const CubeTexel texel = cube_texel(home, tx, ty, size);
+      const int face = texel.face;
+      tx = texel.x, ty = texel.y;
       const mat4& m = map.cube_view_proj[size_t(face)];
       const vec4 c = m * vec4(p, 1.0f);
       const float z = c.z / c.w * 0.5f + 0.5f;
