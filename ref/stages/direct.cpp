@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 #include "shared/vct_shared.h"
+#include "stages/gbuffer.h"
 #include "stages/light_sample.h"
 #include "stages/shadow_map.h"
 
@@ -62,14 +63,8 @@ Image shade_direct(const Scene& scene, const GBuffer& g, const std::vector<Shado
   parallel_rows(out.height, [&](int y) {
     for (int x = 0; x < out.width; ++x) {
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
-      SurfaceMaterial m;
+      const SurfaceMaterial m = gbuffer_material(g, x, y);
       const vec3 p = g.position.rgb(x, y);
-      m.albedo = g.albedo.rgb(x, y);
-      m.metallic = g.material.at(x, y, 0);
-      m.roughness = g.material.at(x, y, 1);
-      m.specular_factor = g.material.at(x, y, 2);
-      m.specular_color = g.specular_color.rgb(x, y);
-      m.shading_normal = g.normal.rgb(x, y);
       const vec3 v = scene.camera.to_eye(p);
       out.set_rgb(x, y, direct_radiance(scene, maps, settings, p, m.shading_normal, v, m));
     }

@@ -4,6 +4,7 @@
 
 #include "core/parallel.h"
 #include "stages/direct.h"
+#include "stages/gbuffer.h"
 #include "stages/gbuffer_ties.h"
 #include "stages/shadow_ties.h"
 
@@ -13,22 +14,11 @@ namespace {
 
 constexpr const char* kGroups[2] = {"image.direct", "image.emission"};
 
-SurfaceMaterial material_at(const GBuffer& g, int x, int y) {
-  SurfaceMaterial m;
-  m.albedo = g.albedo.rgb(x, y);
-  m.metallic = g.material.at(x, y, 0);
-  m.roughness = g.material.at(x, y, 1);
-  m.specular_factor = g.material.at(x, y, 2);
-  m.specular_color = g.specular_color.rgb(x, y);
-  m.shading_normal = g.normal.rgb(x, y);
-  return m;
-}
-
 // [lo, hi] of the direct light at a covered pixel: each light's unshadowed term times the ends
 // of its admissible visibility.
 void direct_range_at(const Scene& scene, const GBuffer& g, const std::vector<ShadowMap>& maps, const VctSettings& s,
                      int x, int y, vec3& lo, vec3& hi) {
-  const SurfaceMaterial m = material_at(g, x, y);
+  const SurfaceMaterial m = gbuffer_material(g, x, y);
   const sh::SurfacePbr pbr = surface_of(m);
   const vec3 p = g.position.rgb(x, y);
   const vec3 v = scene.camera.to_eye(p);

@@ -116,4 +116,17 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
   return g;
 }
 
+SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y) {
+  SurfaceMaterial m;
+  m.albedo = g.albedo.rgb(x, y);
+  m.metallic = g.material.at(x, y, 0);
+  m.roughness = g.material.at(x, y, 1);
+  m.specular_factor = g.material.at(x, y, 2);
+  m.specular_color = g.specular_color.rgb(x, y);
+  // A partial G-buffer (an engine's stage set, docs/external_format.md) may have no emission.
+  if (!g.emission.empty()) m.emission = g.emission.rgb(x, y);
+  m.shading_normal = g.normal.rgb(x, y);
+  return m;
+}
+
 }  // namespace vct

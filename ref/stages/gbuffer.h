@@ -4,6 +4,7 @@
 
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "scene/surface.h"
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -21,6 +22,9 @@ struct GBufferSample {
 /// the centre, facing as given (render_gbuffer's per-pixel evaluation).
 GBufferSample gbuffer_sample(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
                              uint32_t triangle, const vec3& bary, float depth, bool front_facing);
+
+/// The material of a G-buffer pixel, as the BRDF sees it (direct light, soft shadows, their ties).
+SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
 
 /// settings.width x settings.height view through scene.camera (projection aspect = width/height).
 /// Normals face the camera: back-facing triangles (clockwise in window space, GL's

@@ -19,18 +19,6 @@ vec3 light_radiance(const Light& light, const VctSettings& s, const vec3& p, con
   return sh::cook_torrance(pbr, n, v, ls.l) * ls.irradiance * n_dot_l;
 }
 
-SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y) {
-  SurfaceMaterial m;
-  m.albedo = g.albedo.rgb(x, y);
-  m.metallic = g.material.at(x, y, 0);
-  m.roughness = g.material.at(x, y, 1);
-  m.specular_factor = g.material.at(x, y, 2);
-  m.specular_color = g.specular_color.rgb(x, y);
-  m.emission = g.emission.rgb(x, y);
-  m.shading_normal = g.normal.rgb(x, y);
-  return m;
-}
-
 Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s,
                         Image* visibility) {
   const int w = g.coverage.width, h = g.coverage.height;

@@ -7,6 +7,7 @@
 #include "core/settings.h"
 #include "scene/scene.h"
 #include "scene/surface.h"
+#include "stages/gbuffer.h"  // gbuffer_material
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -15,9 +16,6 @@ namespace vct {
 /// shared definitions in vct_shared.h.
 vec3 light_radiance(const Light& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
                          const SurfaceMaterial& m);
-
-/// The material of a G-buffer pixel, as the BRDF sees it.
-SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
 
 /// Direct light of every covered pixel with cone visibility; `visibility` (1 channel) receives the
 /// mean visibility over the lights (1 where no light or no surface).
