@@ -229,8 +229,8 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
     for (StageVerdict& v : isolated.stages)
       if (is_cone_traced(v.stage, s.soft_shadows)) {
         const StageVerdict* p = find_stage(plain, v.stage);
-        v.note += "; closest march end (a last sample within the step positions' precision of a face or "
-                  "max_distance, docs/compare.md) taken at " +
+        v.note += "; closest march end (a first or last sample within its position's precision of a face, "
+                  "or the last of max_distance, docs/compare.md) taken at " +
                   std::to_string(moved) + " pixel values of the cone images; plain re-trace: " +
                   (p ? to_string(p->verdict) + ", " + std::to_string(p->out_of_bound) + " beyond" : std::string("-"));
         v.extra["march_end_alternatives"] = moved;

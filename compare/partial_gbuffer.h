@@ -13,6 +13,7 @@
 #include "compare/stage_set.h"
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "stages/stage_types.h"
 
 namespace vct::cmp {
 
@@ -31,5 +32,15 @@ StageSet complete_partial_gbuffer(const StageSet& set, const Scene& scene, const
 /// GL window depth `depth` in [0,1] (depth range 0..1), through the camera of `scene` for a
 /// w x h image.
 vec3 position_from_depth(const Scene& scene, int w, int h, float px, float py, float depth);
+
+/// Per covered pixel and world axis, how far the engine's own position may lie from the one
+/// position_from_depth reconstructs (docs/compare.md, "The start-face tie"): its depth's
+/// precision along the pixel's ray (4 x 2^-24 of window depth: the engine's interpolation and
+/// store, float or 24-bit, and our 2 d - 1), the 2^-8 pixel its vertices snap by (its attributes
+/// are those of a surface point up to 2^-8 pixel from the pixel centre on each window axis, as
+/// stages/fragment_slack.h), found on the plane through the position with the engine's normal,
+/// and 4 roundings of the position. Capped at the volume's size (anywhere). From g.depth,
+/// g.normal, g.coverage and g.position.
+Image position_margin_from_depth(const Scene& scene, const GBuffer& g);
 
 }  // namespace vct::cmp

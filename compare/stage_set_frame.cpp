@@ -209,6 +209,9 @@ FrameResult frame_from_stage_set(const StageSet& given, const Scene& scene, cons
   check_input_images(set, s, f);
   fill_mips(set, s, f);
   check_scene_matches(set, scene, f.gbuffer);
+  // Positions reconstructed from depth are not the engine's own floats: how far those may lie
+  // decides which cones may start on the other side of a volume face (the start-face tie).
+  if (partial) f.gbuffer.position_margin = position_margin_from_depth(scene, f.gbuffer);
   return f;
 }
 

@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
-# The sanitizer part of CI (.ci/run calls it after scripts/test.sh):
-#  1. ASan + UBSan build (-DVCT_SANITIZE=ON) in build-asan, the whole ctest suite there (LSan on);
-#  2. TSan build (-DVCT_TSAN=ON, parallel_for on std::thread so TSan sees every sync) in
-#     build-tsan, the CPU reference and path tracer test binaries (ref_tests, pt_tests).
+# The sanitizer builds, in two tiers (docs/performance.md, "CI tiers"):
+#  ci    every submission (.ci/run calls it after scripts/test.sh): ASan + UBSan
+#        (-DVCT_SANITIZE=ON) in build-asan, building and running only cli_tests (the whole `vct`
+#        program end to end: every command, the input refusals, the output faults, the fuzz
+#        regression inputs of the scene comparison) and compare_tests (the judge and the stage-set
+#        reader's fuzz regressions), LSan on;
+#  full  less often (by hand, at the end of a session that changed memory handling, before a
+#        release): ASan + UBSan over the whole ctest suite, then TSan (-DVCT_TSAN=ON, parallel_for
+#        on std::thread so TSan sees every sync) in build-tsan over the CPU reference and path
+#        tracer test binaries (ref_tests, pt_tests).
 # Prints the wall time of each part. Assumes scripts/setup.sh has installed the packages.
-#   scripts/sanitize.sh [asan|tsan]   (default: both)
+#   scripts/sanitize.sh [ci|full|asan|tsan]   (default: full; asan / tsan: one half of full)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=$(nproc)
 # ccache keys on relative paths under the checkout (as scripts/setup.sh), so a clone in another
 # folder (CI's) hits the objects an earlier clone compiled with the same flags.
 export CCACHE_BASEDIR="$PWD"
-what=${1:-all}
+what=${1:-full}
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 
@@ -28,6 +34,18 @@ timed() {  # label, command...
   shift
   "$@"
   echo "sanitize: $label took $((SECONDS - t0)) s"
+}
+
+# ASAN_OPTIONS for every ASan test run (why intercept_tls_get_addr=0: the comment in asan() below).
+ASAN_TEST_OPTIONS="detect_leaks=1:intercept_tls_get_addr=0"
+
+# The per-submission tier: two binaries and what they need (vct, its libraries), their tests
+# picked by label (tests/CMakeLists.txt labels each test with its binary).
+asan_ci() {
+  configure build-asan -DVCT_SANITIZE=ON
+  timed "ASan+UBSan build (cli_tests, compare_tests)" cmake --build build-asan -j "$JOBS" --target cli_tests compare_tests
+  timed "ASan+UBSan tests (cli_tests, compare_tests)" env ASAN_OPTIONS="$ASAN_TEST_OPTIONS" \
+    ctest --test-dir build-asan --output-on-failure -j "$JOBS" -L '^(cli_tests|compare_tests)$'
 }
 
 asan() {
@@ -47,7 +65,7 @@ asan() {
   # runtime's own workaround (docs/performance.md, "Sanitizers"). Without
   # the interceptor LSan does not scan dlopen'ed libraries' dynamic TLS: that can only add
   # reports (a pointer kept only there), never hide a leak of ours (our TLS is static).
-  timed "ASan+UBSan tests" env ASAN_OPTIONS="detect_leaks=1:intercept_tls_get_addr=0" \
+  timed "ASan+UBSan tests" env ASAN_OPTIONS="$ASAN_TEST_OPTIONS" \
     ctest --test-dir build-asan --output-on-failure -j "$JOBS"
 }
 
@@ -59,8 +77,9 @@ tsan() {
 }
 
 case $what in
+  ci) asan_ci ;;
   asan) asan ;;
   tsan) tsan ;;
-  all) asan && tsan ;;
-  *) echo "usage: scripts/sanitize.sh [asan|tsan]" >&2; exit 2 ;;
+  full | all) asan && tsan ;;
+  *) echo "usage: scripts/sanitize.sh [ci|full|asan|tsan]" >&2; exit 2 ;;
 esac

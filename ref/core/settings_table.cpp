@@ -176,13 +176,38 @@ SettingField<S> choice(const char* key, E S::*member, const char* help) {
   return f;
 }
 
-SettingRange closed(double lo, double hi) { return {lo, hi}; }
-SettingRange open(double lo, double hi) { return {lo, hi, true, true}; }
-SettingRange open_lo(double lo, double hi) { return {lo, hi, true, false}; }
-SettingRange at_least(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
-SettingRange powers_of_two(double lo, double hi) { return {lo, hi, false, false, true}; }
-SettingRange one_of(std::vector<int> values) { return {0, 0, false, false, false, std::move(values)}; }
-SettingRange any() { return {0, 0, false, false, false, {}, true}; }
+// Each range starts from the defaults of SettingRange and sets what it means.
+SettingRange closed(double lo, double hi) {
+  SettingRange r;
+  r.lo = lo, r.hi = hi;
+  return r;
+}
+SettingRange open(double lo, double hi) {
+  SettingRange r = closed(lo, hi);
+  r.lo_open = r.hi_open = true;
+  return r;
+}
+SettingRange open_lo(double lo, double hi) {
+  SettingRange r = closed(lo, hi);
+  r.lo_open = true;
+  return r;
+}
+SettingRange at_least(double lo) { return closed(lo, std::numeric_limits<double>::infinity()); }
+SettingRange powers_of_two(double lo, double hi) {
+  SettingRange r = closed(lo, hi);
+  r.power_of_two = true;
+  return r;
+}
+SettingRange one_of(std::vector<int> values) {
+  SettingRange r;
+  r.only = std::move(values);
+  return r;
+}
+SettingRange any() {
+  SettingRange r;
+  r.unbounded = true;
+  return r;
+}
 
 using V = VctSettings;
 using P = PtSettings;
@@ -235,7 +260,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("diffuse_cone_tilt_deg", &V::diffuse_cone_tilt_deg, open(0, 90), "angle of the tilted cones from the normal, degrees"),
     choice("diffuse_weighting", &V::diffuse_weighting, "cosine-weighted mean, or the seed's plain sum"),
     field("random_rotation", &V::random_rotation, any(), "rotate the diffuse cones per pixel (hash of pixel, frame)", "u_random_rotation"),
-    field("cone_quality", &V::cone_quality, {0.01, 4.0, true, false}, "step = diameter x quality (smaller = more steps)", "u_cone_quality"),
+    field("cone_quality", &V::cone_quality, open_lo(0.01, 4.0), "step = diameter x quality (smaller = more steps)", "u_cone_quality"),
     field("cone_offset_voxels", &V::cone_offset_voxels, any(), "cone start offset, in voxels of level 0"),
     choice("cone_start", &V::cone_start, "offset along each cone's axis, or the origin moved along the surface normal (march from t = 0)"),
     field("cone_axis_offset_voxels", &V::cone_axis_offset_voxels, at_least(0), "with cone_start = normal: first sample this far along the axis, voxels"),

@@ -128,8 +128,18 @@ vec4 ConeFrame::trace(const Cone& cone, const MarchParams& params, std::vector<C
   return trace_cone(mips_, cone, params, record);
 }
 
+vec3 ConeFrame::origin_margin(const vec3& position_margin) const {
+  if (!(position_margin.x > 0.0f || position_margin.y > 0.0f || position_margin.z > 0.0f)) return vec3(0.0f);
+  // Texture coordinates are at most 1 or so: the engine's world-to-texture map and its normal
+  // offset, each with a rounding or two (or a fused multiply-add) that ours need not share, add
+  // 8 units in the last place of 1 on every axis (docs/compare.md, "The start-face tie").
+  constexpr float kRounding = 8.0f / 16777216.0f;
+  return position_margin / volume_.size + vec3(kRounding);
+}
+
 DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
-                                  std::vector<std::vector<ConeSample>>* records) const {
+                                  std::vector<std::vector<ConeSample>>* records,
+                                  const vec3& position_margin) const {
   const sh::Frame frame = diffuse_cone_frame(n, tangent_frame_);
   DiffuseConeSet set;
   set.count = count_;
@@ -137,9 +147,11 @@ DiffuseConeSet ConeFrame::diffuse(const vec3& p, const vec3& n, float rotation,
   const vec3 origin = params_.origin_at(volume_.to_texture(p), n);
   // rotation == 0 (also -0: phi = rotation + k step is then the same float) is the unrotated set.
   const bool unrotated = rotation == 0.0f;
+  const vec3 margin = origin_margin(position_margin);
   for (int i = 0; i < set.count; ++i) {
     Cone& cone = set.geometry[size_t(i)];
     cone.origin = origin;
+    cone.origin_margin = margin;
     cone.direction = glm::normalize(sh::frame_to_world(frame, rotated(i, rotation, unrotated)));
     cone.aperture = declared_.empty() ? diffuse_aperture_ : declared_[size_t(i)].aperture;
   }
@@ -167,9 +179,10 @@ vec3 ConeFrame::rotated(int i, float rotation, bool unrotated) const {
 }
 
 vec4 ConeFrame::specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
-                         std::vector<ConeSample>* record) const {
-  return trace(specular_cone(volume_, p, n, v, roughness, specular_params_.normal_offset, specular_aperture_),
-               specular_params_, record);
+                         std::vector<ConeSample>* record, const vec3& position_margin) const {
+  Cone cone = specular_cone(volume_, p, n, v, roughness, specular_params_.normal_offset, specular_aperture_);
+  cone.origin_margin = origin_margin(position_margin);
+  return trace(cone, specular_params_, record);
 }
 
 vec3 ConeFrame::specular_view_point(const vec3& p, const vec3& n) const {

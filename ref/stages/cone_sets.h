@@ -64,12 +64,15 @@ class ConeFrame {
 
   /// The diffuse set at world p, unit normal n, rotated by `rotation` about n; `records` as for
   /// trace_diffuse_cones (recording uses the readable sampler, voxel_sampler.h).
+  /// `position_margin` (world units per axis): how far a correct test engine's p may lie from
+  /// this one (GBuffer::position_margin); the cones' Cone::origin_margin.
   DiffuseConeSet diffuse(const vec3& p, const vec3& n, float rotation,
-                         std::vector<std::vector<ConeSample>>* records = nullptr) const;
+                         std::vector<std::vector<ConeSample>>* records = nullptr,
+                         const vec3& position_margin = vec3(0.0f)) const;
   /// The rotation of pixel (x, y) (row 0 = top), 0 when rotation is off.
   float rotation_for_pixel(int x, int y) const;
   vec4 specular(const vec3& p, const vec3& n, const vec3& v, float roughness,
-                std::vector<ConeSample>* record = nullptr) const;
+                std::vector<ConeSample>* record = nullptr, const vec3& position_margin = vec3(0.0f)) const;
   /// The world point the specular cone's view vector leaves (settings specular_view).
   vec3 specular_view_point(const vec3& p, const vec3& n) const;
   /// 1 - opacity toward the light, marched no further than a spot or point light's position; a
@@ -87,6 +90,8 @@ class ConeFrame {
   vec4 trace(const Cone& cone, const MarchParams& params, std::vector<ConeSample>* record) const;
   /// The schedule among schedules_ this cone marches, or null.
   const MarchSchedule* schedule_for(const Cone& cone, const MarchParams& params) const;
+  /// A world position margin as a cone's origin_margin (texture units).
+  vec3 origin_margin(const vec3& position_margin) const;
   /// Cone i's tangent-frame direction turned by `rotation` about the normal.
   vec3 rotated(int i, float rotation, bool unrotated) const;
 

@@ -71,26 +71,29 @@ bool inside_unit_cube(const vec3& p) {
 // GL, whose position may lie `margin` further or nearer along `dir`, may already have left the
 // volume through a face the cone leaves by (-1: stop here), and the in-volume point a GL whose
 // sample fell just inside samples (+1: `pos` clamped to the cube, when it lies within the margin
-// outside those faces only). Faces behind the cone are the plain march's: a cone starting on a
-// wall of the volume is not cut short.
-// Along one axis: the distance's margin, plus two roundings of origin + dir * t where the
-// distances differ at all (a margin of 0: both sides' positions are the same floats).
-float position_margin(float pos, float dir, float margin) {
-  return margin > 0.0f ? std::abs(dir) * margin + 2.0f * std::numeric_limits<float>::epsilon() * std::abs(pos) : 0.0f;
+// outside those faces only). Faces behind the cone count only at the first sample and only by the
+// cone's origin_margin (start_face_variant): a cone starting on a wall of the volume from the
+// same floats as GL's is not cut short.
+// Along one axis: the distance's margin, the origin's, plus two roundings of origin + dir * t
+// where the positions differ at all (both margins 0: both sides' positions are the same floats).
+float position_margin(float pos, float dir, float margin, float origin_margin) {
+  return margin > 0.0f || origin_margin > 0.0f
+             ? std::abs(dir) * margin + origin_margin + 2.0f * std::numeric_limits<float>::epsilon() * std::abs(pos)
+             : 0.0f;
 }
 
-bool near_exit_face(const vec3& pos, const vec3& dir, float margin) {
+bool near_exit_face(const vec3& pos, const vec3& dir, float margin, const vec3& origin_margin) {
   for (int i = 0; i < 3; ++i) {
-    const float m = position_margin(pos[i], dir[i], margin);
+    const float m = position_margin(pos[i], dir[i], margin, origin_margin[i]);
     if ((dir[i] > 0.0f && 1.0f - pos[i] <= m) || (dir[i] < 0.0f && pos[i] <= m)) return true;
   }
   return false;
 }
 
-bool just_past_exit_face(const vec3& pos, const vec3& dir, float margin, vec3& clamped) {
+bool just_past_exit_face(const vec3& pos, const vec3& dir, float margin, const vec3& origin_margin, vec3& clamped) {
   clamped = pos;
   for (int i = 0; i < 3; ++i) {
-    const float m = position_margin(pos[i], dir[i], margin);
+    const float m = position_margin(pos[i], dir[i], margin, origin_margin[i]);
     if (pos[i] > 1.0f) {
       if (!(dir[i] > 0.0f && pos[i] - 1.0f <= m)) return false;
       clamped[i] = 1.0f;
@@ -100,6 +103,28 @@ bool just_past_exit_face(const vec3& pos, const vec3& dir, float margin, vec3& c
     }
   }
   return true;
+}
+
+// The start-face tie (docs/compare.md): the first sample `pos` of a cone whose origin a correct
+// GL may place `origin_margin` away per axis, against every face, behind the cone or not. -1:
+// true when it lies inside within the margin of a face (GL's may lie outside: its loop breaks at
+// once, the cone gives nothing). +1: true when it lies outside within the margin of each face it
+// is past (GL's may lie on the face: `shift` moves ours there, and every later sample with it).
+bool start_face_variant(int variant, const vec3& pos, const vec3& origin_margin, vec3& shift) {
+  shift = vec3(0.0f);
+  bool near = false;
+  for (int i = 0; i < 3; ++i) {
+    const float m = position_margin(pos[i], 0.0f, 0.0f, origin_margin[i]);
+    if (variant < 0) {
+      near = near || (pos[i] >= 0.0f && pos[i] <= m) || (pos[i] <= 1.0f && 1.0f - pos[i] <= m);
+    } else if (pos[i] < 0.0f || pos[i] > 1.0f) {
+      const float face = pos[i] < 0.0f ? 0.0f : 1.0f;
+      if (!(std::abs(pos[i] - face) <= m)) return false;
+      shift[i] = face - pos[i];
+      near = true;
+    }
+  }
+  return near;
 }
 
 // The march itself, for either sampler (voxel_sampler.h or the frame's MipSampler, which agree
@@ -116,12 +141,24 @@ vec4 march(const Cone& cone, const MarchParams& params, float voxel, const Sampl
   float t = params.start_offset;
   double drift = 0.0;  // the march-end variants' relative drift of a correct GL's t (march_end_step_drift)
   int tan_steps = 0;
+  vec3 origin = cone.origin;
+  const vec3& om = cone.origin_margin;
+  const bool start_tie = params.march_end != 0 && (om.x > 0.0f || om.y > 0.0f || om.z > 0.0f);
   for (size_t k = 0; alpha < 1.0f; ++k) {
     const float margin = params.march_end ? march_end_margin(t, drift, tan_steps) : 0.0f;
     if (!(t < params.max_distance + float(params.march_end) * margin)) break;
-    vec3 pos = cone.origin + cone.direction * t;
-    if (params.march_end < 0 && margin > 0.0f && near_exit_face(pos, cone.direction, margin)) break;
-    if (!inside_unit_cube(pos) && !(params.march_end > 0 && just_past_exit_face(pos, cone.direction, margin, pos)))
+    vec3 pos = origin + cone.direction * t;
+    if (k == 0 && start_tie) {
+      vec3 shift;
+      if (start_face_variant(params.march_end, pos, om, shift)) {
+        if (params.march_end < 0) break;
+        origin += shift;
+        pos = origin + cone.direction * t;
+      }
+    }
+    if (params.march_end < 0 && (margin > 0.0f || start_tie) && near_exit_face(pos, cone.direction, margin, om)) break;
+    if (!inside_unit_cube(pos) &&
+        !(params.march_end > 0 && just_past_exit_face(pos, cone.direction, margin, om, pos)))
       break;
     const MarchStep g = k < scheduled ? (*schedule)[k] : march_step(t, tan_half, voxel, params);
     const float diameter = g.diameter, lod = g.lod, step = g.step;

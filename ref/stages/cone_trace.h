@@ -14,6 +14,12 @@ struct Cone {
   vec3 origin{0.0f};     // texture space
   vec3 direction{0.0f, 0.0f, 1.0f};  // unit
   float aperture = 0.5f;  // full opening angle, radians
+  // Per axis, how far (texture units) a correct test engine's origin may lie from this one: 0
+  // where both march from the same floats; set where the re-trace reconstructs the engine's
+  // positions (GBuffer::position_margin, compare/partial_gbuffer.h). Read only by the march-end
+  // variants (MarchParams::march_end): it widens their faces' margins and, at the first sample,
+  // admits a start on the other side of any face (docs/compare.md, "The start-face tie").
+  vec3 origin_margin{0.0f};
 };
 
 /// How far and how finely to march; from_settings() fills it from VctSettings.
@@ -29,7 +35,10 @@ struct MarchParams {
   // The march-end tie (docs/compare.md, "The march-end tie"): 0 the march itself; -1 the faces the
   // cone leaves through and max_distance moved inward, +1 outward, by how far a correct GL's step
   // positions may lie from ours (march_end_margin): the march a GL whose last in-volume sample
-  // fell just outside (-1) or just inside (+1, sampled at the face) gives.
+  // fell just outside (-1) or just inside (+1, sampled at the face) gives. With a cone's
+  // origin_margin the first sample too: -1 a cone whose first sample lies within it of any face
+  // is cut (a GL whose origin lay outside breaks at once), +1 one whose first sample lies just
+  // outside is marched from the origin moved onto that face (docs/compare.md, "The start-face tie").
   int march_end = 0;
   static MarchParams from_settings(const VctSettings& s, int grid);
   /// The specular cone's: from_settings with the specular_offset_voxels and specular_quality an

@@ -22,8 +22,9 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       if (g.coverage.at(x, y, 0) <= 0.0f) continue;
       const vec3 p = g.position.rgb(x, y);
       const vec3 n = g.normal.rgb(x, y);
+      const vec3 margin = g.position_margin.empty() ? vec3(0.0f) : g.position_margin.rgb(x, y);
       if (s.diffuse_cones) {
-        const DiffuseConeSet set = cones.diffuse(p, n, cones.rotation_for_pixel(x, y));
+        const DiffuseConeSet set = cones.diffuse(p, n, cones.rotation_for_pixel(x, y), nullptr, margin);
         out.diffuse.set_rgb(x, y, set.radiance * s.indirect_diffuse_gain);  // an engine's gain (settings.h)
         for (int i = 0; i < set.count; ++i) {
           float* px = out.diffuse_cones[size_t(i)].pixel(x, y);
@@ -33,7 +34,7 @@ IndirectImages trace_indirect(const Scene& scene, const GBuffer& g, const VoxelM
       if (s.specular_cones) {
         const float roughness = g.material.at(x, y, 1);
         const vec3 v = view_vector(scene, cones.specular_view_point(p, n));
-        out.specular.set_rgb(x, y, vec3(cones.specular(p, n, v, roughness)));
+        out.specular.set_rgb(x, y, vec3(cones.specular(p, n, v, roughness, nullptr, margin)));
       }
     }
   });

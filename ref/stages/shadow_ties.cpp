@@ -131,10 +131,11 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
       const vec4 c = m * vec4(p, 1.0f);
       const float z = c.z / c.w * 0.5f + 0.5f;
       const double ez = c.w > 0.0f ? depth_margin(ndc_error(m, p, 2)) : 0.0;
-      if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return z + ez < 0.0 || z - ez > 1.0 || !(c.w > 0.0f) ? 2 : 1;
+      const double zd = z;
+      if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return zd + ez < 0.0 || zd - ez > 1.0 || !(c.w > 0.0f) ? 2 : 1;
       const int st_ = compare_state(z, ez, map.cube[size_t(face)].at(tx, size - 1 - ty, 0), s.shadow_bias);
       // Within the depth margin of the range's ends the point may count as outside (lit).
-      return (z - ez < 0.0 || z + ez > 1.0) ? std::max(st_, 1) : st_;
+      return (zd - ez < 0.0 || zd + ez > 1.0) ? std::max(st_, 1) : st_;
     };
     const VisibilityRange one = pcf_range(st.x * float(size), st.y * float(size), texel_margin(e_q, size), s, state);
     out.lo = std::min(out.lo, one.lo);

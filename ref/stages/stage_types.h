@@ -50,6 +50,10 @@ struct GBuffer {
   // values a correct GL may show here when its edges or a triangle's facing tie the other way
   // (stages/gbuffer_ties.h); the comparison admits a value inside it.
   Image tie_range;
+  // Test frames only, where the re-trace reconstructs the engine's positions from its depth
+  // (compare/partial_gbuffer.h): per axis how far (world units) the engine's own position may lie
+  // from `position`; the march-end variants' start-face tie reads it (stages/cone_trace.h).
+  Image position_margin;
 };
 
 /// Voxel occupancy and radiance at the base level (level 0, N^3).

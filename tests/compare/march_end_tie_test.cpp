@@ -84,7 +84,7 @@ FrameResult with_bright_faces(const FrameResult& ref, const VctSettings& s) {
 // positions' precision of an exit face (the reference's march_end -1 re-trace on the same inputs).
 TEST(MarchEndTie, ConesEndingEarlyAtTheFacesPassAndAWrongMarcherFails) {
   // material_room: an open room whose cones leave the volume (the built-in box's walls stop them).
-  const Scene scene = load_scene(VCT_SOURCE_DIR "/scenes/material_room.gltf");
+  const Scene scene = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/material_room.gltf");
   Settings s = small();
   const FrameResult input = with_bright_faces(render_ref_frame(scene, s), s.vct);
   FrameResult gl = reference_on_test_inputs(scene, input, s.vct, nullptr, -1);

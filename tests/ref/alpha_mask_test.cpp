@@ -197,8 +197,9 @@ TEST(AlphaMask, OpaqueCardKeepsBothHalves) {
     for (int x = 0; x < 16; ++x) {
       const float cx = s.volume.origin.x + (float(x) + 0.5f) * step,
                   cy = s.volume.origin.y + (float(y) + 0.5f) * step;
-      if (std::abs(cx) < 0.999f && std::abs(cy) < 0.999f)
+      if (std::abs(cx) < 0.999f && std::abs(cy) < 0.999f) {
         EXPECT_TRUE(column_occupied(v, x, y)) << x << "," << y;
+      }
     }
 }
 

@@ -45,7 +45,9 @@ TEST(RasterTies, FacingMayFlipHoldsEveryOneStepSnapThatFlips) {
     if (a == 0) continue;  // degenerate after snapping: no fragments
     const bool flips_here = some_snap_flips(x, y);
     const bool flag = facing_may_flip(x, y, a);
-    if (flips_here) EXPECT_TRUE(flag) << x[0] << "," << y[0] << " " << x[1] << "," << y[1] << " " << x[2] << "," << y[2];
+    if (flips_here) {
+      EXPECT_TRUE(flag) << x[0] << "," << y[0] << " " << x[1] << "," << y[1] << " " << x[2] << "," << y[2];
+    }
     flips += flips_here;
     flagged += flag;
   }
@@ -125,8 +127,8 @@ TEST(RasterTies, SilhouetteThroughAPixelCentreAdmitsTheSurfaceBehind) {
       for (int c = 0; c < g.tie_range.channels; c += 2) {
         const float shift_span = 2.0f * pixel_world(x < 10 ? 2.0f : 4.0f) / 256.0f;
         const float span = g.tie_range.at(x, row, c + 1) - g.tie_range.at(x, row, c);
-        if (c == x_lo || c == y_lo) EXPECT_NEAR(span, shift_span, 1e-5f) << x << "," << row << " " << c;
-        else EXPECT_NEAR(span, 0.0f, 1e-5f) << x << "," << row << " " << c;
+        const float expected = c == x_lo || c == y_lo ? shift_span : 0.0f;
+        EXPECT_NEAR(span, expected, 1e-5f) << x << "," << row << " " << c;
       }
   }
 }

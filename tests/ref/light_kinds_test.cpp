@@ -196,8 +196,9 @@ TEST(LightKinds, SunMapCoversTheVolumeAndCastsAParallelShadow) {
         EXPECT_EQ(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
         ++shadowed;
       }
-      if (std::abs(p.x - 0.5f) > 0.2f || std::abs(p.z) > 0.2f)
+      if (std::abs(p.x - 0.5f) > 0.2f || std::abs(p.z) > 0.2f) {
         EXPECT_GT(img.at(x, y, 0), 0.0f) << p.x << " " << p.z;
+      }
     }
   EXPECT_GT(shadowed, 0);
 }

@@ -97,6 +97,59 @@ TEST(MarchEnd, StepsThatNeverUsedTheApertureHaveNoAlternative) {
   EXPECT_EQ(march_end_margin(0.9f, 0.0, 0), 0.0f);
 }
 
+// The start-face tie (docs/compare.md): a cone whose origin a correct engine may place
+// origin_margin away (its position reconstructed, not read) and whose first sample lies within
+// that of a face, here x = 1 with the cone running along the face (+y).
+Cone along_face_at(float x, float margin) {
+  Cone c;
+  c.direction = vec3(0.0f, 1.0f, 0.0f);
+  c.aperture = 0.5f;
+  c.origin = vec3(x, 0.2f, 0.5f);
+  c.origin_margin = vec3(margin, margin, margin);
+  return c;
+}
+
+TEST(MarchEnd, AFirstSampleJustInsideAFaceMayStartOutside) {
+  const VoxelMips mips = fog();
+  const Cone c = along_face_at(1.0f - 1e-6f, 4e-6f);
+  const vec4 plain = trace_cone(mips, c, params(0));
+  EXPECT_GT(plain.a, 0.0f);
+  EXPECT_EQ(trace_cone(mips, c, params(-1)), vec4(0.0f));  // GL's origin outside: its loop breaks at once
+  EXPECT_EQ(trace_cone(mips, c, params(+1)), plain);      // inside already: nothing to move
+}
+
+TEST(MarchEnd, AFirstSampleJustOutsideAFaceMayStartOnIt) {
+  const VoxelMips mips = fog();
+  const Cone c = along_face_at(1.0f + 1e-6f, 4e-6f);
+  EXPECT_EQ(trace_cone(mips, c, params(0)), vec4(0.0f));
+  EXPECT_EQ(trace_cone(mips, c, params(-1)), vec4(0.0f));
+  // +1: the whole march moved onto the face, as a GL whose origin lay there marches it.
+  std::vector<ConeSample> longer;
+  const vec4 l = trace_cone(mips, c, params(+1), &longer);
+  ASSERT_GE(longer.size(), 2u);
+  for (const ConeSample& sample : longer) EXPECT_EQ(sample.position.x, 1.0f);
+  Cone on_face = c;
+  on_face.origin.x = 1.0f;
+  on_face.origin_margin = vec3(0.0f);
+  EXPECT_EQ(l, trace_cone(mips, on_face, params(0)));
+}
+
+TEST(MarchEnd, AStartBeyondTheOriginsMarginOrFromTheSameFloatsHasNoAlternative) {
+  const VoxelMips mips = fog();
+  for (float x : {1.0f - 1e-4f, 1.0f + 1e-4f}) {  // 25 margins from the face
+    const Cone c = along_face_at(x, 4e-6f);
+    const vec4 plain = trace_cone(mips, c, params(0));
+    EXPECT_EQ(trace_cone(mips, c, params(-1)), plain) << x;
+    EXPECT_EQ(trace_cone(mips, c, params(+1)), plain) << x;
+  }
+  // No origin margin (both sides march from the same floats): a cone starting on the face stays.
+  const Cone same = along_face_at(1.0f, 0.0f);
+  const vec4 plain = trace_cone(mips, same, params(0));
+  EXPECT_GT(plain.a, 0.0f);
+  EXPECT_EQ(trace_cone(mips, same, params(-1)), plain);
+  EXPECT_EQ(trace_cone(mips, same, params(+1)), plain);
+}
+
 // The drift follows the derivation: GL's tan within 2^-11 (1/sin h + 1/cos h) + 2^-11 h/(sin h cos h)
 // relative, carried by step / (t + step) per step.
 TEST(MarchEnd, DriftPerStepIsTheTangentsPrecisionTimesTheStepsShare) {

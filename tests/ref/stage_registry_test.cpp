@@ -82,7 +82,9 @@ TEST(StageRegistry, NamesAreUniqueAndFamiliesNumbered) {
     const bool family = row.index != StageIndex::None;
     EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
     EXPECT_TRUE(row.image || row.volume || row.role == StageRole::Derived) << row.name;
-    if (row.role != StageRole::Derived) EXPECT_EQ(row.kind == StageKind::Image, row.image != nullptr) << row.name;
+    if (row.role != StageRole::Derived) {
+      EXPECT_EQ(row.kind == StageKind::Image, row.image != nullptr) << row.name;
+    }
   }
 }
 

@@ -136,12 +136,12 @@ TEST(TextureSlack, SmoothUntexturedNormalsMoveWithTheSamplePoint) {
   st.width = st.height = 16;
   const GBuffer g = render_gbuffer(v.scene, st);
   const auto normal_at = [&](double u) {
-    const double t = (2.0 * u - 1.0) * k;
+    const double t = (2.0 * u - 1.0) * double(k);
     return glm::dvec3(t, 0.0, 1.0) / std::sqrt(1.0 + t * t);
   };
-  const double du = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * kTextureSlackShift;
+  const double du = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * double(kTextureSlackShift);
   for (int x = 0; x < 16; ++x) {
-    const double u = (g.position.at(x, 8, 0) + 2.0) / 4.0;
+    const double u = (double(g.position.at(x, 8, 0)) + 2.0) / 4.0;
     double want = 0.0;
     for (double d : {-du, du}) {
       const glm::dvec3 c = glm::abs(normal_at(u + d) - normal_at(u));

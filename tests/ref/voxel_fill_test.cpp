@@ -58,7 +58,9 @@ TEST(VoxelFill, ClosedBoxInteriorIsFilledExactly) {
         ASSERT_EQ(alpha(plain, x, y, z), wall ? 1.0f : 0.0f) << x << " " << y << " " << z;
         ASSERT_EQ(alpha(solid, x, y, z), wall || inside ? 1.0f : 0.0f) << x << " " << y << " " << z;
         // Interior voxels are opaque and dark: the light stays on the surface layer.
-        if (inside) ASSERT_EQ(vec3(solid.radiance.rgba(x, y, z)), vec3(0.0f));
+        if (inside) {
+          ASSERT_EQ(vec3(solid.radiance.rgba(x, y, z)), vec3(0.0f));
+        }
       }
   EXPECT_EQ(interior, (hi - lo - 1) * (hi - lo - 1) * (hi - lo - 1));
 }
@@ -107,7 +109,9 @@ TEST(VoxelFill, ThickeningAddsExactlyKLayersBehindAPlane) {
         for (int x = 0; x < kN; ++x) {
           count += alpha(g, x, y, z) == 1.0f;
           // Only where the plane is: each thickened column sits under a plane voxel.
-          if (alpha(g, x, y, z) == 1.0f) ASSERT_EQ(alpha(plain, x, layer, z), 1.0f);
+          if (alpha(g, x, y, z) == 1.0f) {
+            ASSERT_EQ(alpha(plain, x, layer, z), 1.0f);
+          }
         }
       const bool expected = y <= layer && y >= layer - k;  // the plane and k layers below it (-y)
       EXPECT_EQ(count, expected ? in_plane : 0) << "k = " << k << ", layer " << y;
