@@ -246,13 +246,22 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
       // reference supplies them (its G-buffer stages), they are the only ties: the neighbourhood
       // rule and the edge and interior shares are not used (docs/compare.md, "Raster
       // alternatives": every G-buffer pixel beyond its bound on every scene at 64^2-256^2 was one).
+      // A stage the engine wrote display-encoded is admitted where its value lies between the
+      // range's ends, each widened by the linear bound, carried through the transform (monotone:
+      // DisplayTransform::apply), plus the store's quantisation.
       const auto is_alternative = [&] {
-        if (alt_ch.empty() || displayed) return false;
+        if (alt_ch.empty()) return false;
         for (int c = 0; c < ch; ++c) {
           const double lo = tie_range->at(x, y, alt_ch.lo[size_t(c)]), hi = tie_range->at(x, y, alt_ch.hi[size_t(c)]);
-          const double b = bound_of(c) + m.rel * std::max(0.0, std::max(std::abs(lo), std::abs(hi)) -
-                                                                   std::abs(double(ref.at(x, y, c))));
-          if (!within_tie_range(*tie_range, alt_ch, x, y, c, test.at(x, y, c), b)) return false;
+          const double b = linear_bound(x, y, c) + m.rel * std::max(0.0, std::max(std::abs(lo), std::abs(hi)) -
+                                                                             std::abs(double(ref.at(x, y, c))));
+          const double t = test.at(x, y, c);
+          if (displayed && c < 3) {
+            const double q = display->quantisation_allowance();
+            if (!(t >= display->apply(lo - b) - q && t <= display->apply(hi + b) + q)) return false;
+          } else if (!within_tie_range(*tie_range, alt_ch, x, y, c, t, b)) {
+            return false;
+          }
         }
         return true;
       };

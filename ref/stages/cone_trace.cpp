@@ -76,7 +76,7 @@ bool inside_unit_cube(const vec3& p) {
 // same floats as GL's is not cut short.
 // Along one axis: the distance's margin, the origin's, plus two roundings of origin + dir * t
 // where the positions differ at all (both margins 0: both sides' positions are the same floats).
-float position_margin(float pos, float dir, float margin, float origin_margin) {
+float axis_margin(float pos, float dir, float margin, float origin_margin) {
   return margin > 0.0f || origin_margin > 0.0f
              ? std::abs(dir) * margin + origin_margin + 2.0f * std::numeric_limits<float>::epsilon() * std::abs(pos)
              : 0.0f;
@@ -84,7 +84,7 @@ float position_margin(float pos, float dir, float margin, float origin_margin) {
 
 bool near_exit_face(const vec3& pos, const vec3& dir, float margin, const vec3& origin_margin) {
   for (int i = 0; i < 3; ++i) {
-    const float m = position_margin(pos[i], dir[i], margin, origin_margin[i]);
+    const float m = axis_margin(pos[i], dir[i], margin, origin_margin[i]);
     if ((dir[i] > 0.0f && 1.0f - pos[i] <= m) || (dir[i] < 0.0f && pos[i] <= m)) return true;
   }
   return false;
@@ -93,7 +93,7 @@ bool near_exit_face(const vec3& pos, const vec3& dir, float margin, const vec3& 
 bool just_past_exit_face(const vec3& pos, const vec3& dir, float margin, const vec3& origin_margin, vec3& clamped) {
   clamped = pos;
   for (int i = 0; i < 3; ++i) {
-    const float m = position_margin(pos[i], dir[i], margin, origin_margin[i]);
+    const float m = axis_margin(pos[i], dir[i], margin, origin_margin[i]);
     if (pos[i] > 1.0f) {
       if (!(dir[i] > 0.0f && pos[i] - 1.0f <= m)) return false;
       clamped[i] = 1.0f;
@@ -114,7 +114,7 @@ bool start_face_variant(int variant, const vec3& pos, const vec3& origin_margin,
   shift = vec3(0.0f);
   bool near = false;
   for (int i = 0; i < 3; ++i) {
-    const float m = position_margin(pos[i], 0.0f, 0.0f, origin_margin[i]);
+    const float m = axis_margin(pos[i], 0.0f, 0.0f, origin_margin[i]);
     if (variant < 0) {
       near = near || (pos[i] >= 0.0f && pos[i] <= m) || (pos[i] <= 1.0f && 1.0f - pos[i] <= m);
     } else if (pos[i] < 0.0f || pos[i] > 1.0f) {

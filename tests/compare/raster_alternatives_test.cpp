@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "compare/display_transform.h"
 #include "compare/stage_compare.h"
 #include "stages/gbuffer_ties.h"
 
@@ -101,6 +102,36 @@ TEST(RasterAlternatives, WithTheRangeANeighboursValueIsNoLongerATie) {
   // A one-pixel shift of the whole image, admissible pixel by pixel for the neighbourhood rule
   // and caught there only by the count, fails here at its first pixel.
   EXPECT_EQ(v.extra.at("allowed_edge_fraction").get<double>(), 0.0);
+}
+
+// The shading stages' ranges (a PCF tap that may flip, stages/direct_ties.h) hold for an engine
+// that wrote its direct light display-encoded too: the range's ends carried through the declared
+// transform, plus one step of the 8-bit store.
+TEST(RasterAlternatives, DisplayEncodedShadingStageIsAdmittedWithinTheRangeCarriedThroughTheTransform) {
+  Image ref(kSize, kSize, 3, 0.5f);
+  Image range = own_range("image.direct", ref);
+  for (int c = 0; c < 3; ++c) range.at(3, 3, 2 * c) = 0.1f;  // one tap shadowed on GL's side
+  DisplayTransform gamma;
+  gamma.gamma = 2.2;
+  gamma.bits = 8;
+  gamma.stages = {"image.direct"};
+  const auto encoded = [&](float linear) {
+    Image t(kSize, kSize, 3, float(gamma.encode(0.5)));
+    t.set_rgb(3, 3, vec3(float(gamma.encode(double(linear)))));
+    return t;
+  };
+  CompareOptions opt;
+  const StageVerdict v =
+      compare_image_stage("image.direct", ref, encoded(0.1f), nullptr, opt, nullptr, &gamma, &range);
+  EXPECT_EQ(v.verdict, Verdict::Warn) << v.note;
+  EXPECT_EQ(v.extra.at("raster_alternatives").get<size_t>(), 1u);
+  // Darker than the range allows: no tie gives it.
+  EXPECT_EQ(compare_image_stage("image.direct", ref, encoded(0.05f), nullptr, opt, nullptr, &gamma, &range).verdict,
+            Verdict::Fail);
+  // Without the tap's range the same 0.1 is no alternative either.
+  const Image own = own_range("image.direct", ref);
+  EXPECT_EQ(compare_image_stage("image.direct", ref, encoded(0.1f), nullptr, opt, nullptr, &gamma, &own).verdict,
+            Verdict::Fail);
 }
 
 }  // namespace
