@@ -2,8 +2,9 @@
 # Runs `vct validate` over every scene in scenes/ (and the built-in one) across image sizes,
 # grids and pipeline options, and prints one line per run: verdict and first failing stage.
 # A FAIL on a correct build is a bug of a tolerance model or of the emulation (docs/compare.md).
-#   scripts/validate_matrix.sh [--quick] [--out DIR] [--threads N]
+#   scripts/validate_matrix.sh [--quick] [--sizes 64,128] [--grids 32,64] [--out DIR] [--threads N]
 #   --quick: 64^2 and grid 32 only, the option variants on the built-in scene (minutes, not hours)
+#   --sizes / --grids: a part of the full matrix (every scene, every variant, these sizes only)
 # Exit 1 when any run fails.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -11,9 +12,13 @@ VCT=${VCT:-build/bin/vct}
 OUT=runs/matrix
 QUICK=0
 THREADS=2
+SIZES=""
+GRIDS=""
 while (($#)); do
   case $1 in
     --quick) QUICK=1 ;;
+    --sizes) SIZES=$2; shift ;;
+    --grids) GRIDS=$2; shift ;;
     --out) OUT=$2; shift ;;
     --threads) THREADS=$2; shift ;;
     *) echo "validate_matrix.sh: unknown argument $1" >&2; exit 2 ;;
@@ -22,6 +27,8 @@ while (($#)); do
 done
 scenes=("" scenes/*.gltf)
 if ((QUICK)); then sizes=(64); grids=(32); else sizes=(64 128 256); grids=(32 64 128); fi
+[ -n "$SIZES" ] && IFS=, read -r -a sizes <<<"$SIZES"
+[ -n "$GRIDS" ] && IFS=, read -r -a grids <<<"$GRIDS"
 # name | extra flags (every run also uses its size, grid and --spp 4)
 variants=(
   "default|"

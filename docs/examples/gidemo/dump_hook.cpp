@@ -221,7 +221,7 @@ void dump_normal(vct_dump::StageSetWriter& w) {
   glViewport(0, 0, kImageSide, kImageSide);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(GL_LEQUAL);  // gidemo's frame passes' test: at an exact depth tie the last drawn wins
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   const float zero[4] = {0, 0, 0, 0};
@@ -272,7 +272,7 @@ void dump_depth(vct_dump::StageSetWriter& w) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, kImageSide, kImageSide);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(GL_LEQUAL);  // gidemo's frame passes' test: at an exact depth tie the last drawn wins
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glClear(GL_DEPTH_BUFFER_BIT);
