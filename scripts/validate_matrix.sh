@@ -2,8 +2,12 @@
 # Runs `vct validate` over every scene in scenes/ (and the built-in one) across image sizes,
 # grids and pipeline options, and prints one line per run: verdict and first failing stage.
 # A FAIL on a correct build is a bug of a tolerance model or of the emulation (docs/compare.md).
-#   scripts/validate_matrix.sh [--quick] [--sizes 64,128] [--grids 32,64] [--out DIR] [--threads N]
+#   scripts/validate_matrix.sh [--quick] [--cross] [--sizes 64,128] [--grids 32,64] [--out DIR] [--threads N]
 #   --quick: 64^2 and grid 32 only, the option variants on the built-in scene (minutes, not hours)
+#   --cross: every combination of the four pipeline options (reduction, bounces, soft shadows,
+#            anisotropic mips: 16 variants) instead of one at a time. Thread count is not crossed:
+#            every stage's bytes are the same for any thread count (the Determinism tests), so a
+#            verdict cannot depend on it.
 #   --sizes / --grids: a part of the full matrix (every scene, every variant, these sizes only)
 # Exit 1 when any run fails.
 set -uo pipefail
@@ -11,12 +15,14 @@ cd "$(dirname "$0")/.."
 VCT=${VCT:-build/bin/vct}
 OUT=runs/matrix
 QUICK=0
+CROSS=0
 THREADS=2
 SIZES=""
 GRIDS=""
 while (($#)); do
   case $1 in
     --quick) QUICK=1 ;;
+    --cross) CROSS=1 ;;
     --sizes) SIZES=$2; shift ;;
     --grids) GRIDS=$2; shift ;;
     --out) OUT=$2; shift ;;
@@ -38,6 +44,18 @@ variants=(
   "aniso|--set anisotropic=true"
   "threads1|"
 )
+if ((CROSS)); then
+  variants=()
+  for red in fixed cas; do
+    for b in 1 3; do
+      for soft in false true; do
+        for an in false true; do
+          variants+=("${red}-b${b}$([ $soft = true ] && echo -soft)$([ $an = true ] && echo -aniso)|--set reduction=$red --set bounces=$b --set soft_shadows=$soft --set anisotropic=$an")
+        done
+      done
+    done
+  done
+fi
 fails=0
 run_one() {
   local scene=$1 size=$2 grid=$3 name=$4 flags=$5

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/parallel.h"
 #include "stages/direct.h"
 #include "stages/direct_slack.h"
+#include "stages/light_sample.h"
+#include "stages/shadow_map.h"
+#include "stages/snap_visibility.h"
 #include "stages/texture_slack.h"
 #include "stages/voxel_lod.h"
 
@@ -15,45 +19,102 @@ namespace {
 
 float largest_channel(const vec3& d) { return std::max(d.x, std::max(d.y, d.z)); }
 
-/// The fragment moved by (du, dv) voxels in its triangle's dominant-axis window: barycentrics are
-/// affine in window coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv) on
-/// the projected vertices (voxel units). Null when the projection is degenerate.
-bool shifted_fragment(const Scene& scene, int n, const VoxelFragment& f, double du, double dv,
-                      VoxelFragment& out) {
+/// A fragment's triangle in its dominant-axis window (voxel units) and how far the snap may move
+/// the fragment there. GL interpolates at the pixel centre c with the barycentrics l' of c in the
+/// *snapped* triangle, so the attributes are those of the original triangle's point
+/// c - sum l'_i d_i, d_i each vertex's snap (at most s per axis). Inside the triangle sum |l'_i| = 1;
+/// a fragment made by a covered MSAA sample with its centre outside is extrapolated, l' reaching
+/// far past [0, 1] on triangles smaller than a voxel (scanned_statue: l = (-1.38, 0.45, 1.93), GL's
+/// point 1.3 s from the reference's). With l' = l(c - e) and e that shift, per axis
+/// |e| <= s (sum |l_i| + G |e|), G = sum over i of |dl_i/du| + |dl_i/dv|, so
+/// |e| <= s sum |l_i| / (1 - s G) where s G < 1 (docs/compare.md, "Voxel shading slack").
+struct SnapWindow {
+  glm::dvec3 w0, e1, e2;     // world vertex 0 and edges
+  double a, b, c, d, det;    // the projected edges (P1 - P0, P2 - P0) along the window's u and v
+  double reach = kVoxelSnapShift;  // |e| per window axis, voxels
+  bool bounded = true;             // false where s G >= 1/2 (a sliver): no bound on the shift
+};
+
+bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& w) {
   const uvec3 t = scene.triangles[f.triangle];
-  const vec3 w[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
-  const int axis = dominant_axis(w[0], w[1], w[2]);
+  const vec3 p[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
+  const int axis = dominant_axis(p[0], p[1], p[2]);
   const int pu = axis == 0 ? 1 : 0, pv = axis == 2 ? 1 : 2;  // as voxelize_gpu.cpp's window axes
   glm::dvec3 v[3];
-  for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, w[i]);
-  const double a = v[1][pu] - v[0][pu], b = v[2][pu] - v[0][pu];
-  const double c = v[1][pv] - v[0][pv], d = v[2][pv] - v[0][pv];
-  const double det = a * d - b * c;
-  if (std::abs(det) < 1e-300) return false;
-  const double db1 = (d * du - b * dv) / det, db2 = (-c * du + a * dv) / det;
-  out = f;
+  for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, p[i]);
+  w.a = v[1][pu] - v[0][pu], w.b = v[2][pu] - v[0][pu];
+  w.c = v[1][pv] - v[0][pv], w.d = v[2][pv] - v[0][pv];
+  w.det = w.a * w.d - w.b * w.c;
+  if (std::abs(w.det) < 1e-300) return false;
+  w.w0 = p[0], w.e1 = glm::dvec3(p[1]) - w.w0, w.e2 = glm::dvec3(p[2]) - w.w0;
+  const double g = (std::abs(w.a) + std::abs(w.b) + std::abs(w.c) + std::abs(w.d) + std::abs(w.d - w.c) +
+                    std::abs(w.a - w.b)) / std::abs(w.det);
+  const double sum_l = std::abs(1.0 - double(f.b1) - double(f.b2)) + std::abs(double(f.b1)) + std::abs(double(f.b2));
+  const double sg = kVoxelSnapShift * g;
+  w.bounded = sg < 0.5;
+  w.reach = kVoxelSnapShift * sum_l / (1.0 - std::min(sg, 0.5));
+  return true;
+}
+
+/// The fragment moved by (du, dv) voxels in its window: barycentrics are affine in window
+/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv).
+VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+  const double db1 = (w.d * du - w.b * dv) / w.det, db2 = (-w.c * du + w.a * dv) / w.det;
+  VoxelFragment out = f;
   out.b1 = float(double(f.b1) + db1);
   out.b2 = float(double(f.b2) + db2);
   const SurfacePoint sp = interpolate_surface(scene, f.triangle, out.b1, out.b2);
   out.position = sp.position;
   out.normal = sp.normal;
-  return true;
+  return out;
 }
 
-/// Largest change over the position shifts, every lookup at the reference's own lambdas.
-float position_slack(const Scene& scene, const Voxelization& vox, const VoxelFragment& f,
-                     const SlotLods& lods, const vec3& value, const std::vector<ShadowMap>& maps,
-                     const VctSettings& settings, const BounceLight* bounce) {
+/// Largest change over the four corners of the snap's reach, every lookup at the reference's own
+/// lambdas.
+float position_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
+                     const vec3& value, const std::vector<ShadowMap>& maps, const VctSettings& settings,
+                     const BounceLight* bounce) {
   float slack = 0.0f;
-  for (int k = 1; k < kTexelShifts; ++k) {  // the four corners (+-s, +-s)
-    const double du = (k & 1) ? kVoxelSnapShift : -kVoxelSnapShift;
-    const double dv = (k & 2) ? kVoxelSnapShift : -kVoxelSnapShift;
-    VoxelFragment g;
-    if (!shifted_fragment(scene, vox.n, f, du, dv, g)) continue;
+  for (int k = 1; k < kTexelShifts; ++k) {  // the four corners (+-r, +-r)
+    const VoxelFragment g = shifted_fragment(scene, w, f, (k & 1) ? w.reach : -w.reach, (k & 2) ? w.reach : -w.reach);
     const SurfaceMaterial m =
         evaluate_material(scene, interpolate_surface(scene, g.triangle, g.b1, g.b2), lods);
     slack = std::max(slack,
                      largest_channel(glm::abs(light_leaving(scene, g, m, maps, settings, bounce) - value)));
+  }
+  return slack;
+}
+
+/// The parallelogram the snap may move the fragment over, in world space.
+SnapParallelogram snap_parallelogram(const SnapWindow& w, const VoxelFragment& f) {
+  const double r = w.reach;
+  const glm::dvec3 along_u = (w.d * r / w.det) * w.e1 + (-w.c * r / w.det) * w.e2;
+  const glm::dvec3 along_v = (-w.b * r / w.det) * w.e1 + (w.a * r / w.det) * w.e2;
+  return {f.position, vec3(along_u), vec3(along_v)};
+}
+
+/// The PCF taps a correct GL may read anywhere the snap may put the fragment: per light, its
+/// unshadowed light times how far the visibility moves over the whole parallelogram (and the
+/// lookup's own float ties), stages/snap_visibility.h. The corners alone miss a texel edge or
+/// depth tie crossed inside it: on atrium a point lamp's cube face is nearly edge-on to a wall,
+/// and GL's fragment, 0.05 texel from the reference's (well inside the snap), read one row of the
+/// 3x3 kernel lit that every corner reads shadowed (docs/compare.md, "Voxel shading slack").
+float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
+                        const std::vector<ShadowMap>& maps, const VctSettings& settings) {
+  if (maps.empty()) return 0.0f;
+  const SnapParallelogram q = snap_parallelogram(w, f);
+  const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
+  float slack = 0.0f;
+  for (size_t i = 0; i < std::min(maps.size(), scene.lights.size()); ++i) {
+    const Light& light = scene.lights[i];
+    const LightSample ls = sample_light(light, settings.light_model, f.position);
+    const float n_dot_l = glm::dot(m.shading_normal, ls.l);
+    if (n_dot_l <= 0.0f || ls.irradiance == vec3(0.0f)) continue;
+    const float open = largest_channel(m.albedo * ls.irradiance * n_dot_l * kInvPi);
+    const float vis = light_visibility(maps[i], light, f.position, settings);
+    // A sliver's shift has no bound: any visibility.
+    const VisibilityRange r = w.bounded ? snap_visibility_range(maps[i], light, q, settings) : VisibilityRange{0.0f, 1.0f};
+    slack += open * std::max(r.hi - vis, vis - r.lo);
   }
   return slack;
 }
@@ -121,6 +182,12 @@ float linear_compare_slack(const Scene& scene, const VoxelFragment& f, const Slo
 
 }  // namespace
 
+double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f) {
+  SnapWindow w;
+  if (!snap_window(scene, n, f, w) || !w.bounded) return std::numeric_limits<double>::infinity();
+  return w.reach;
+}
+
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
                                           const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,
@@ -131,7 +198,11 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
   parallel_for(int64_t(out.size()), [&](int64_t i) {
     const VoxelFragment& f = vox.fragments[size_t(i)];
     const SurfaceLods& l = lods[f.triangle];
-    float slack = position_slack(scene, vox, f, l.exact, values[size_t(i)], maps, settings, bounce);
+    SnapWindow w;
+    float slack = 0.0f;
+    if (snap_window(scene, vox.n, f, w))
+      slack = position_slack(scene, w, f, l.exact, values[size_t(i)], maps, settings, bounce) +
+              shadow_snap_slack(scene, w, f, l.exact, maps, settings);
     const Material& m = scene.materials[scene.triangle_material[f.triangle]];
     if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
     if (m.normal_texture.present())

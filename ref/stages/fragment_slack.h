@@ -3,8 +3,10 @@
 // reference's own fragment (docs/compare.md, "Voxel shading slack"):
 //   - position: vertices snap to a 2^-8 pixel grid of the voxel raster (GL_SUBPIXEL_BITS 8), so
 //     the attributes at a pixel centre are those of a point up to 2^-8 voxel away on each in-plane
-//     axis of the dominant-axis projection. That moves the fragment along its triangle: a PCF tap
-//     near a shadow-map texel edge or a depth tie flips, the falloff and textures shift;
+//     axis of the dominant-axis projection — more where the centre lies outside the triangle and
+//     the attributes are extrapolated (voxel_snap_reach). That moves the fragment along its
+//     triangle: the falloff and textures shift, and a PCF tap flips anywhere in the parallelogram
+//     it may reach (stages/snap_visibility.h), not only at its corners;
 //   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
 //   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h);
 //   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off.
@@ -24,8 +26,15 @@ namespace vct {
 /// one sub-pixel step of the snapping grid (as the raster stages' 2^-8 pixel, compare/tolerance.h).
 constexpr double kVoxelSnapShift = 1.0 / 256.0;
 
+/// How far, in voxels per in-plane axis, the snap may move the point whose attributes GL
+/// interpolates for fragment f: kVoxelSnapShift x sum |l_i| / (1 - kVoxelSnapShift G), l the
+/// fragment's barycentrics at its pixel centre (extrapolated when the centre is outside) and G the
+/// sum of their window-space gradients' magnitudes (docs/compare.md, "Voxel shading slack").
+/// +infinity for a sliver (kVoxelSnapShift G >= 1/2) or a triangle seen edge-on in its window.
+double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f);
+
 /// Per fragment, the largest |change| (over RGB) of its light against `values`
-/// (fragment_radiance): the largest over the four (+-s, +-s) position shifts at the reference's
+/// (fragment_radiance): the largest over the four corners of the snap's reach at the reference's
 /// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel
 /// shift at the fragment itself, plus, with a normal map, the largest over the normal texel's
 /// 8-bit precision (the freedoms are independent; the sum bounds their combination by the

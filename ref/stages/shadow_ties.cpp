@@ -74,13 +74,6 @@ VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, cons
   return {float(std::max(0.0, lo / n - w)), float(std::min(1.0, hi / n + w))};
 }
 
-// Texel-unit margin of a coordinate (ndc * 0.5 + 0.5) * size whose NDC may be off by e_ndc: the
-// add and the multiply round once each on each side (<= u and u * size).
-double texel_margin(double e_ndc, int size) { return 0.5 * double(size) * e_ndc + 4.0 * kU * double(size); }
-
-// Window depth ndc * 0.5 + 0.5: the add rounds once on each side (<= u, the depth is <= 1).
-double depth_margin(double e_ndc) { return 0.5 * e_ndc + 2.0 * kU; }
-
 VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings& s) {
   const vec4 c = map.view_proj * vec4(p, 1.0f);
   if (c.w <= 0.0f) return {};
@@ -145,6 +138,10 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
 }
 
 }  // namespace
+
+double texel_margin(double e_ndc, int size) { return 0.5 * double(size) * e_ndc + 4.0 * kU * double(size); }
+
+double depth_margin(double e_ndc) { return 0.5 * e_ndc + 2.0 * kU; }
 
 double ndc_error(const mat4& m, const vec3& p, int row) {
   const vec4 q(p, 1.0f);

@@ -31,4 +31,12 @@ VisibilityRange light_visibility_range(const ShadowMap& map, const Light& light,
 /// |d ndc| <= 2 g4 (S_row + |ndc| S_w) / |w| + 3 u |ndc|.
 double ndc_error(const mat4& m, const vec3& p, int row);
 
+/// Texel-unit margin of a coordinate (ndc * 0.5 + 0.5) * size whose NDC may be off by e_ndc: the
+/// add and the multiply round once each on each side (<= u and u * size).
+double texel_margin(double e_ndc, int size);
+
+/// Margin of a window depth ndc * 0.5 + 0.5 whose NDC may be off by e_ndc: the add rounds once on
+/// each side (<= u, the depth is <= 1).
+double depth_margin(double e_ndc);
+
 }  // namespace vct

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
@@ -177,6 +178,58 @@ TEST(FragmentSlack, ExactFragmentsAreThoseNoFreedomReaches) {
   s.materials[m].emissive_texture.texture = -1;
   const Volume v = voxel_exactness(s, vox, settings, false);
   for (const VoxelFragment& g : vox.fragments) EXPECT_EQ(*v.voxel(g.voxel.x, g.voxel.y, g.voxel.z), 1.0f);
+}
+
+// A triangle a quarter voxel wide, its fragment's pixel centre far outside it (an MSAA sample
+// covered, the attributes extrapolated): barycentrics (-3, 2, 2), sum |l| = 7, G = 16 per voxel,
+// so the reach is 2^-8 x 7 / (1 - 16 / 256) = 7/240 voxel. Every snap of the three vertices by at
+// most 2^-8 per axis (the 64 extreme ones and 4000 random ones) moves the point GL interpolates
+// within it (the extreme ones reach it exactly), some 6.5x further than the snap itself.
+TEST(FragmentSlack, SnapReachCoversExtrapolatedAttributes) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.8f));
+  test::add_triangle(s, {4.0f, 4.0f, 3.5f}, {4.25f, 4.0f, 3.5f}, {4.0f, 4.25f, 3.5f}, m);
+  s.volume.origin = vec3(0.0f);
+  s.volume.size = 16.0f;  // one voxel = one unit at n = 16
+  VoxelFragment f;
+  f.voxel = ivec3(4, 4, 3);
+  f.position = vec3(4.5f, 4.5f, 3.5f);
+  f.b1 = 2.0f;
+  f.b2 = 2.0f;
+  const double reach = voxel_snap_reach(s, 16, f);
+  EXPECT_NEAR(reach, 7.0 / 240.0, 1e-12);
+  const double step = 1.0 / 256.0;
+  const glm::dvec2 p[3] = {{4.0, 4.0}, {4.25, 4.0}, {4.0, 4.25}}, c(4.5, 4.5);
+  // The point of the original triangle with c's barycentrics in the snapped one.
+  const auto moved = [&](const double (&d)[6]) {
+    const glm::dvec2 q0 = p[0] + glm::dvec2(d[0], d[1]), q1 = p[1] + glm::dvec2(d[2], d[3]),
+                     q2 = p[2] + glm::dvec2(d[4], d[5]);
+    const glm::dvec2 e1 = q1 - q0, e2 = q2 - q0, r = c - q0;
+    const double det = e1.x * e2.y - e2.x * e1.y;
+    const double l1 = (r.x * e2.y - e2.x * r.y) / det, l2 = (e1.x * r.y - r.x * e1.y) / det;
+    return (1.0 - l1 - l2) * p[0] + l1 * p[1] + l2 * p[2] - c;
+  };
+  double largest = 0.0;
+  for (int k = 0; k < 64; ++k) {
+    double d[6];
+    for (int i = 0; i < 6; ++i) d[i] = (k >> i & 1) ? step : -step;
+    const glm::dvec2 e = moved(d);
+    largest = std::max({largest, std::abs(e.x), std::abs(e.y)});
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-step, step);
+  for (int k = 0; k < 4000; ++k) {
+    double d[6];
+    for (double& x : d) x = u(rng);
+    const glm::dvec2 e = moved(d);
+    largest = std::max({largest, std::abs(e.x), std::abs(e.y)});
+  }
+  EXPECT_LE(largest, reach * (1.0 + 1e-9));  // attained: the bound is tight here
+  EXPECT_GT(largest, 6.5 * step);  // the 2^-8 of a centre inside the triangle would miss it
+  // Inside the triangle the reach is the snap itself, up to G's term.
+  f.position = vec3(4.05f, 4.05f, 3.5f);
+  f.b1 = f.b2 = 0.2f;
+  EXPECT_NEAR(voxel_snap_reach(s, 16, f), step / (1.0 - 16.0 * step), 1e-9);
 }
 
 // The voxel's slack is the mean of its fragments' slacks.

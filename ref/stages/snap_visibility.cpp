@@ -1,0 +1,286 @@
+#include "stages/snap_visibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "stages/cube_map.h"
+#include "stages/shadow_map.h"
+
+namespace vct {
+
+namespace {
+
+constexpr double kU = 1.0 / 16777216.0;  // 2^-24, one float rounding
+
+using Point = glm::dvec2;  // (a, b) in [-1, 1]^2
+using Polygon = std::vector<Point>;
+
+/// c + a x + b y over the parallelogram's parameters.
+struct Linear {
+  double c = 0.0, a = 0.0, b = 0.0;
+  double at(const Point& p) const { return c + a * p.x + b * p.y; }
+  Linear operator-(const Linear& o) const { return {c - o.c, a - o.a, b - o.b}; }
+  Linear operator+(const Linear& o) const { return {c + o.c, a + o.a, b + o.b}; }
+  Linear operator*(double k) const { return {c * k, a * k, b * k}; }
+};
+
+const Polygon& unit_square() {
+  static const Polygon square = {{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}};
+  return square;
+}
+
+/// The part of a convex polygon where g >= 0 (one Sutherland–Hodgman step).
+Polygon clip(const Polygon& in, const Linear& g) {
+  Polygon out;
+  for (size_t i = 0; i < in.size(); ++i) {
+    const Point& p = in[i];
+    const Point& n = in[(i + 1) % in.size()];
+    const double gp = g.at(p), gn = g.at(n);
+    if (gp >= 0.0) out.push_back(p);
+    if ((gp >= 0.0) != (gn >= 0.0)) out.push_back(p + (n - p) * (gp / (gp - gn)));
+  }
+  return out;
+}
+
+/// Clip-space row `row` of world -> clip matrix m at the parallelogram's points, exactly.
+Linear clip_row(const mat4& m, const SnapParallelogram& q, int row) {
+  Linear l{double(m[3][row]), 0.0, 0.0};
+  for (int j = 0; j < 3; ++j) {
+    const double k = double(m[j][row]);
+    l.c += k * double(q.centre[j]);
+    l.a += k * double(q.du[j]);
+    l.b += k * double(q.dv[j]);
+  }
+  return l;
+}
+
+std::vector<vec3> points_of(const SnapParallelogram& q) {
+  std::vector<vec3> out = {q.centre};
+  for (const Point& c : unit_square()) out.push_back(q.centre + float(c.x) * q.du + float(c.y) * q.dv);
+  return out;
+}
+
+/// The largest NDC rounding margin (shadow_ties.h) of row `row` over the centre and corners.
+double ndc_margin(const mat4& m, const SnapParallelogram& q, int row) {
+  double e = 0.0;
+  for (const vec3& p : points_of(q)) e = std::max(e, ndc_error(m, p, row));
+  return e;
+}
+
+/// A texel coordinate (num / den + 1) / 2 * size with den > 0 on the region (a texel column of a
+/// 2D map: clip x over w; of a cube face: sc over ma), and its float margin in texels.
+struct Coordinate {
+  Linear num, den;
+  int size;
+  double margin;
+  double at(const Point& p) const { return (num.at(p) / den.at(p) + 1.0) * 0.5 * double(size); }
+  /// g >= 0 exactly where the coordinate is >= x (den > 0).
+  Linear at_least(double x) const { return num - den * (2.0 * x / double(size) - 1.0); }
+};
+
+/// What one texel's compare sees: the lookup point's clip z and w on the map that texel lies on,
+/// its stored depth + bias (rounded in float, as both sides add them), and the depth's margin.
+struct TexelCompare {
+  Linear z, w;
+  double stored_plus_bias;
+  double margin;
+};
+
+struct TapState {
+  bool lit_everywhere = true, lit_somewhere = false;
+};
+
+/// One compare over a region: the window depth z / w * 0.5 + 0.5, a ratio of affine functions,
+/// takes its extremes over the convex region at its vertices (it is monotone along every line
+/// where w > 0). A point outside [0, 1] is lit, as the lookup makes it.
+void compare_over(const Polygon& region, const TexelCompare& t, TapState& s) {
+  double lo = 1e300, hi = -1e300;
+  for (const Point& p : region) {
+    const double w = t.w.at(p);
+    if (!(w > 0.0)) {  // behind the light's plane somewhere: lit there, unknown elsewhere
+      s.lit_somewhere = true;
+      s.lit_everywhere = false;
+      return;
+    }
+    const double z = t.z.at(p) / w * 0.5 + 0.5;
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  lo -= t.margin;
+  hi += t.margin;
+  const bool may_be_outside = lo < 0.0 || hi > 1.0;
+  s.lit_somewhere = s.lit_somewhere || may_be_outside || lo <= t.stored_plus_bias;
+  s.lit_everywhere = s.lit_everywhere && hi <= t.stored_plus_bias;
+}
+
+/// One tap's [lo, hi] over a region where it reads fixed texels: nearest, one compare; linear, GL
+/// 4.5 section 8.23.1's bilinear blend of the four compares around the coordinate - 1/2, whose
+/// weights are bilinear in the fractions (ax, ay), so over any box of fractions they take their
+/// extremes at its corners (the box of the region's fractions contains the region's).
+VisibilityRange tap_over(const Polygon& cell, const Coordinate& u, const Coordinate& v, double tu, double tv,
+                         int i, int j, ShadowCompare compare, const std::function<TexelCompare(int, int)>& texel) {
+  if (compare == ShadowCompare::Nearest) {
+    TapState st;
+    compare_over(cell, texel(i, j), st);
+    return {st.lit_everywhere ? 1.0f : 0.0f, st.lit_somewhere ? 1.0f : 0.0f};
+  }
+  TapState st[4];
+  for (int k = 0; k < 4; ++k) compare_over(cell, texel(i + (k & 1), j + (k >> 1)), st[k]);
+  double ax_lo = 1.0, ax_hi = 0.0, ay_lo = 1.0, ay_hi = 0.0;
+  for (const Point& p : cell) {
+    const double ax = std::clamp(u.at(p) + tu - double(i), 0.0, 1.0);
+    const double ay = std::clamp(v.at(p) + tv - double(j), 0.0, 1.0);
+    ax_lo = std::min(ax_lo, ax), ax_hi = std::max(ax_hi, ax);
+    ay_lo = std::min(ay_lo, ay), ay_hi = std::max(ay_hi, ay);
+  }
+  VisibilityRange r{1.0f, 0.0f};
+  for (const double ax : {ax_lo, ax_hi})
+    for (const double ay : {ay_lo, ay_hi}) {
+      const double w[4] = {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay};
+      double lo = 0.0, hi = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        lo += st[k].lit_everywhere ? w[k] : 0.0;
+        hi += st[k].lit_somewhere ? w[k] : 0.0;
+      }
+      r.lo = std::min(r.lo, float(lo));
+      r.hi = std::max(r.hi, float(hi));
+    }
+  return r;
+}
+
+/// [lo, hi] of the PCF mean over `region`: each tap at (u, v) + its offset, over every cell of
+/// texels its coordinate may fall in on part of the region (edges widened by the margins).
+VisibilityRange pcf_over(const Polygon& region, const Coordinate& u, const Coordinate& v, const VctSettings& s,
+                         const std::function<TexelCompare(int, int)>& texel) {
+  double u_lo = 1e300, u_hi = -1e300, v_lo = 1e300, v_hi = -1e300;
+  for (const Point& p : region) {
+    u_lo = std::min(u_lo, u.at(p)), u_hi = std::max(u_hi, u.at(p));
+    v_lo = std::min(v_lo, v.at(p)), v_hi = std::max(v_hi, v.at(p));
+  }
+  const std::vector<vec2> taps = tap_positions(0.0f, 0.0f, s);  // the offsets
+  // Adding an offset rounds once more on each side (as shadow_ties.cpp's pcf_range).
+  const double e_tap = 4.0 * kU * (std::max(std::abs(u_hi), std::abs(v_hi)) + 16.0);
+  const double eu = u.margin + e_tap, ev = v.margin + e_tap;
+  // Nearest reads the texel floor(t); linear the four from floor(t - 1/2).
+  const double half = s.shadow_compare == ShadowCompare::Nearest ? 0.0 : 0.5;
+  double lo = 0.0, hi = 0.0;
+  for (const vec2& o : taps) {
+    const double tu = double(o.x) - half, tv = double(o.y) - half;
+    VisibilityRange tap{1.0f, 0.0f};
+    for (int i = int(std::floor(u_lo + tu - eu)); i <= int(std::floor(u_hi + tu + eu)); ++i)
+      for (int j = int(std::floor(v_lo + tv - ev)); j <= int(std::floor(v_hi + tv + ev)); ++j) {
+        Polygon cell = clip(region, u.at_least(double(i) - tu - eu));
+        cell = clip(cell, u.at_least(double(i + 1) - tu + eu) * -1.0);
+        cell = clip(cell, v.at_least(double(j) - tv - ev));
+        cell = clip(cell, v.at_least(double(j + 1) - tv + ev) * -1.0);
+        if (cell.empty()) continue;
+        const VisibilityRange r = tap_over(cell, u, v, tu, tv, i, j, s.shadow_compare, texel);
+        tap.lo = std::min(tap.lo, r.lo);
+        tap.hi = std::max(tap.hi, r.hi);
+      }
+    lo += double(tap.lo);
+    hi += double(tap.hi);
+  }
+  const double n = double(std::max<size_t>(taps.size(), 1));
+  return {float(lo / n), float(hi / n)};
+}
+
+double stored_plus_bias(const Image& depth, int x, int y, float bias) {
+  return double(depth.at(x, depth.height - 1 - y, 0) + bias);
+}
+
+VisibilityRange range_2d(const ShadowMap& map, const SnapParallelogram& q, const VctSettings& s) {
+  const mat4& m = map.view_proj;
+  const Linear x = clip_row(m, q, 0), y = clip_row(m, q, 1), z = clip_row(m, q, 2), w = clip_row(m, q, 3);
+  for (const Point& p : unit_square())
+    if (!(w.at(p) > 0.0)) return {0.0f, 1.0f};  // the light's plane crosses it: lit on one side
+  const double e[3] = {ndc_margin(m, q, 0), ndc_margin(m, q, 1), ndc_margin(m, q, 2)};
+  // Outside the frustum the lookup is lit: inside everywhere, outside everywhere, or either.
+  bool inside_everywhere = true, outside_everywhere = false;
+  const Linear* rows[3] = {&x, &y, &z};
+  for (int k = 0; k < 3; ++k) {
+    double lo = 1e300, hi = -1e300;
+    for (const Point& p : unit_square()) {
+      const double ndc = rows[k]->at(p) / w.at(p);
+      lo = std::min(lo, ndc), hi = std::max(hi, ndc);
+    }
+    inside_everywhere = inside_everywhere && lo - e[k] >= -1.0 && hi + e[k] <= 1.0;
+    outside_everywhere = outside_everywhere || lo - e[k] > 1.0 || hi + e[k] < -1.0;
+  }
+  if (outside_everywhere) return {};
+  const Image& depth = map.depth;
+  const Coordinate u{x, w, depth.width, texel_margin(e[0], depth.width)};
+  const Coordinate v{y, w, depth.height, texel_margin(e[1], depth.height)};
+  const double ez = depth_margin(e[2]);
+  VisibilityRange r = pcf_over(unit_square(), u, v, s, [&](int i, int j) {
+    return TexelCompare{z, w,
+                        stored_plus_bias(depth, std::clamp(i, 0, depth.width - 1),
+                                         std::clamp(j, 0, depth.height - 1), s.shadow_bias),
+                        ez};
+  });
+  if (!inside_everywhere) r.hi = 1.0f;
+  return r;
+}
+
+/// r = point - light, per world axis.
+Linear axis_of(const SnapParallelogram& q, const vec3& light, int k) {
+  return {double(q.centre[k]) - double(light[k]), double(q.du[k]), double(q.dv[k])};
+}
+
+Linear dot_axis(const Linear r[3], const vec3& axis) {
+  Linear out;
+  for (int k = 0; k < 3; ++k) out = out + r[k] * double(axis[k]);
+  return out;
+}
+
+VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapParallelogram& q,
+                           const VctSettings& s) {
+  const Linear r[3] = {axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)};
+  double largest = 0.0;
+  for (const Point& p : unit_square())
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(r[k].at(p)));
+  const double er = 2.0 * kU * largest;  // the lookup's p - light rounds once on each side
+  const int size = map.cube[0].width;
+  VisibilityRange out{1.0f, 0.0f};
+  for (int home = 0; home < 6; ++home) {
+    const CubeFaceAxes& axes = cube_face_axes(home);
+    const Linear ma = dot_axis(r, axes.major_axis);
+    // Where this face may be selected: ma >= |r_k| of the other axes, within the rounding.
+    Polygon region = clip(unit_square(), ma);
+    for (int k = 0; k < 3 && !region.empty(); ++k) {
+      if (std::abs(axes.major_axis[k]) > 0.0f) continue;
+      region = clip(region, ma - r[k] + Linear{2.0 * er, 0.0, 0.0});
+      region = clip(region, ma + r[k] + Linear{2.0 * er, 0.0, 0.0});
+    }
+    if (region.empty()) continue;
+    double ma_min = 1e300;
+    for (const Point& p : region) ma_min = std::min(ma_min, ma.at(p));
+    if (!(ma_min > er)) return {0.0f, 1.0f};  // a face seen edge-on at the light: no bound here
+    // s = (sc / |ma| + 1) / 2 with sc, ma each off by er (shadow_ties.cpp's range_cube).
+    const double e_q = 2.0 * er / (ma_min - er) + 3.0 * kU;
+    const Coordinate u{dot_axis(r, axes.sc_axis), ma, size, texel_margin(e_q, size)};
+    const Coordinate v{dot_axis(r, axes.tc_axis), ma, size, texel_margin(e_q, size)};
+    const VisibilityRange one = pcf_over(region, u, v, s, [&](int i, int j) {
+      const CubeTexel t = cube_texel(home, i, j, size);
+      const mat4& m = map.cube_view_proj[size_t(t.face)];
+      return TexelCompare{clip_row(m, q, 2), clip_row(m, q, 3),
+                          stored_plus_bias(map.cube[size_t(t.face)], t.x, t.y, s.shadow_bias),
+                          depth_margin(ndc_margin(m, q, 2))};
+    });
+    out.lo = std::min(out.lo, one.lo);
+    out.hi = std::max(out.hi, one.hi);
+  }
+  return out.lo > out.hi ? VisibilityRange{} : out;
+}
+
+}  // namespace
+
+VisibilityRange snap_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
+                                      const VctSettings& settings) {
+  if (light.is_point()) return map.is_cube() ? range_cube(map, light.position, q, settings) : VisibilityRange{};
+  return map.depth.empty() ? VisibilityRange{} : range_2d(map, q, settings);
+}
+
+}  // namespace vct
