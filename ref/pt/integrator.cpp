@@ -136,7 +136,12 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler
   const EmissiveTriangles::Sample ls = d.reuse_x ? lights_.sample_reusing(d.x, d.u.y) : lights_.sample(d.u_select, d.u);
   // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
   if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return;
-  const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
+  // An untextured emitter's radiance is its material's constant: only the point's position and
+  // geometric normal are needed (docs/performance.md "Shading per ray").
+  const Material& lm = scene_.materials[scene_.triangle_material[ls.triangle]];
+  const bool textured = lm.emissive_texture.present();
+  const SurfacePoint lp = textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2)
+                                   : interpolate_position(scene_, ls.triangle, ls.b1, ls.b2);
   const vec3 to_light = lp.position - v.pos;
   const float dist2 = glm::dot(to_light, to_light);
   const float dist = std::sqrt(dist2);
@@ -146,7 +151,12 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler
   if (ls.triangle == v.triangle || glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
   const BsdfValue f = eval_bsdf(v.bp, l);
   if (f.total() == vec3(0.0f)) return;
-  const vec3 le = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
+  SurfaceMaterial lmat;
+  if (textured)
+    lmat = evaluate_material(scene_, lp);
+  else
+    lmat.emission = lm.emission();  // evaluate_material's value without an emissive texture
+  const vec3 le = emitted_radiance(scene_, lp, lmat, -l);
   if (le == vec3(0.0f)) return;
   ++counts.shadow;
   if (rt_.occluded(v.p, lp.position - v.p, leave_tnear(lp.position - v.p), 1.0f - eps_ / dist)) return;
@@ -236,7 +246,7 @@ PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sa
     // completes paths of max_depth bounces, the MIS partner of the emitter NEE above).
     float u_lobe;
     vec2 u_dir;
-    rng.bsdf(v.depth, u_lobe, u_dir);
+    rng.bsdf(v.depth, v.bp.specular_probability > 0.0f && v.bp.specular_probability < 1.0f, u_lobe, u_dir);
     const BsdfSample bs = sample_bsdf(v.bp, u_lobe, u_dir);
     if (!bs.valid) break;
     const BsdfValue f = eval_bsdf(v.bp, bs.l);

@@ -18,15 +18,17 @@ PathSampler::PathSampler(PtSampler kind, uint64_t pixel_index, uint32_t sample, 
     : kind_(kind),
       rng_(sample_rng(pixel_index, sample, seed)),
       replicate_key_(kind == PtSampler::Sobol ? replicate_key(pixel_index, sample, seed) : 0),
-      index_(sample >> 1u) {}
+      index_reversed_(reverse_bits(sample >> 1u)) {}
 
 void PathSampler::pair_bits(int depth, int pair, uint32_t& x, uint32_t& y) const {
   const uint64_t h = mix64(replicate_key_ ^ (uint64_t(depth * kPairsPerVertex + pair) * 0x9E3779B97F4A7C15ull));
-  const uint32_t k = shuffle_index(index_, h);
-  // Dimension 0 is k reversed, and nested_scramble reverses again: scramble k directly.
+  // The shuffled index k = shuffle_index(index_, h), kept reversed (r = reverse(k)): dimension 0
+  // is r itself and dimension 1 is looked up from r, so each coordinate is scrambled with one
+  // reversal back to a fraction (pt/sobol_scramble.h; three reversals per pair instead of five).
+  const uint32_t r = nested_scramble_reversed(index_reversed_, uint32_t(h), uint32_t(h >> 32u));
   const uint64_t sx = mix64(h ^ 0x2545F4914F6CDD1Dull), sy = mix64(h ^ 0x8C0B2C4B9A5D3E71ull);
-  x = reverse_bits(nested_scramble_reversed(k, uint32_t(sx), uint32_t(sx >> 32u)));
-  y = nested_scramble(sobol_dim1(k), sy);
+  x = reverse_bits(nested_scramble_reversed(reverse_bits(r), uint32_t(sx), uint32_t(sx >> 32u)));
+  y = reverse_bits(nested_scramble_reversed(sobol_dim1_reversed(r), uint32_t(sy), uint32_t(sy >> 32u)));
 }
 
 vec2 PathSampler::pair(int depth, int pair) const {
@@ -55,13 +57,14 @@ float PathSampler::particle(int depth) {
   return lobe_particle(depth).y;
 }
 
-void PathSampler::bsdf(int depth, float& u_lobe, vec2& u) {
+void PathSampler::bsdf(int depth, bool lobe_matters, float& u_lobe, vec2& u) {
   if (!qmc(depth)) {
     u_lobe = rng_.next_float();
     u = rng_.next_2d();
     return;
   }
-  u_lobe = lobe_particle(depth).x;
+  // A one-lobe BSDF (probability 0 or 1) ignores u_lobe: its pair is not computed then.
+  u_lobe = lobe_matters ? lobe_particle(depth).x : 0.0f;
   u = pair(depth, kPairBsdf);
 }
 

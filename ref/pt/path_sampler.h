@@ -44,8 +44,9 @@ class PathSampler {
   };
   EmitterDraw emitter(int depth);
   float particle(int depth);
-  /// u_lobe picks the BSDF lobe, u the direction.
-  void bsdf(int depth, float& u_lobe, vec2& u);
+  /// u_lobe picks the BSDF lobe, u the direction. lobe_matters = false (a BSDF that samples one
+  /// lobe only) lets the sobol sampler skip the lobe's pair; the independent one always draws it.
+  void bsdf(int depth, bool lobe_matters, float& u_lobe, vec2& u);
   float roulette() { return rng_.next_float(); }
 
  private:
@@ -58,7 +59,7 @@ class PathSampler {
   PtSampler kind_;
   Pcg32 rng_;
   uint64_t replicate_key_ = 0;  // hash of (seed, pixel, sample & 1)
-  uint32_t index_ = 0;          // sample >> 1
+  uint32_t index_reversed_ = 0;  // sample >> 1, bits reversed
   // The lobe and particle decisions share one pair per vertex: computed once when first drawn.
   int cached_depth_ = 0;
   vec2 cached_pair_{0.0f};

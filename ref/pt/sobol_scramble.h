@@ -26,7 +26,7 @@
 
 namespace vct::pt {
 
-inline uint32_t reverse_bits(uint32_t x) {
+constexpr uint32_t reverse_bits(uint32_t x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
@@ -53,6 +53,26 @@ struct SobolDim1Table {
   }
 };
 inline constexpr SobolDim1Table kSobolDim1{};
+
+/// The same map in reversed digit order: table[b][v] = reverse(dimension 1 of the index whose
+/// reversed bits 8b..8b+7 are v), so a sampler that already holds the reversed index (the index
+/// shuffle's output) needs no reversal before the lookup.
+struct SobolDim1ReversedTable {
+  std::array<std::array<uint32_t, 256>, 4> t{};
+  constexpr SobolDim1ReversedTable() {
+    uint32_t dir[32] = {};
+    dir[0] = 0x80000000u;
+    for (int k = 1; k < 32; ++k) dir[k] = dir[k - 1] ^ (dir[k - 1] >> 1);
+    for (int b = 0; b < 4; ++b)
+      for (uint32_t v = 0; v < 256; ++v) {
+        uint32_t x = 0;
+        for (int k = 0; k < 8; ++k)
+          if (v & (1u << k)) x ^= reverse_bits(dir[31 - (8 * b + k)]);
+        t[size_t(b)][v] = x;
+      }
+  }
+};
+inline constexpr SobolDim1ReversedTable kSobolDim1Reversed{};
 }  // namespace detail
 
 /// Sobol point `index`, dimension 0 (van der Corput), as a 32-bit binary fraction.
@@ -62,6 +82,12 @@ inline uint32_t sobol_dim0(uint32_t index) { return reverse_bits(index); }
 inline uint32_t sobol_dim1(uint32_t index) {
   const auto& t = detail::kSobolDim1.t;
   return t[0][index & 0xFFu] ^ t[1][(index >> 8) & 0xFFu] ^ t[2][(index >> 16) & 0xFFu] ^ t[3][index >> 24];
+}
+
+/// reverse_bits(sobol_dim1(reverse_bits(r))).
+inline uint32_t sobol_dim1_reversed(uint32_t r) {
+  const auto& t = detail::kSobolDim1Reversed.t;
+  return t[0][r & 0xFFu] ^ t[1][(r >> 8) & 0xFFu] ^ t[2][(r >> 16) & 0xFFu] ^ t[3][r >> 24];
 }
 
 /// A nested bijection of 32 bits in reversed digit order (bit 0 = the fraction's 1/2 digit; see

@@ -52,6 +52,14 @@ TEST(SobolScramble, FirstTwoDimensionsFormNets) {
   }
 }
 
+TEST(SobolScramble, ReversedTableIsDimensionOneReversed) {
+  Pcg32 r(1u, 2u);
+  for (int i = 0; i < 10000; ++i) {
+    const uint32_t k = r.next_u32() >> (i % 32);
+    EXPECT_EQ(sobol_dim1_reversed(reverse_bits(k)), reverse_bits(sobol_dim1(k))) << k;
+  }
+}
+
 TEST(SobolScramble, ScrambledAndShuffledPrefixesStayNets) {
   // What stratifies a pixel's samples: the first 2^m points of a replicate, for any m, after the
   // index shuffle and the coordinate scrambles, are still one point per dyadic box.
@@ -96,8 +104,8 @@ TEST(PathSampler, OneSampleIsUniformOverPixelsJointlyAcrossDecisions) {
       const PathSampler::EmitterDraw e = s.emitter(1);
       float lobe1, lobe2;
       vec2 d1, d2;
-      s.bsdf(1, lobe1, d1);
-      s.bsdf(2, lobe2, d2);
+      s.bsdf(1, true, lobe1, d1);
+      s.bsdf(2, true, lobe2, d2);
       const auto cell = [](double u) { return std::min(int(u * kCells), kCells - 1); };
       ++emitter_vs_bsdf[size_t(cell(e.x) * kCells + cell(d1.y))];
       ++bsdf1_vs_bsdf2[size_t(cell(d1.x) * kCells + cell(d2.x))];
@@ -125,7 +133,7 @@ TEST(PathSampler, IndependentSamplerIsThePcgStreamInPathOrder) {
   EXPECT_EQ(s.particle(1), r.next_float());
   float lobe;
   vec2 u;
-  s.bsdf(1, lobe, u);
+  s.bsdf(1, true, lobe, u);
   EXPECT_EQ(lobe, r.next_float());
   EXPECT_EQ(u.x, r.next_float());
   EXPECT_EQ(u.y, r.next_float());
@@ -142,7 +150,7 @@ TEST(PathSampler, ReplicatesAreStratifiedPerPixel) {
       PathSampler s(PtSampler::Sobol, 1234u, 2 * k + half, 0u);
       float lobe;
       vec2 u;
-      s.bsdf(1, lobe, u);
+      s.bsdf(1, true, lobe, u);
       ++count[size_t(u.x * (1 << m))];
     }
     for (int c : count) EXPECT_EQ(c, 1) << "replicate " << half;
