@@ -195,8 +195,8 @@ def render_mitsuba(g, work, size, spp, depth, seed, centres=False, sampler="inde
 
 
 def render_ours(vct, scene_path, work, size, spp, depth, seed, threads, sampler=None):
-    out = os.path.join(work, "ours_%d" % seed)
-    cfg = os.path.join(work, "seed_%d.json" % seed)
+    out = os.path.join(work, "ours_%s_%d" % (sampler, seed))
+    cfg = os.path.join(work, "ours_%s_%d.json" % (sampler, seed))
     with open(cfg, "w") as f:
         json.dump({"pt": {"seed": seed, **({"sampler": sampler} if sampler else {})}}, f)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -273,6 +273,12 @@ def main(argv):
         ok = bool(np.all(np.abs(z) <= a.k)) and bool(np.all(om > 0))
         print("PASS" if ok else "FAIL")
         return 0 if ok else 1
+    if len(ours_samplers) > 1:
+        # Our samplers estimate the same pixel-centre image: their means must agree (unbiasedness).
+        bm, bse, _ = pair_stats(*[r[0] for r in ours_by[ours_samplers[1]]])
+        print("  ours '%s' mean RGB %s +- %s; z against '%s' %s"
+              % (ours_samplers[1], np.round(bm, 5), np.round(bse, 5), ours_samplers[0],
+                 np.round((om - bm) / np.sqrt(ose ** 2 + bse ** 2), 2)))
     for ours_name in ours_samplers:
         ours = ours_by[ours_name]
         _, _, ovar = pair_stats(ours[0][0], ours[1][0])

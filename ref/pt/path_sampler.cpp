@@ -8,6 +8,10 @@ namespace {
 // The decisions of one vertex that the scrambled sequence serves, one 2D pair each.
 constexpr int kPairEmitter = 0, kPairBsdf = 1, kPairLobeParticle = 2, kPairsPerVertex = 3;
 
+// Vertices 1..kQmcDepth draw their decisions from the scrambled sequence; deeper vertices and
+// Russian roulette use the PCG32 stream.
+constexpr int kQmcDepth = 3;
+
 uint64_t replicate_key(uint64_t pixel_index, uint32_t sample, uint32_t seed) {
   // A tag apart from sample_rng's keys (mix64(... ^ sample)), so no pair seed is a PCG seed.
   return mix64(mix64(pixel_index ^ (uint64_t(seed) << 40u)) + 0x51ED270B2A9D7F3Bull * (2u + (sample & 1u)));
@@ -19,6 +23,8 @@ PathSampler::PathSampler(PtSampler kind, uint64_t pixel_index, uint32_t sample, 
       rng_(sample_rng(pixel_index, sample, seed)),
       replicate_key_(kind == PtSampler::Sobol ? replicate_key(pixel_index, sample, seed) : 0),
       index_reversed_(reverse_bits(sample >> 1u)) {}
+
+bool PathSampler::qmc(int depth) const { return kind_ == PtSampler::Sobol && depth <= kQmcDepth; }
 
 void PathSampler::pair_bits(int depth, int pair, uint32_t& x, uint32_t& y) const {
   const uint64_t h = mix64(replicate_key_ ^ (uint64_t(depth * kPairsPerVertex + pair) * 0x9E3779B97F4A7C15ull));

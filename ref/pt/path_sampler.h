@@ -3,7 +3,7 @@
 // Two samplers (pt.sampler):
 // - independent: one PCG32 stream per (pixel, sample), consumed in path order (pt/rng.h);
 // - sobol (default): randomised quasi-Monte Carlo for the decisions at the first kQmcDepth
-//   vertices, PCG32 for the rest. A pixel's even samples are the points 0, 1, 2, ... of one
+//   vertices (path_sampler.cpp), PCG32 for the rest. A pixel's even samples are the points 0, 1, 2, ... of one
 //   scrambled sequence and its odd samples those of a second, independently scrambled one
 //   (replicate = sample & 1, point = sample >> 1). The two half-means the accumulator keeps
 //   (pt/accumulator.h) are then two independent, identically distributed unbiased estimates, so
@@ -25,10 +25,6 @@ namespace vct::pt {
 
 class PathSampler {
  public:
-  /// Vertices 1..kQmcDepth draw their decisions from the scrambled sequence. Deeper vertices carry
-  /// a small share of the variance (docs/performance.md) and their decisions stay independent.
-  static constexpr int kQmcDepth = 3;
-
   PathSampler(PtSampler kind, uint64_t pixel_index, uint32_t sample, uint32_t seed);
 
   /// The emitter decision at vertex `depth`: u_select picks the triangle, u the point on it.
@@ -50,7 +46,8 @@ class PathSampler {
   float roulette() { return rng_.next_float(); }
 
  private:
-  bool qmc(int depth) const { return kind_ == PtSampler::Sobol && depth <= kQmcDepth; }
+  /// Whether vertex `depth`'s decisions come from the scrambled sequence (path_sampler.cpp).
+  bool qmc(int depth) const;
   /// Point index_ of the scrambled 2D sequence of pair `pair` of vertex `depth`, as 32-bit
   /// fractions; pair() as floats.
   void pair_bits(int depth, int pair, uint32_t& x, uint32_t& y) const;
