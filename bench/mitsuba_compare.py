@@ -4,8 +4,10 @@ area light (issue 16; derivation of the test's bound in docs/compare.md, "Path t
 Mitsuba 3"; figures in docs/performance.md).
 
   bench/mitsuba_compare.py [--size 128] [--spp 256] [--depth 64] [--vct build/bin/vct]
+                           [--pt-sampler sobol|independent] [--mitsuba-samplers independent,ldsampler,multijitter]
       benchmark, run by hand: time, per-pixel variance (from two independent seeds of each
-      renderer) and efficiency 1 / (time x variance), ours over Mitsuba's;
+      renderer) and efficiency 1 / (time x variance), ours over Mitsuba's, for each Mitsuba sampler
+      (ours: pt.sampler, default sobol: scrambled Sobol replicates, docs/pathtracer.md);
   bench/mitsuba_compare.py --test [--size 32] [--spp 64]
       correctness (ctest pt_mitsuba_agreement): the image means of the two renderers agree per
       channel within 4 standard errors; exit 0 pass, 1 fail, 77 skipped (no mitsuba in the venv).
@@ -114,7 +116,7 @@ def mitsuba_bsdf(material):
             "metallic": metallic, "roughness": pbr.get("roughnessFactor", 1.0), "specular_factor": specular}
 
 
-def mitsuba_scene(g, work, size, spp, depth, seed):
+def mitsuba_scene(g, work, size, spp, depth, seed, sampler="independent"):
     import mitsuba as mi
     T = mi.ScalarTransform4f
     blob = base64.b64decode(g["buffers"][0]["uri"].split(",", 1)[1])
@@ -147,7 +149,7 @@ def mitsuba_scene(g, work, size, spp, depth, seed):
                 "to_world": T().look_at(origin=eye.tolist(), target=(eye + quat_rotate(q, [0, 0, -1])).tolist(),
                                         up=quat_rotate(q, [0, 1, 0]).tolist()),
                 "film": {"type": "hdrfilm", "width": size, "height": size, "rfilter": {"type": "box"}, "pixel_format": "rgb"},
-                "sampler": {"type": "independent", "sample_count": spp, "seed": seed}}
+                "sampler": {"type": sampler, "sample_count": spp, "seed": seed}}
         if "extensions" in node:
             light = g["extensions"]["KHR_lights_punctual"]["lights"][node["extensions"]["KHR_lights_punctual"]["light"]]
             pos = np.array(node["translation"], dtype=np.float64)
@@ -160,7 +162,7 @@ def mitsuba_scene(g, work, size, spp, depth, seed):
     return scene
 
 
-def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
+def render_mitsuba(g, work, size, spp, depth, seed, centres=False, sampler="independent"):
     """Mitsuba's image and render time. centres=True: every camera ray through the pixel centre,
     as ref/pt/camera_ray.cpp shoots them (integrator.sample per ray, in Python: for small images);
     else mi.render with a box pixel filter (the benchmark; variance from two seeds does not count
@@ -169,7 +171,7 @@ def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
     mi.set_variant("scalar_rgb")
     import mitsuba_cook_torrance
     mitsuba_cook_torrance.register()
-    scene = mi.load_dict(mitsuba_scene(g, work, size, spp, depth, seed))
+    scene = mi.load_dict(mitsuba_scene(g, work, size, spp, depth, seed, sampler))
     t0, c0 = time.perf_counter(), time.process_time()  # process_time: every thread of this process
     if not centres:
         img = np.array(mi.render(scene, seed=seed), dtype=np.float64)[:, :, :3]
@@ -192,11 +194,11 @@ def render_mitsuba(g, work, size, spp, depth, seed, centres=False):
     return img, time.perf_counter() - t0, time.process_time() - c0
 
 
-def render_ours(vct, scene_path, work, size, spp, depth, seed, threads):
-    out = os.path.join(work, "ours_%d" % seed)
-    cfg = os.path.join(work, "seed_%d.json" % seed)
+def render_ours(vct, scene_path, work, size, spp, depth, seed, threads, sampler=None):
+    out = os.path.join(work, "ours_%s_%d" % (sampler, seed))
+    cfg = os.path.join(work, "ours_%s_%d.json" % (sampler, seed))
     with open(cfg, "w") as f:
-        json.dump({"pt": {"seed": seed}}, f)
+        json.dump({"pt": {"seed": seed, **({"sampler": sampler} if sampler else {})}}, f)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run([vct, "pathtrace", scene_path, "--config", cfg, "--width", str(size), "--height", str(size),
                     "--spp", str(spp), "--max-depth", str(depth), "--threads", str(threads), "--quiet", "--out", out],
@@ -234,6 +236,12 @@ def main(argv):
     ap.add_argument("--threads", type=int, default=1, help="ours; Mitsuba scalar_rgb uses its own pool")
     ap.add_argument("--vct", default=os.environ.get("VCT_BINARY", os.path.join(ROOT, "build", "bin", "vct")))
     ap.add_argument("--k", type=float, default=4.0, help="--test bound in standard errors")
+    ap.add_argument("--pt-sampler", default="sobol",
+                    help="ours: pt.sampler (sobol or independent; the benchmark takes a comma-separated list, "
+                         "the test the first)")
+    ap.add_argument("--mitsuba-samplers", default="independent",
+                    help="benchmark: comma-separated Mitsuba samplers, each rendered with two seeds and compared "
+                         "(independent, stratified, multijitter, orthogonal, ldsampler)")
     a = ap.parse_args(argv)
     size = a.size or (32 if a.test else 128)
     spp = a.spp or (64 if a.test else 256)
@@ -245,8 +253,14 @@ def main(argv):
     with tempfile.TemporaryDirectory(prefix="vct-mitsuba-") as work:
         scene_path = os.path.join(work, "cornell_glossy.gltf" if a.glossy else "cornell_lambert.gltf")
         g = cornell_scene(scene_path, a.glossy)
-        ours = [render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads) for seed in (1, 2)]
-        theirs = [render_mitsuba(g, work, size, spp, a.depth, seed, centres=a.test) for seed in (1, 2)]
+        ours_samplers = a.pt_sampler.split(",")[:1 if a.test else None]
+        ours_by = {name: [render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, name)
+                          for seed in (1, 2)] for name in ours_samplers}
+        ours = ours_by[ours_samplers[0]]
+        samplers = ["independent"] if a.test else a.mitsuba_samplers.split(",")
+        theirs_by = {name: [render_mitsuba(g, work, size, spp, a.depth, seed, centres=a.test, sampler=name)
+                            for seed in (1, 2)] for name in samplers}
+    theirs = theirs_by[samplers[0]]
     om, ose, ovar = pair_stats(ours[0][0], ours[1][0])
     mm, mse, mvar = pair_stats(theirs[0][0], theirs[1][0])
     z = (om - mm) / np.sqrt(ose ** 2 + mse ** 2)
@@ -259,16 +273,28 @@ def main(argv):
         ok = bool(np.all(np.abs(z) <= a.k)) and bool(np.all(om > 0))
         print("PASS" if ok else "FAIL")
         return 0 if ok else 1
-    ot, mt = min(r[1] for r in ours), min(r[1] for r in theirs)
-    oc, mc = min(r[2] for r in ours), min(r[2] for r in theirs)
-    oe, me = 1.0 / (ot * ovar), 1.0 / (mt * mvar)
-    print("  samplers: ours independent PCG32 per (pixel, sample), pixel centres; mitsuba 'independent' (its default), box filter")
-    print("  ours     %.2f s (%d thread%s), per-pixel variance %.5g, efficiency %.4g" % (ot, a.threads, "s"[:a.threads > 1], ovar, oe))
-    print("  mitsuba  %.2f s, per-pixel variance %.5g, efficiency %.4g" % (mt, mvar, me))
-    print("  efficiency ratio ours / mitsuba: %.2f" % (oe / me))
-    # The same by CPU time (all threads of each renderer): steadier on a shared machine.
-    print("  by CPU time: ours %.2f s, mitsuba %.2f s; efficiency ratio ours / mitsuba: %.2f"
-          % (oc, mc, (1.0 / (oc * ovar)) / (1.0 / (mc * mvar))))
+    if len(ours_samplers) > 1:
+        # Our samplers estimate the same pixel-centre image: their means must agree (unbiasedness).
+        bm, bse, _ = pair_stats(*[r[0] for r in ours_by[ours_samplers[1]]])
+        print("  ours '%s' mean RGB %s +- %s; z against '%s' %s"
+              % (ours_samplers[1], np.round(bm, 5), np.round(bse, 5), ours_samplers[0],
+                 np.round((om - bm) / np.sqrt(ose ** 2 + bse ** 2), 2)))
+    for ours_name in ours_samplers:
+        ours = ours_by[ours_name]
+        _, _, ovar = pair_stats(ours[0][0], ours[1][0])
+        ot, oc = min(r[1] for r in ours), min(r[2] for r in ours)
+        oe = 1.0 / (ot * ovar)
+        print("  ours, pt.sampler %s, pixel centres: %.2f s (%d thread%s), CPU %.2f s, per-pixel variance %.5g"
+              % (ours_name, ot, a.threads, "s"[:a.threads > 1], oc, ovar))
+        for name in samplers:
+            theirs = theirs_by[name]
+            _, _, mvar = pair_stats(theirs[0][0], theirs[1][0])
+            mt, mc = min(r[1] for r in theirs), min(r[2] for r in theirs)
+            me = 1.0 / (mt * mvar)
+            # By wall time, and by CPU time (all threads of each renderer: steadier on a shared machine).
+            print("    against mitsuba '%s' (box filter; %.2f s, CPU %.2f s, per-pixel variance %.5g): "
+                  "efficiency ratio ours / mitsuba %.2f wall, %.2f CPU"
+                  % (name, mt, mc, mvar, oe / me, (1.0 / (oc * ovar)) / (1.0 / (mc * mvar))))
     return 0
 
 

@@ -6,6 +6,7 @@
 //    settings), counting every ray traced (primary, secondary = BSDF, shadow);
 // and prints raw / path-tracer rays-per-second ratios (the shading overhead).
 // Prints; never passes or fails. Usage: pt_bench [SCENE] [--size W] [--spp N] [--threads T]
+//                                             [--sampler sobol|independent]
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +21,7 @@ using namespace vct;
 int main(int argc, char** argv) {
   std::string scene_path;
   int size = 256, spp = 8, threads = 0;
+  PtSampler sampler = PtSettings{}.sampler;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc)
       size = std::atoi(argv[++i]);
@@ -27,13 +29,15 @@ int main(int argc, char** argv) {
       spp = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
       threads = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--sampler") && i + 1 < argc)
+      sampler = std::strcmp(argv[++i], "independent") ? PtSampler::Sobol : PtSampler::Independent;
     else
       scene_path = argv[i];
   }
   set_thread_count(threads);
   const Scene scene = load_scene(scene_path);
-  std::printf("scene %s: %zu triangles, %d threads, %dx%d, %d spp\n", scene.source.c_str(), scene.triangle_count(),
-              thread_count(), size, size, spp);
+  std::printf("scene %s: %zu triangles, %d threads, %dx%d, %d spp, sampler %s\n", scene.source.c_str(),
+              scene.triangle_count(), thread_count(), size, size, spp, to_string(sampler).c_str());
 
   const pt::RawRayRates raw = pt::measure_raw_embree(scene);
   const double raw_hit = raw.intersect, raw_occ = raw.occluded;
@@ -42,6 +46,7 @@ int main(int argc, char** argv) {
 
   PtSettings ps;
   ps.width = ps.height = size;
+  ps.sampler = sampler;
   ps.max_depth = 0;  // camera ray + first-hit shading only
   // One pass: later passes reuse each pixel's first vertex (Integrator::FirstVertex) and trace
   // nothing at max_depth 0.

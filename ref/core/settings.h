@@ -10,6 +10,7 @@
 namespace vct {
 
 enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
+enum class PtSampler { Sobol, Independent };           // path tracer: scrambled Sobol or PCG32 (pt/path_sampler.h)
 enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
 enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
 // How fragments in a voxel combine. RunningMeanHalf models an engine's non-atomic running mean
@@ -157,6 +158,7 @@ struct PtSettings {
   uint32_t seed = 0;
   int checkpoint_seconds = 30;
   LightModel light_model = LightModel::Gltf;
+  PtSampler sampler = PtSampler::Sobol;
 };
 
 struct Settings {
@@ -180,6 +182,7 @@ Settings load_settings_file(const std::string& path, const Settings& base);
 void validate_settings(const Settings& s);
 
 std::string to_string(LightModel m);
+std::string to_string(PtSampler s);
 std::string to_string(Voxelizer v);
 std::string to_string(VoxelStorage v);
 std::string to_string(Reduction r);

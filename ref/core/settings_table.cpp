@@ -23,6 +23,12 @@ const std::vector<std::pair<LightModel, const char*>>& enum_names() {
   return m;
 }
 template <>
+const std::vector<std::pair<PtSampler, const char*>>& enum_names() {
+  static const std::vector<std::pair<PtSampler, const char*>> m{{PtSampler::Sobol, "sobol"},
+                                                                {PtSampler::Independent, "independent"}};
+  return m;
+}
+template <>
 const std::vector<std::pair<Voxelizer, const char*>>& enum_names() {
   static const std::vector<std::pair<Voxelizer, const char*>> m{{Voxelizer::Conservative, "conservative"},
                                                                 {Voxelizer::GpuEmulation, "gpu"}};
@@ -215,6 +221,7 @@ using P = PtSettings;
 }  // namespace
 
 std::string to_string(LightModel m) { return enum_name(m); }
+std::string to_string(PtSampler s) { return enum_name(s); }
 std::string to_string(Voxelizer v) { return enum_name(v); }
 std::string to_string(VoxelStorage v) { return enum_name(v); }
 std::string to_string(Reduction r) { return enum_name(r); }
@@ -298,6 +305,7 @@ const std::vector<SettingField<PtSettings>>& pt_setting_fields() {
     field("seed", &P::seed, any(), "random seed"),
     field("checkpoint_seconds", &P::checkpoint_seconds, any(), "seconds between resumable checkpoints"),
     choice("light_model", &P::light_model, "as vct.light_model"),
+    choice("sampler", &P::sampler, "scrambled Sobol for the first vertices, or independent PCG32 (docs/pathtracer.md)"),
   };
   // clang-format on
   return fields;

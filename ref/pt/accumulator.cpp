@@ -8,8 +8,12 @@ Accumulator::Accumulator(int width, int height)
 void Accumulator::add(int x, int y, uint32_t sample, const PathSample& s) {
   double* px = &sums_[(size_t(y) * size_t(width_) + size_t(x)) * kValuesPerPixel];
   double* half = px + (sample & 1u) * (kAovCount * 3);
-  for (int a = 0; a < kAovCount; ++a)
+  for (int a = 0; a < kAovCount; ++a) {
+    // Most AOVs of a sample are 0 past its first vertex. Skipping them keeps the bits: a sum
+    // starts at +0 and round-to-nearest never makes it -0, so adding +-0 would leave it as is.
+    if (s.aov[a] == vec3(0.0f)) continue;
     for (int c = 0; c < 3; ++c) half[a * 3 + c] += double(s.aov[a][c]);
+  }
 }
 
 Image Accumulator::mean(Aov aov) const {

@@ -63,6 +63,9 @@ BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& 
   p.ng = ng;
   p.v = v;
   p.frame = sh::frame_from_normal(n);
+  p.lambertian = pbr.f0 == vec3(0.0f) && pbr.f90 == 0.0f;
+  // cook_torrance_lobes' diffuse expression with its Fresnel value, F = f0 + (f90 - f0) m^5 = 0.
+  if (p.lambertian) p.lambert_diffuse = sh::diffuse_weight(pbr, vec3(0.0f)) * pbr.albedo * sh::SH_INV_PI;
   // Lobe choice by the lobes' expected weights at this view angle: Fresnel for the specular
   // lobe, kd * albedo for the diffuse one. Both lobes keep >= 5 % when both can contribute, so
   // neither mixture component's pdf can starve a direction the other lobe needs.
@@ -81,6 +84,11 @@ BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& 
 BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l) {
   BsdfValue out;
   if (glm::dot(p.ng, l) <= 0.0f) return out;  // reflection only: never through the surface
+  if (p.lambertian) {
+    // cook_torrance_lobes' own early exit, then its value with F = 0 (specular = 0 * finite).
+    if (!(glm::dot(p.n, l) <= 0.0f || glm::dot(p.n, p.v) <= 0.0f)) out.diffuse = p.lambert_diffuse;
+    return out;
+  }
   const sh::BrdfLobes lobes = sh::cook_torrance_lobes(p.pbr, p.n, p.v, l);
   out.diffuse = lobes.diffuse;
   out.specular = lobes.specular;

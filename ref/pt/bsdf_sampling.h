@@ -35,6 +35,12 @@ struct BsdfPoint {
   vec3 v;
   sh::Frame frame;  // around n
   float specular_probability = 0.0f;
+  // Fresnel identically 0 (f0 = 0 and f90 = 0, e.g. KHR_materials_specular factor 0): the
+  // specular lobe is exactly 0 and the diffuse lobe the constant kd albedo / pi, which eval_bsdf
+  // then returns without the half vector, D and G (the same bits as sh::cook_torrance_lobes:
+  // docs/performance.md "Shading per ray").
+  bool lambertian = false;
+  vec3 lambert_diffuse{0.0f};
 };
 
 BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& ng, const vec3& v);

@@ -44,15 +44,33 @@ EmissiveTriangles::EmissiveTriangles(const Scene& scene) : pdf_area_(scene.trian
   if (!cdf_.empty()) cdf_.back() = 1.0;
 }
 
+namespace {
+/// Uniform on the triangle: b0 = 1 - sqrt(u0), b1 = u1 sqrt(u0) (Osada et al. / pbrt).
+void place_on_triangle(vec2 u, EmissiveTriangles::Sample& s) {
+  const float su = std::sqrt(u.x);
+  s.b1 = u.y * su;
+  s.b2 = su * (1.0f - u.y);
+}
+}  // namespace
+
+EmissiveTriangles::Sample EmissiveTriangles::sample_reusing(double x, float u_y) const {
+  Sample s;
+  if (triangles_.empty()) return s;
+  const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin()), triangles_.size() - 1);
+  s.triangle = triangles_[i];
+  const double lo = i > 0 ? cdf_[i - 1] : 0.0, hi = cdf_[i];
+  const float u_x = std::clamp(float((x - lo) / (hi - lo)), 0.0f, 0x1.fffffep-1f);
+  place_on_triangle(vec2(u_x, u_y), s);
+  s.pdf_area = pdf_area_[s.triangle];
+  return s;
+}
+
 EmissiveTriangles::Sample EmissiveTriangles::sample(float u_select, vec2 u) const {
   Sample s;
   if (triangles_.empty()) return s;
   const size_t i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u_select)) - cdf_.begin());
   s.triangle = triangles_[std::min(i, triangles_.size() - 1)];
-  // Uniform on the triangle: b0 = 1 - sqrt(u0), b1 = u1 sqrt(u0) (Osada et al. / pbrt).
-  const float su = std::sqrt(u.x);
-  s.b1 = u.y * su;
-  s.b2 = su * (1.0f - u.y);
+  place_on_triangle(u, s);
   s.pdf_area = pdf_area_[s.triangle];
   return s;
 }

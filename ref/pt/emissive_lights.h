@@ -29,6 +29,10 @@ class EmissiveTriangles {
   };
   /// Picks a triangle with u_select, then a uniform point on it with u.
   Sample sample(float u_select, vec2 u) const;
+  /// The same distribution from one coordinate fewer: x in [0, 1) picks the triangle, and where
+  /// it fell inside the triangle's CDF interval, rescaled to [0, 1), is the point's u.x (uniform
+  /// given the triangle). A stratified (x, u_y) thus stays stratified over the lights' total area.
+  Sample sample_reusing(double x, float u_y) const;
   /// Area density of sample() at any point of `triangle` (0 if it is not an emitter).
   float pdf_area(uint32_t triangle) const { return pdf_area_[triangle]; }
 

@@ -130,13 +130,18 @@ void Integrator::nee_punctual(const Vertex& v, const Throughput& tp, PathSample&
   }
 }
 
-void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out,
+void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out,
                               RayCounts& counts) const {
-  const float u_sel = rng.next_float();
-  const EmissiveTriangles::Sample ls = lights_.sample(u_sel, rng.next_2d());
+  const PathSampler::EmitterDraw d = rng.emitter(v.depth);
+  const EmissiveTriangles::Sample ls = d.reuse_x ? lights_.sample_reusing(d.x, d.u.y) : lights_.sample(d.u_select, d.u);
   // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
   if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return;
-  const SurfacePoint lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
+  // An untextured emitter's radiance is its material's constant: only the point's position and
+  // geometric normal are needed (docs/performance.md "Shading per ray").
+  const Material& lm = scene_.materials[scene_.triangle_material[ls.triangle]];
+  const bool textured = lm.emissive_texture.present();
+  const SurfacePoint lp = textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2)
+                                   : interpolate_position(scene_, ls.triangle, ls.b1, ls.b2);
   const vec3 to_light = lp.position - v.pos;
   const float dist2 = glm::dot(to_light, to_light);
   const float dist = std::sqrt(dist2);
@@ -146,7 +151,12 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng,
   if (ls.triangle == v.triangle || glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
   const BsdfValue f = eval_bsdf(v.bp, l);
   if (f.total() == vec3(0.0f)) return;
-  const vec3 le = emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l);
+  SurfaceMaterial lmat;
+  if (textured)
+    lmat = evaluate_material(scene_, lp);
+  else
+    lmat.emission = lm.emission();  // evaluate_material's value without an emissive texture
+  const vec3 le = emitted_radiance(scene_, lp, lmat, -l);
   if (le == vec3(0.0f)) return;
   ++counts.shadow;
   if (rt_.occluded(v.p, lp.position - v.p, leave_tnear(lp.position - v.p), 1.0f - eps_ / dist)) return;
@@ -155,9 +165,9 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng,
   credit_nee(out, tp, v.depth, f, le * (glm::dot(v.bp.n, l) * w / pdf_light));
 }
 
-void Integrator::nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out,
+void Integrator::nee_particles(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out,
                                RayCounts& counts) const {
-  const ParticleLights::Sample ps = particles_->sample(rng.next_float());
+  const ParticleLights::Sample ps = particles_->sample(rng.particle(v.depth));
   const vec3 to_light = ps.position - v.pos;
   const float dist2 = glm::dot(to_light, to_light);
   if (!(dist2 > 0.0f) || !(ps.pmf > 0.0f)) return;
@@ -225,7 +235,7 @@ bool Integrator::shade(const Hit& hit, const vec3& dir, int depth, const Through
 
 PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const {
   PathSample out = first.out;
-  Pcg32 rng = sample_rng(uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
+  PathSampler rng(settings_.sampler, uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
   Throughput tp;
   Vertex v = first.vertex;
   for (bool shaded = first.continues; shaded;) {
@@ -234,8 +244,10 @@ PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sa
 
     // Continue by BSDF sampling (also when depth == max_depth: the next vertex's emission
     // completes paths of max_depth bounces, the MIS partner of the emitter NEE above).
-    const float u_lobe = rng.next_float();
-    const BsdfSample bs = sample_bsdf(v.bp, u_lobe, rng.next_2d());
+    float u_lobe;
+    vec2 u_dir;
+    rng.bsdf(v.depth, v.bp.specular_probability > 0.0f && v.bp.specular_probability < 1.0f, u_lobe, u_dir);
+    const BsdfSample bs = sample_bsdf(v.bp, u_lobe, u_dir);
     if (!bs.valid) break;
     const BsdfValue f = eval_bsdf(v.bp, bs.l);
     if (f.total() == vec3(0.0f)) break;
@@ -249,7 +261,7 @@ PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sa
     }
     if (v.depth >= settings_.rr_start_depth) {  // Russian roulette
       const float q = std::min(1.0f, max_component(tp.beta));
-      if (rng.next_float() >= q) break;
+      if (rng.roulette() >= q) break;
       tp.beta /= q;
       tp.lobe_d /= q;
       tp.lobe_s /= q;

@@ -14,7 +14,7 @@
 #include "pt/emissive_lights.h"
 #include "pt/embree_scene.h"
 #include "pt/particle_lights.h"
-#include "pt/rng.h"
+#include "pt/path_sampler.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
@@ -88,8 +88,8 @@ class Integrator {
   bool shade(const Hit& hit, const vec3& dir, int depth, const Throughput& tp, float prev_pdf, PathSample& out,
              RayCounts& counts, Vertex& v) const;
   void nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
-  void nee_emitters(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
-  void nee_particles(const Vertex& v, const Throughput& tp, Pcg32& rng, PathSample& out, RayCounts& counts) const;
+  void nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
+  void nee_particles(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
 
   const Scene& scene_;
   const EmbreeScene& rt_;

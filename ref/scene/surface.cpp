@@ -6,7 +6,7 @@
 
 namespace vct {
 
-SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1, float b2) {
+SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
   const uvec3 t = scene.triangles[triangle];
   const float b0 = 1.0f - b1 - b2;
   SurfacePoint p;
@@ -14,6 +14,13 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
   const vec3 &p0 = scene.positions[t.x], &p1 = scene.positions[t.y], &p2 = scene.positions[t.z];
   p.position = b0 * p0 + b1 * p1 + b2 * p2;
   p.geometric_normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  return p;
+}
+
+SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1, float b2) {
+  const uvec3 t = scene.triangles[triangle];
+  const float b0 = 1.0f - b1 - b2;
+  SurfacePoint p = interpolate_position(scene, triangle, b1, b2);
   const vec3 n = b0 * scene.normals[t.x] + b1 * scene.normals[t.y] + b2 * scene.normals[t.z];
   const float len = glm::length(n);
   p.normal = len > 0.0f ? n / len : p.geometric_normal;
