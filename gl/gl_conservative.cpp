@@ -39,6 +39,15 @@ void nv_facts(BackendFacts& f) {
 
 }  // namespace
 
+void require_conservative_raster(const VctSettings& s, const std::string& renderer) {
+  const ConservativeRaster m = s.conservative_raster;
+  if (m != ConservativeRaster::Nv && m != ConservativeRaster::Intel) return;
+  const char* ext = m == ConservativeRaster::Nv ? "GL_NV_conservative_raster" : "GL_INTEL_conservative_rasterization";
+  if (!has_extension(ext))
+    throw EnvironmentError(std::string("conservative_raster = ") + to_string(m) + ": the driver (" + renderer +
+                           ") has no " + ext + " (vct info --gl lists what it has; conservative_raster = gs runs anywhere)");
+}
+
 ConservativeSetup conservative_setup(const VctSettings& s, BackendFacts& facts) {
   ConservativeSetup c;
   c.mode = s.conservative_raster;
@@ -49,10 +58,7 @@ ConservativeSetup conservative_setup(const VctSettings& s, BackendFacts& facts) 
     facts.conservative_params = "geometry-shader bounding quad (half a pixel + 1/16 margin) + exact clip per pixel";
     return c;
   }
-  const char* ext = c.mode == ConservativeRaster::Nv ? "GL_NV_conservative_raster" : "GL_INTEL_conservative_rasterization";
-  if (!has_extension(ext))
-    throw EnvironmentError(std::string("conservative_raster = ") + to_string(c.mode) + ": the driver (" + facts.renderer +
-                           ") has no " + ext + " (vct info --gl lists what it has; conservative_raster = gs runs anywhere)");
+  require_conservative_raster(s, facts.renderer);
   if (facts.subpixel_bits < 1)
     throw EnvironmentError(std::string("conservative_raster = ") + to_string(c.mode) +
                            ": the driver reports no GL_SUBPIXEL_BITS, so the bound of its rasterizer is unknown");

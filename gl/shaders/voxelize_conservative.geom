@@ -58,8 +58,8 @@ vec4 uv_gradient(vec2 w0, vec2 w1, vec2 w2, vec2 t0, vec2 t1, vec2 t2) {
 // Outputs are undefined after each EmitVertex (GLSL 4.50 §8.16), so every vertex writes all of them.
 dvec3 t_voxel[3];
 vec4 t_uv_grad[2];
-int t_axis;
-vec3 t_geometric_normal;
+int t_axis = 0;
+vec3 t_geometric_normal = vec3(0.0f);
 
 void emit(vec2 w) {
   for (int i = 0; i < 3; ++i) {

@@ -255,7 +255,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),
     field("msaa_samples", &V::msaa_samples, one_of({1, 4, 8}), "MSAA samples of the voxelization pass"),
-    choice("conservative_raster", &V::conservative_raster, "GL voxelization: sample rule (off), GS bounding quad + exact clip (gs), hardware nv | intel (exit 3 without the extension)"),
+    choice("conservative_raster", &V::conservative_raster, "GL voxelization: sample rule (off), GS bounding quad + exact clip (gs), or the hardware nv or intel extension (exit 3 without it)"),
     choice("storage", &V::storage, "voxel texture format"),
     choice("reduction", &V::reduction, "how the fragments of a voxel combine"),
     field("anisotropic", &V::anisotropic, any(), "six directional mip volumes", "u_anisotropic"),

@@ -17,7 +17,7 @@ namespace vct::gl::test {
 namespace {
 
 Settings conservative_settings(ConservativeRaster mode) {
-  Settings s = small_settings();
+  Settings s = small_settings(32, 32);  // grid 32; 32^2 pixels: the cones are not what is tested
   s.vct.voxelizer = Voxelizer::Conservative;  // the reference: the exact set
   s.vct.conservative_raster = mode;
   s.vct.msaa_samples = 1;
