@@ -123,7 +123,7 @@ StageVerdict judge_conservative_occupancy(const Volume& exact, const Volume& tes
     v.note = "grid sizes differ: " + std::to_string(exact.nx) + " vs " + std::to_string(test.nx);
     return v;
   }
-  size_t missing = 0, extra = 0, ties = 0, unchecked = 0, hard = 0, occupied_exact = 0;
+  size_t missing = 0, extra = 0, ties = 0, unchecked = 0, hard = 0, hard_missing = 0, occupied_exact = 0;
   std::vector<Offender> offenders;
   for (int z = 0; z < exact.nz; ++z)
     for (int y = 0; y < exact.ny; ++y)
@@ -149,6 +149,7 @@ StageVerdict judge_conservative_occupancy(const Volume& exact, const Volume& tes
           continue;
         }
         ++hard;
+        hard_missing += e;
         offenders.push_back(voxel_offender(x, y, z, e, t));
       }
   v.checked = exact.voxel_count();
@@ -166,6 +167,7 @@ StageVerdict judge_conservative_occupancy(const Volume& exact, const Volume& tes
               std::to_string(o.at[2]) + ") " + (o.reference[0] > 0.0f ? "missing" : "extra");
   }
   v.extra = {{"occupied_exact", occupied_exact}, {"missing", missing}, {"extra", extra}, {"ties", ties},
+             {"missing_beyond", hard_missing}, {"extra_beyond", hard - hard_missing},
              {"unchecked", unchecked}, {"over", bound.over}, {"under", bound.under}, {"mode", bound.mode}};
   keep_worst(offenders, worst_n);
   v.worst = std::move(offenders);

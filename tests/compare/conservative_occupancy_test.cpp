@@ -91,6 +91,8 @@ TEST(ConservativeJudgeTest, OneMissingVoxelFailsAndIsNamed) {
   ASSERT_EQ(v.worst.size(), 1u);
   EXPECT_EQ(v.worst[0].at, (std::array<int, 3>{6, 2, 3}));
   EXPECT_NE(v.note.find("voxel (6,2,3) missing"), std::string::npos) << v.note;
+  EXPECT_EQ(v.extra["missing_beyond"].get<size_t>(), 1u);
+  EXPECT_EQ(v.extra["extra_beyond"].get<size_t>(), 0u);
 }
 
 TEST(ConservativeJudgeTest, AnExtraVoxelFailsBeyondTheBoundAndPassesWithin) {
@@ -101,6 +103,8 @@ TEST(ConservativeJudgeTest, AnExtraVoxelFailsBeyondTheBoundAndPassesWithin) {
   const StageVerdict f = judge_conservative_occupancy(t.exact, far, t.tris, gs_bound(), 10);
   EXPECT_EQ(f.verdict, Verdict::Fail);
   EXPECT_NE(f.note.find("voxel (7,7,0) extra"), std::string::npos) << f.note;
+  EXPECT_EQ(f.extra["extra_beyond"].get<size_t>(), 1u);
+  EXPECT_EQ(f.extra["missing_beyond"].get<size_t>(), 0u);
   // A neighbour of the exact set that the triangle misses by less than a hardware mode's bound
   // (snapping 2^-2 px here, a coarse raster) but more than the gs mode's 2^-10: find one.
   BackendFacts hw;
