@@ -12,6 +12,7 @@
 #include "compare_scene.h"
 #include "options.h"
 #include "facts_notes.h"
+#include "compare/conservative_occupancy.h"
 #include "compare/isolated_stages.h"
 #include "compare/metrics.h"
 #include "compare/stage_compare.h"
@@ -96,6 +97,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
   if (a.scene.empty()) {
     const std::unique_ptr<RunDir> run = open_out_run(a);
     cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+    cmp::judge_conservative_mode(rep, ref, test, nullptr, a.worst);
     note_driver_facts(rep, test.facts, ref.facts);
     const int code = finish(rep, a, run.get(), title, {{"cone_stages", "end_to_end"}});
     if (has_cone_stage(rep, cmp::soft_shadows_of(ref) || cmp::soft_shadows_of(test)))
@@ -106,6 +108,7 @@ int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const Comp
   const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load, &ref);
   const std::unique_ptr<RunDir> run = open_out_run(a);
   cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
+  cmp::judge_conservative_mode(rep, ref, test, &in.scene, a.worst);
   cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
   note_driver_facts(rep, test.facts, ref.facts);
   const int code = finish(rep, a, run.get(), title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});

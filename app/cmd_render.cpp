@@ -30,6 +30,7 @@
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
+#include "gl/gl_conservative.h"
 #include "gl/gl_pipeline.h"
 #endif
 
@@ -162,6 +163,7 @@ std::function<FrameResult()> prepare_frame(const Scene& scene, const Settings& s
   const vct::gl::GlOptions options{flags.gl.device, flags.gl.fault};
   vct::gl::check_gl_accepts(scene, s, options);
   auto context = std::make_shared<vct::gl::GlContext>(options.device);  // a missing device fails here
+  vct::gl::require_conservative_raster(s.vct, context->renderer());  // a missing extension too
   return [&scene, &s, context, options] { return vct::gl::render_gl_frame(*context, scene, s, options); };
 #else
   throw EnvironmentError("GL backend not built (no gl/gl_pipeline.h or no GL libraries at configure time)");

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "facts_notes.h"
 #include "attribution_outputs.h"
+#include "compare/conservative_occupancy.h"
 #include "compare/bias.h"
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
@@ -118,7 +119,9 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
         row["gl_timings_ms"] = gl.frame->timings_ms;
         if (ref.ok()) {
           const cmp::StageSet gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct);
-          cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(*ref.frame, s.vct), gl_set);
+          const cmp::StageSet ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct);
+          cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set);
+          cmp::judge_conservative_mode(rep, ref_set, gl_set, &scene, 10);  // conservative_raster only
           // Cone stages on GL's own voxels (compare/isolated_stages.h), as in run().
           cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
           note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
@@ -231,7 +234,10 @@ int run(const ValidateOptions& o) {
   progress.begin("GL vs CPU reference, stage by stage");
   if (ref.ok() && gl.ok()) {
     cmp::Report rep = phases.time("compare gl vs ref (stages, difference images)", [&] {
-      return cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+      cmp::Report r = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
+      // A conservative GL mode (conservative_raster) is judged as a superset of the exact set.
+      cmp::judge_conservative_mode(r, ref_set, gl_set, &scene, 10);
+      return r;
     });
     // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
     // tie upstream does not fail a correct marcher downstream.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/settings.h"
+#include "gl_conservative.h"
 #include "gl_program.h"
 #include "gl_scene.h"
 #include "gl_timer.h"
@@ -27,6 +28,7 @@ struct GlFrame {
   ProgramBuilder programs;  // every program of the frame: carries the fault's #define
   bool has_fault(const char* name) const { return fault == name; }
   int samples = 1;  // MSAA samples actually used for voxelization
+  ConservativeSetup conservative;  // settings.conservative_raster as this driver runs it
 
   // One layer per spot or directional light, six per point light (cube faces in GL's order).
   std::vector<mat4> layer_view_proj;

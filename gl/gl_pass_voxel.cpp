@@ -85,6 +85,11 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
   glDisable(GL_CULL_FACE);
   if (f.samples > 1) glEnable(GL_MULTISAMPLE);
   prog.use();
+  if (f.conservative.mode != ConservativeRaster::Off) {
+    prog.set("u_emit_quad", f.conservative.emit_quad ? 1 : 0);
+    prog.set("u_clip_dilation", f.conservative.clip_dilation);
+    prog.set("u_keep_outside", f.conservative.keep_outside ? 1 : 0);
+  }
   set_volume(f, prog);
   f.geo.set_lights(prog, f.s, f.layer_view_proj, f.light_layer);
   glBindTextureUnit(4, f.shadow_maps);
@@ -96,7 +101,9 @@ void voxelize(GlFrame& f, const Program& prog, int bounce, GLuint prev_radiance,
     clear_uint(f.facing);
     bind_image(4, f.facing, 0, GL_READ_WRITE, GL_R32UI);
   }
+  if (f.conservative.cap) glEnable(f.conservative.cap);
   f.geo.draw(prog);
+  if (f.conservative.cap) glDisable(f.conservative.cap);
   // The resolve reads what the fragment shader's atomics wrote: GL 4.5 §7.12.2 orders the two
   // only through this barrier (the missing_barrier fault leaves it out).
   if (!f.has_fault("missing_barrier")) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -217,7 +224,9 @@ void voxel_passes(GlFrame& f) {
     if (f.s.anisotropic)
       for (GLuint& t : aniso[size_t(i)]) t = make_texture_3d(f.voxel_format, n / 2, f.levels - 1);
   }
-  const Program prog = f.programs.build({"voxelize.vert", "voxelize.geom", "voxelize.frag"});
+  const Program prog = f.conservative.mode == ConservativeRaster::Off
+                           ? f.programs.build({"voxelize.vert", "voxelize.geom", "voxelize.frag"})
+                           : f.programs.build({"voxelize.vert", "voxelize_conservative.geom", "voxelize_conservative.frag"});
   inject_particles(f);
   const int frames = std::max(f.s.bounces, 1);
   size_t cur = 0;

@@ -93,15 +93,20 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
   FrameResult result;
   result.backend = "gl";
   result.facts = frame_facts(context, settings.vct, options.fault);
+  const ConservativeSetup conservative = conservative_setup(settings.vct, result.facts);
   GlFrame f(scene, settings.vct, result, options.fault);
-  f.samples = result.facts.msaa_samples;
+  f.conservative = conservative;
+  // The conservative modes rasterize single-sampled: coverage is the pixel square's, not samples'.
+  f.samples = conservative.mode == ConservativeRaster::Off ? result.facts.msaa_samples : 1;
   f.timers.set_finish_each_stage(is_cpu_rasterizer(context.renderer()));
   if (f.samples != settings.vct.msaa_samples)
     result.info["msaa_note"] = "requested " + std::to_string(settings.vct.msaa_samples) +
                                " samples; the driver's GL_MAX_FRAMEBUFFER_SAMPLES is " +
                                std::to_string(context.max_framebuffer_samples());
-  if (settings.vct.voxelizer == Voxelizer::Conservative)
-    result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; GL has no conservative rasterization on this path)";
+  if (conservative.mode != ConservativeRaster::Off)
+    result.info["voxelizer"] = "conservative (" + result.facts.conservative_params + ")";
+  else if (settings.vct.voxelizer == Voxelizer::Conservative)
+    result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; conservative_raster = gs | nv | intel for a conservative GL mode)";
   glCreateVertexArrays(1, &f.empty_vao);
   upload_diffuse_cone_block(f);
   shadow_pass(f);

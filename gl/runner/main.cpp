@@ -46,7 +46,10 @@ void add_flags(CLI::App& app, RunnerOptions& o) {
   app.add_option("--bounces", o.bounces, "Multibounce frames");
   app.add_option("--reduction", o.reduction, "exact | fixed | cas");
   app.add_option("--storage", o.storage, "rgba8 | rgba16f");
-  app.add_option("--voxelizer", o.voxelizer, "conservative | gpu (GL always runs the GPU rule)");
+  app.add_option("--voxelizer", o.voxelizer, "conservative | gpu: the reference's voxelizer (GL runs the sample rule "
+                 "unless --conservative-raster)");
+  app.add_option("--conservative-raster", o.conservative_raster,
+                 "off | gs | nv | intel: GL's conservative voxelization mode (nv, intel: exit 3 without the extension)");
   app.add_flag("--aniso", o.aniso, "Anisotropic mips");
   app.add_flag("--no-depth-prepass", o.no_depth_prepass, "Skip the depth pre-pass");
   app.add_option("--timings", o.timing_grids, "Grid sizes to time (e.g. 32,64,128,256) instead of writing a stage set")

@@ -24,6 +24,7 @@ Settings runner_settings(const RunnerOptions& o) {
   if (o.reduction) patch["reduction"] = *o.reduction;
   if (o.storage) patch["storage"] = *o.storage;
   if (o.voxelizer) patch["voxelizer"] = *o.voxelizer;
+  if (o.conservative_raster) patch["conservative_raster"] = *o.conservative_raster;
   if (o.aniso) patch["anisotropic"] = true;
   if (o.no_depth_prepass) patch["depth_prepass"] = false;
   j.merge_patch(patch);

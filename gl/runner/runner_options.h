@@ -17,7 +17,7 @@ struct RunnerOptions {
   std::string device;   // --gl-device
   std::string fault;    // --gl-fault
   std::optional<int> width, height, grid, msaa, shadow_map_size, bounces;
-  std::optional<std::string> reduction, storage, voxelizer;
+  std::optional<std::string> reduction, storage, voxelizer, conservative_raster;
   bool aniso = false, no_depth_prepass = false, max_msaa = false;
   std::vector<int> timing_grids;  // --timings 32,64,128,256: GPU times per stage instead of a stage set
   int repeat = 3;                 // timing repetitions (the best is kept)

@@ -31,9 +31,23 @@ struct SurfaceMaterial {
   vec3 shading_normal;
 };
 
-vec4 material_texture(sampler2D s, vec2 uv) {
+#ifdef VCT_UV_GRADIENTS
+// Set by a shader that evaluates the material away from its fragment's own interpolated point
+// (the conservative voxelizer shades each voxel at the triangle's point closest to the voxel
+// centre, voxelize_conservative.frag): per texture coordinate set, (d/dx, d/dy) of the UV per
+// window pixel of the voxel raster, i.e. what the quad's derivatives would be on the triangle
+// (GL 4.5 §8.14.1), passed to textureGrad so the LOD is the voxel grid's footprint as the CPU's
+// stages/voxel_lod.h computes it.
+vec4 g_uv_grad[2];
+#endif
+
+vec4 material_texture(sampler2D s, int slot, vec2 uv) {
 #ifdef VCT_FAULT_TEXTURE_LEVEL_ZERO
   return textureLod(s, uv, 0.0f);  // fault: every lookup at level 0, minified textures alias
+#elif defined(VCT_UV_GRADIENTS)
+  vec4 g = g_uv_grad[u_tex_coord[slot] == 1 ? 1 : 0];
+  mat2 t = mat2(u_tex_transform[slot]);  // the transform's linear part moves the gradient
+  return textureGrad(s, uv, t * g.xy, t * g.zw);
 #else
   return texture(s, uv);
 #endif
@@ -62,23 +76,23 @@ vec3 apply_normal_map(vec3 normal, vec4 tangent, vec3 tn, float scale) {
 SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec4 color) {
   SurfaceMaterial s;
   vec4 base = u_base_color_factor;
-  if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, slot_uv(0, uv0, uv1));
+  if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, 0, slot_uv(0, uv0, uv1));
   if (u_vertex_colors != 0) base *= color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = base.rgb;
   s.metallic = u_metallic_factor;
   s.roughness = u_roughness_factor;
   if (u_tex_present[1] != 0) {
-    vec4 mr = material_texture(u_tex_mr, slot_uv(1, uv0, uv1));
+    vec4 mr = material_texture(u_tex_mr, 1, slot_uv(1, uv0, uv1));
     s.roughness *= mr.g;
     s.metallic *= mr.b;
   }
   s.specular_factor = u_specular_factor;
   s.specular_color = u_specular_color;
   s.emission = u_emission;
-  if (u_tex_present[3] != 0) s.emission *= material_texture(u_tex_emissive, slot_uv(3, uv0, uv1)).rgb;
+  if (u_tex_present[3] != 0) s.emission *= material_texture(u_tex_emissive, 3, slot_uv(3, uv0, uv1)).rgb;
   s.shading_normal = normal;
   if (u_tex_present[2] != 0) {
-    vec4 texel = material_texture(u_tex_normal, slot_uv(2, uv0, uv1));
+    vec4 texel = material_texture(u_tex_normal, 2, slot_uv(2, uv0, uv1));
     vec3 tn = texel.xyz * 2.0f - 1.0f;
     if (u_normal_two_channel != 0) tn.z = sqrt(max(0.0f, 1.0f - tn.x * tn.x - tn.y * tn.y));
     s.shading_normal = apply_normal_map(normal, tangent, tn, u_normal_scale);

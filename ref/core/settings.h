@@ -12,6 +12,12 @@ namespace vct {
 enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
 enum class PtSampler { Sobol, Independent };           // path tracer: scrambled Sobol or PCG32 (pt/path_sampler.h)
 enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
+// The GL voxelization pass's conservative mode (issue 15; docs/gl_backend.md, "Conservative
+// voxelization"): off (the sample rule), a geometry-shader bounding quad with a per-fragment exact
+// clip that runs on any GL 4.5 (gs), or the driver's hardware conservative rasterizer
+// (GL_NV_conservative_raster, GL_INTEL_conservative_rasterization). The CPU reference ignores it:
+// its exact triangle-box voxelizer (voxelizer = conservative) is what every mode is judged against.
+enum class ConservativeRaster { Off, GeometryShader, Nv, Intel };
 enum class VoxelStorage { Rgba8, Rgba16f };            // LDR vs HDR voxels
 // How fragments in a voxel combine. RunningMeanHalf models an engine's non-atomic running mean
 // (stages/running_mean.h): the reference keeps the exact mean and states the interval of values.
@@ -84,6 +90,7 @@ struct VctSettings {
   int grid = 128;
   Voxelizer voxelizer = Voxelizer::Conservative;
   int msaa_samples = 8;  // 1, 4 or 8 (GL standard sample positions)
+  ConservativeRaster conservative_raster = ConservativeRaster::Off;  // GL only; see the enum
   VoxelStorage storage = VoxelStorage::Rgba16f;
   Reduction reduction = Reduction::ExactMean;
   bool anisotropic = false;
@@ -184,6 +191,7 @@ void validate_settings(const Settings& s);
 std::string to_string(LightModel m);
 std::string to_string(PtSampler s);
 std::string to_string(Voxelizer v);
+std::string to_string(ConservativeRaster c);
 std::string to_string(VoxelStorage v);
 std::string to_string(Reduction r);
 std::string to_string(DiffuseWeighting w);

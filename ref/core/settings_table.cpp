@@ -35,6 +35,13 @@ const std::vector<std::pair<Voxelizer, const char*>>& enum_names() {
   return m;
 }
 template <>
+const std::vector<std::pair<ConservativeRaster, const char*>>& enum_names() {
+  static const std::vector<std::pair<ConservativeRaster, const char*>> m{
+      {ConservativeRaster::Off, "off"}, {ConservativeRaster::GeometryShader, "gs"},
+      {ConservativeRaster::Nv, "nv"}, {ConservativeRaster::Intel, "intel"}};
+  return m;
+}
+template <>
 const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
   static const std::vector<std::pair<VoxelStorage, const char*>> m{{VoxelStorage::Rgba8, "rgba8"},
                                                                    {VoxelStorage::Rgba16f, "rgba16f"}};
@@ -223,6 +230,7 @@ using P = PtSettings;
 std::string to_string(LightModel m) { return enum_name(m); }
 std::string to_string(PtSampler s) { return enum_name(s); }
 std::string to_string(Voxelizer v) { return enum_name(v); }
+std::string to_string(ConservativeRaster c) { return enum_name(c); }
 std::string to_string(VoxelStorage v) { return enum_name(v); }
 std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
@@ -254,6 +262,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),
     field("msaa_samples", &V::msaa_samples, one_of({1, 4, 8}), "MSAA samples of the voxelization pass"),
+    choice("conservative_raster", &V::conservative_raster, "GL voxelization: sample rule (off), GS bounding quad + exact clip (gs), or the hardware nv or intel extension (exit 3 without it)"),
     choice("storage", &V::storage, "voxel texture format"),
     choice("reduction", &V::reduction, "how the fragments of a voxel combine"),
     field("anisotropic", &V::anisotropic, any(), "six directional mip volumes", "u_anisotropic"),

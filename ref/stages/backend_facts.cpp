@@ -22,6 +22,10 @@ void to_json(nlohmann::json& j, const BackendFacts& f) {
        {"max_samples", f.max_samples},
        {"subpixel_bits", f.subpixel_bits},
        {"conservative_raster", f.conservative_raster},
+       {"conservative_mode", f.conservative_mode},
+       {"conservative_snap_bits", f.conservative_snap_bits},
+       {"conservative_dilation", f.conservative_dilation},
+       {"conservative_params", f.conservative_params},
        {"unreported", f.unreported}};
 }
 
@@ -49,6 +53,10 @@ void from_json(const nlohmann::json& j, BackendFacts& f) {
   get("max_samples", f.max_samples);
   get("subpixel_bits", f.subpixel_bits);
   get("conservative_raster", f.conservative_raster);
+  get("conservative_mode", f.conservative_mode);
+  get("conservative_snap_bits", f.conservative_snap_bits);
+  get("conservative_dilation", f.conservative_dilation);
+  get("conservative_params", f.conservative_params);
   get("unreported", f.unreported);
 }
 

@@ -32,6 +32,15 @@ struct BackendFacts {
   int max_samples = 0;     // GL_MAX_FRAMEBUFFER_SAMPLES
   int subpixel_bits = -1;  // GL_SUBPIXEL_BITS (-1 = not reported)
   std::vector<std::string> conservative_raster;  // GL_NV_conservative_raster, ... when present
+  // The conservative voxelization mode that ran (settings.conservative_raster: "gs", "nv",
+  // "intel"; "" = the sample rule) and what its bound rests on (docs/compare.md, "Conservative
+  // voxelization"): the window-coordinate snapping precision in bits while it ran (hardware: GL_SUBPIXEL_BITS
+  // + the NV precision bias; -1 = not hardware), the extension's dilation in pixels (NV_conservative_raster_dilate;
+  // 0 = its default, none), and the parameters in words.
+  std::string conservative_mode;
+  int conservative_snap_bits = -1;
+  double conservative_dilation = 0.0;
+  std::string conservative_params;
   // Facts the comparison would use but the driver does not report (each "name: why"); the
   // verdicts that depend on them say so in their note.
   std::vector<std::string> unreported;

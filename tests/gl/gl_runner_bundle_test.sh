@@ -44,12 +44,18 @@ set -e
 [ "$(wc -l < "$work/bad.err")" = 1 ] || fail "unknown fault: $(cat "$work/bad.err")"
 [ ! -e "$work/bad" ] || fail "unknown fault wrote $work/bad"
 
-# A small matrix: one scene (8 sets) and two faults (one caught, one llvmpipe cannot show).
+# A small matrix: one scene (8 sets), its conservative GS row (the hardware rows are skipped on a
+# driver without the extensions) and two faults (one caught, one llvmpipe cannot show).
 "$work/bundle/gpu_check.sh" render --out "$work/res" --reduced --scenes cornell_box \
   --faults wrong_mip,missing_barrier --no-timings > "$work/render.log" 2>&1 || fail "render: $(cat "$work/render.log")"
-[ "$(ls "$work/res/sets" | wc -l)" = 10 ] || fail "expected 10 stage sets: $(ls "$work/res/sets")"
+[ "$(ls "$work/res/sets" | wc -l)" = 11 ] || fail "expected 11 stage sets: $(ls "$work/res/sets")"
 "$src/scripts/gpu_check.sh" judge "$work/res" --vct "$build/bin/vct" > "$work/judge.txt" || fail "judge: $(cat "$work/judge.txt")"
 cat "$work/judge.txt"
 grep -q "^fault.wrong_mip.fixed .* fail .*mip.iso.2 .* yes$" "$work/judge.txt" || fail "wrong_mip not blamed on mip.iso.2"
-grep -q "^10 sets, 0 not as expected" "$work/judge.txt" || fail "unexpected rows"
+grep -q "^11 sets, 0 not as expected" "$work/judge.txt" || fail "unexpected rows"
+grep -q "^cornell_box.cons_gs .* pass .*conservative: yes, within its bound: yes$" "$work/judge.txt" ||
+  fail "no conservative line for the GS row"
+if ! grep -q "GL_NV_conservative_raster" <<< "$("$build/bin/vct" info --gl 2>/dev/null)"; then
+  grep -q "^cornell_box.cons_nv: skipped" "$work/judge.txt" || fail "the nv row neither ran nor says skipped"
+fi
 echo "ok"
