@@ -15,6 +15,7 @@
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/parallel_tasks.h"
 #include "io/image_io.h"
 #include "io/run_dir.h"
 #include "io/atomic_file.h"
@@ -41,7 +42,9 @@ struct ValidateOptions {
   bool no_report = false;
   bool attribute = false;  // --attribute: the error budget section (docs/attribution.md)
   int attribute_rays = 16;
-  std::string flip = "full";
+  // FLIP is a perceptual side metric no verdict uses, and HDR-FLIP costs seconds per map: opt-in
+  // (docs/performance.md, "Where validate's time goes").
+  std::string flip = "none";
   GlFlags gl;
 };
 
@@ -65,10 +68,14 @@ void record_frame(RunDir& run, const BackendRun& b, const std::string& name) {
 void write_pt(RunDir& run, const PtRun& pt) {
   const std::string dir = run.file("pt");
   RunDir pd(dir);
-  for (const auto& [name, img] : pt.aovs) {
+  // One task per AOV, each its own files: the same bytes for any thread count.
+  std::vector<const std::pair<const std::string, Image>*> aovs;
+  for (const auto& aov : pt.aovs) aovs.push_back(&aov);
+  parallel_tasks(int64_t(aovs.size()), [&](int64_t i) {
+    const auto& [name, img] = *aovs[size_t(i)];
     if (name.size() > 4 && name.substr(name.size() - 4) == "_var") write_exr(pd.file(name + ".exr"), img);
     else pd.write_color(name, img);
-  }
+  });
 }
 
 // One pixel's cones for the walkthrough (the centre pixel: it sees the back wall and the floor).
@@ -182,6 +189,7 @@ int run(const ValidateOptions& o) {
                          {"lights", scene.lights.size()},
                          {"warnings", scene.stats.warnings}};
   run.json()["settings"] = s;
+  run.json()["report_options"] = {{"flip", o.flip}};  // a rebuilt report computes the same FLIP maps
   run.json()["environment"] = environment_info();
   // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).
   run.json()["stage_registry"] = stage_registry_json();
@@ -315,8 +323,8 @@ void register_validate(CLI::App& app, int& exit_code) {
   cmd->add_option("--attribute-rays", o->attribute_rays, "Rays per pixel of the budget's gathering rungs")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--flip", o->flip,
-                  "FLIP maps in the report: full (the full image, default), all (every component; HDR-FLIP costs "
-                  "seconds per map) or none")
+                  "FLIP maps in the report (opt-in; no verdict uses FLIP): none (default), full (the full image of "
+                  "each backend) or all (every component; HDR-FLIP costs seconds per map)")
       ->check(CLI::IsMember({"full", "all", "none"}));
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
