@@ -287,8 +287,10 @@ int run(const ValidateOptions& o) {
   if (!o.no_report) {
     progress.begin("HTML report");
     Stopwatch report_sw;
+    const double report_cpu0 = process_cpu_ms();
     index = make_report(out, why, o.flip);
-    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms());
+    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms(),
+                     process_cpu_ms() - report_cpu0);
     run.json()["phases"] = phases.to_json();
     progress.end();
   }
