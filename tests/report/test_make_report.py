@@ -79,10 +79,10 @@ def test_part_times_keep_cpu_and_take_nested_flip_out_of_its_part(tmp_path):
         t.nested("FLIP", 5.0, 7.0)
 
     t.run("bias", spin)
-    bias, flip = t.parts
+    flip, bias = t.parts  # FLIP is listed when it ends, inside the part that asked for it
     assert flip == {"name": "FLIP", "ms": 5.0, "cpu_ms": 7.0}
     assert bias["name"] == "bias" and bias["cpu_ms"] >= 20 - 7.0
     t.write(str(tmp_path))
     written = json.loads((tmp_path / "part_times.json").read_text())
-    assert [p["name"] for p in written["parts"]] == ["bias", "FLIP"]
-    assert written["parts"][1]["cpu_ms"] == 7.0
+    assert [p["name"] for p in written["parts"]] == ["FLIP", "bias"]
+    assert written["parts"][0]["cpu_ms"] == 7.0
