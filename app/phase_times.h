@@ -20,7 +20,13 @@ struct Phase {
   double ms = 0.0;
   bool render = false;  // a backend rendering (the work the run exists for)
   double cpu_ms = -1.0;  // CPU time of the process and its waited-for children; < 0: not measured
+  // Ran beside others inside a group phase (its CPU: its own thread's); the group is counted in
+  // the totals, not its members.
+  bool concurrent = false;
 };
+
+/// CPU time so far of the calling thread, in ms.
+double thread_cpu_ms();
 
 /// CPU time so far of this process (all threads) and of its children already waited for, in ms.
 double process_cpu_ms();
@@ -28,7 +34,11 @@ double process_cpu_ms();
 class PhaseTimes {
  public:
   void add(const std::string& name, double ms, bool render = false, double cpu_ms = -1.0) {
-    phases_.push_back({name, ms, render, cpu_ms});
+    phases_.push_back({name, ms, render, cpu_ms, false});
+  }
+  /// A task that ran inside the group phase added just before it.
+  void add_concurrent(const std::string& name, double ms, double cpu_ms) {
+    phases_.push_back({name, ms, false, cpu_ms, true});
   }
 
   /// Runs f, records its wall and CPU time under `name`, returns what f returns.
@@ -53,8 +63,8 @@ class PhaseTimes {
   double other_cpu_ms() const;
   const std::vector<Phase>& phases() const { return phases_; }
 
-  /// {"phases": [{name, ms, cpu_ms, render}], "render_ms", "other_ms", "total_ms", "render_cpu_ms",
-  /// "other_cpu_ms"} (cpu_ms absent where not measured).
+  /// {"phases": [{name, ms, cpu_ms, render, concurrent}], "render_ms", "other_ms", "total_ms",
+  /// "render_cpu_ms", "other_cpu_ms"} (cpu_ms absent where not measured; concurrent only when true).
   nlohmann::json to_json() const;
   /// One line per phase ("  12.30 s   20.10 s  name": wall, CPU) and closing lines with the
   /// render / other split in wall and CPU time.

@@ -75,9 +75,14 @@ void write_image_stage(RunDir& rd, const std::string& name, const std::string& s
 }
 }  // namespace
 
-void write_stage_set(const std::string& dir, StageSet& set) {
-  RunDir rd(dir);
+void name_stage_files(const std::string& dir, StageSet& set) {
   set.root = dir;
+  for (const auto& kv : set.volumes) set.files[kv.first] = file_stem(kv.first) + ".nrrd";
+  for (const auto& kv : set.images) set.files[kv.first] = file_stem(kv.first) + ".exr";
+}
+
+void write_named_stage_set(const StageSet& set) {
+  RunDir rd(set.root);
   nlohmann::json stages = nlohmann::json::object();
   // One task per stage (its data file and preview), volumes first: they are the largest, so the
   // last tasks to start are short ones. Each writes its own files, so the bytes do not depend on
@@ -86,17 +91,20 @@ void write_stage_set(const std::string& dir, StageSet& set) {
   for (const auto& [name, vol] : set.volumes) {
     const std::string stem = file_stem(name);
     tasks.push_back([&rd, stem, &vol = vol] { rd.write_volume(stem, vol, 1.0f); });
-    set.files[name] = stem + ".nrrd";
     stages[name] = {{"file", stem + ".nrrd"}, {"kind", "volume"}, {"preview", stem + ".png"}};
   }
   for (const auto& [name, img] : set.images) {
     const std::string stem = file_stem(name);
     tasks.push_back([&rd, name = name, stem, &img = img] { write_image_stage(rd, name, stem, img); });
-    set.files[name] = stem + ".exr";
     stages[name] = {{"file", stem + ".exr"}, {"kind", "image"}, {"preview", stem + ".png"}};
   }
   parallel_tasks(int64_t(tasks.size()), [&](int64_t i) { tasks[size_t(i)](); });
   write_text_atomically(rd.file("vct-stages.json"), stage_set_manifest(set, stages).dump(2) + "\n");
+}
+
+void write_stage_set(const std::string& dir, StageSet& set) {
+  name_stage_files(dir, set);
+  write_named_stage_set(set);
 }
 
 nlohmann::json stage_set_manifest(const StageSet& set, const nlohmann::json& stages) {

@@ -53,6 +53,32 @@ TEST(PhaseTimes, RenderAndOtherSplitsInWallAndCpu) {
       << table;
 }
 
+TEST(PhaseTimes, AGroupCountsOnceAndItsTasksAreListedBesideIt) {
+  PhaseTimes t;
+  t.add("render ref", 2000.0, true, 3000.0);
+  t.add("stage sets, comparison, bias (3 tasks on 2 threads)", 1500.0, false, 2800.0);
+  t.add_concurrent("compare gl vs ref", 1400.0, 1300.0);
+  t.add_concurrent("write stage set ref", 900.0, 850.0);
+  t.add_concurrent("bias ref vs pt", 500.0, 480.0);
+  EXPECT_DOUBLE_EQ(t.other_ms(), 1500.0);  // the tasks' overlapping times are not added again
+  EXPECT_DOUBLE_EQ(t.other_cpu_ms(), 2800.0);
+  const nlohmann::json j = t.to_json();
+  EXPECT_TRUE(j["phases"][2]["concurrent"].get<bool>());
+  EXPECT_FALSE(j["phases"][1].contains("concurrent"));
+  const std::string table = t.table();
+  EXPECT_NE(table.find("      0.90 s    0.85 s    | write stage set ref"), std::string::npos) << table;
+  EXPECT_NE(table.find("total: renders 2.00 s, everything else 1.50 s (75 % of the renders)"), std::string::npos)
+      << table;
+}
+
+TEST(PhaseTimes, ThreadCpuCountsTheCallingThread) {
+  const double start = thread_cpu_ms();
+  volatile double x = 0;
+  while (thread_cpu_ms() - start < 10.0) x = x + 1.0;
+  EXPECT_GE(thread_cpu_ms() - start, 10.0);
+  EXPECT_GE(process_cpu_ms(), thread_cpu_ms());
+}
+
 std::string write_parts(const std::string& json) {
   const std::string path = (fs::temp_directory_path() / ("vct_part_times_" + std::to_string(::getpid()) + ".json")).string();
   std::ofstream(path) << json;
