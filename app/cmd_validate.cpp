@@ -16,6 +16,7 @@
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/parallel_tasks.h"
 #include "io/image_io.h"
 #include "io/run_dir.h"
 #include "io/atomic_file.h"
@@ -27,6 +28,7 @@
 #include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
 #include "scene_warnings.h"
+#include "validate_checks.h"
 #include "validate_run.h"
 #include "verdict_summary.h"
 
@@ -42,7 +44,9 @@ struct ValidateOptions {
   bool no_report = false;
   bool attribute = false;  // --attribute: the error budget section (docs/attribution.md)
   int attribute_rays = 16;
-  std::string flip = "full";
+  // FLIP is a perceptual side metric no verdict uses, and HDR-FLIP costs seconds per map: opt-in
+  // (docs/performance.md, "Where validate's time goes").
+  std::string flip = "none";
   GlFlags gl;
 };
 
@@ -61,15 +65,6 @@ void record_frame(RunDir& run, const BackendRun& b, const std::string& name) {
   for (const auto& [k, v] : b.frame->info) run.json()["backends"][name]["info"][k] = v;
   run.json()["backends"][name]["facts"] = b.frame->facts;
   if (!b.frame->multibounce_energy.empty()) run.json()["multibounce_energy"][name] = b.frame->multibounce_energy;
-}
-
-void write_pt(RunDir& run, const PtRun& pt) {
-  const std::string dir = run.file("pt");
-  RunDir pd(dir);
-  for (const auto& [name, img] : pt.aovs) {
-    if (name.size() > 4 && name.substr(name.size() - 4) == "_var") write_exr(pd.file(name + ".exr"), img);
-    else pd.write_color(name, img);
-  }
 }
 
 // One pixel's cones for the walkthrough (the centre pixel: it sees the back wall and the floor).
@@ -170,8 +165,8 @@ int run(const ValidateOptions& o) {
   const Settings s = resolve(o.common);
   const Scene scene = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load); });
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
-  // Phases: gl, ref, pt, stage sets, GPU-vs-CPU comparison, bias, each sweep value, report.
-  PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 6 + (o.no_report ? 0 : 1));
+  // Phases: gl, ref, pt, stage sets + comparison + bias, each sweep value, report.
+  PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 4 + (o.no_report ? 0 : 1));
   for (const auto& sw : o.sweeps) {  // bad specs and values (GL's refusals too) fail before any rendering
     const auto [key, values] = parse_sweep(sw);
     for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
@@ -185,6 +180,7 @@ int run(const ValidateOptions& o) {
                          {"lights", scene.lights.size()},
                          {"warnings", scene.stats.warnings}};
   run.json()["settings"] = s;
+  run.json()["report_options"] = {{"flip", o.flip}};  // a rebuilt report computes the same FLIP maps
   run.json()["environment"] = environment_info();
   // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).
   run.json()["stage_registry"] = stage_registry_json();
@@ -220,53 +216,28 @@ int run(const ValidateOptions& o) {
   std::printf("  pt   %-12s %8.1f s  %d spp\n", pt.status.c_str(), pt.ms / 1000, pt.spp);
   run.save();
 
-  progress.begin("writing the stage sets");
-  cmp::StageSet ref_set, gl_set;
-  if (ref.ok())
-    phases.time("write stage set ref", [&] { write_stage_set(run.file("ref"), ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct)); });
-  if (gl.ok())
-    phases.time("write stage set gl", [&] { write_stage_set(run.file("gl"), gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct)); });
-  if (pt.ok()) phases.time("write pt images", [&] { write_pt(run, pt); });
   phases.time("explain one pixel", [&] { write_explanation(run, scene, ref, s); });
+  progress.begin("stage sets, GL vs CPU reference, bias against the path tracer");
+  CheckResults checks = run_checks(run, scene, s, ref, gl, pt, phases);
   progress.end();
 
   int exit_code = kExitOk;
-  progress.begin("GL vs CPU reference, stage by stage");
-  if (ref.ok() && gl.ok()) {
-    cmp::Report rep = phases.time("compare gl vs ref (stages, difference images)", [&] {
-      cmp::Report r = cmp::compare_stage_sets(ref_set, gl_set, {10, run.file("compare"), "compare/"});
-      // A conservative GL mode (conservative_raster) is judged as a superset of the exact set.
-      cmp::judge_conservative_mode(r, ref_set, gl_set, &scene, 10);
-      return r;
-    });
-    // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a legitimate voxel
-    // tie upstream does not fail a correct marcher downstream.
-    phases.time("compare cones on gl's voxels (isolated re-trace)",
-                [&] { cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set); });
-    note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
+  if (checks.report) {
+    const cmp::Report& rep = *checks.report;
     run.json()["verdicts"] = cmp::to_json(rep);
-    progress.end();
     print_verdicts(rep, "GPU (gl) vs CPU reference");
     if (rep.overall() == cmp::Verdict::Fail) exit_code = kExitFailed;
   } else {
     const std::string why = !gl.ok() ? "gl " + gl.status : "ref " + ref.status;
     run.json()["verdicts"] = {{"overall", "missing"}, {"first_failing", ""}, {"note", why}, {"stages", nlohmann::json::array()}};
-    progress.end();
     std::printf("GPU vs CPU: not compared (%s)\n", why.c_str());
     if (gl.status.rfind("error", 0) == 0) exit_code = kExitFailed;
   }
-  std::vector<cmp::BiasComponent> bias;
-  progress.begin("bias against the path tracer");
   if (ref.ok() && pt.ok()) {
-    bias = phases.time("bias ref vs pt", [&] { return cmp::measure_bias(ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"}); });
-    run.json()["bias"] = {{"ref", bias_json(bias)}};
-    if (gl.ok())
-      run.json()["bias"]["gl"] = bias_json(phases.time(
-          "bias gl vs pt", [&] { return cmp::measure_bias(gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"}); }));
-    progress.end();
-    print_bias(bias);
+    run.json()["bias"] = {{"ref", bias_json(checks.bias_ref)}};
+    if (gl.ok()) run.json()["bias"]["gl"] = bias_json(checks.bias_gl);
+    print_bias(checks.bias_ref);
   }
-  progress.end();
   run.save();
   if (o.attribute && ref.ok())
     phases.time("attribution (error budget)", [&] { write_validate_attribution(run, scene, ref_settings, *ref.frame, o); });
@@ -285,8 +256,10 @@ int run(const ValidateOptions& o) {
   if (!o.no_report) {
     progress.begin("HTML report");
     Stopwatch report_sw;
+    const double report_cpu0 = process_cpu_ms();
     index = make_report(out, why, o.flip);
-    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms());
+    add_report_parts(phases, (std::filesystem::path(out) / "report" / "part_times.json").string(), report_sw.ms(),
+                     process_cpu_ms() - report_cpu0);
     run.json()["phases"] = phases.to_json();
     progress.end();
   }
@@ -321,8 +294,8 @@ void register_validate(CLI::App& app, int& exit_code) {
   cmd->add_option("--attribute-rays", o->attribute_rays, "Rays per pixel of the budget's gathering rungs")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--flip", o->flip,
-                  "FLIP maps in the report: full (the full image, default), all (every component; HDR-FLIP costs "
-                  "seconds per map) or none")
+                  "FLIP maps in the report (opt-in; no verdict uses FLIP): none (default), full (the full image of "
+                  "each backend) or all (every component; HDR-FLIP costs seconds per map)")
       ->check(CLI::IsMember({"full", "all", "none"}));
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }

@@ -66,6 +66,6 @@ std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& 
 /// runs it on `run_dir`. Returns the index.html path, or "" with `why` filled.
 /// `flip` chooses the FLIP maps ("full": the full image only, "all": every component, "none"),
 /// passed as $VCT_REPORT_FLIP.
-std::string make_report(const std::string& run_dir, std::string& why, const std::string& flip = "full");
+std::string make_report(const std::string& run_dir, std::string& why, const std::string& flip = "none");
 
 }  // namespace vct::app

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/math.h"
+#include "core/parallel_tasks.h"
 #include "io/image_io.h"
 #include "stages/stage_registry.h"
 
@@ -104,71 +105,80 @@ void write_maps(BiasComponent& b, const Image& v, const Image& p, const Image* v
 
 }  // namespace
 
-std::vector<BiasComponent> measure_bias(const StageSet& vct, const std::map<std::string, Image>& pt, const BiasOptions& opt) {
-  std::vector<BiasComponent> out;
-  for (const auto& [stage, aov] : bias_pairs()) {
-    BiasComponent b;
-    b.component = aov.substr(3);  // "direct", "indirect_diffuse", ...
-    b.vct_stage = stage;
-    b.pt_aov = aov;
-    b.k = opt.k;
-    auto vi = vct.images.find(stage);
-    auto pi = pt.find(aov);
-    if (vi == vct.images.end() || pi == pt.end()) {
-      b.note = vi == vct.images.end() ? "VCT image " + stage + " missing" : "path tracer AOV " + aov + " missing";
-      out.push_back(b);
-      continue;
-    }
-    const Image& v = vi->second;
-    const Image& p = pi->second;
-    if (v.width != p.width || v.height != p.height) {
-      b.note = "sizes differ (VCT " + std::to_string(v.width) + "x" + std::to_string(v.height) + ", PT " +
-               std::to_string(p.width) + "x" + std::to_string(p.height) + ")";
-      out.push_back(b);
-      continue;
-    }
-    b.available = true;
-    b.metrics = image_metrics(v, p);
-    auto var_it = pt.find(aov + "_var");
-    Image pooled;
-    const Image* var = nullptr;
-    if (var_it != pt.end() && var_it->second.width == v.width && var_it->second.height == v.height)
-      var = &(pooled = pool_variance(var_it->second));
-    b.have_variance = var != nullptr;
-    b.expected_fraction = student_t_tail(b.k, kPoolDof - 1);
-    if (var) {
-      double mean_p = 0;
-      for (int y = 0; y < v.height; ++y)
-        for (int x = 0; x < v.width; ++x) mean_p += double(luminance(p, x, y));
-      const double n = double(v.width) * double(v.height);
-      mean_p /= n;
-      // Floor for pixels whose samples all agreed (sigma = 0): float noise is not bias.
-      const double floor = 1e-4 * mean_p + 1e-7;
-      size_t beyond = 0;
-      double sum_d = 0, sum_var = 0;
-      for (int y = 0; y < v.height; ++y)
-        for (int x = 0; x < v.width; ++x) {
-          const double d = luminance(v, x, y) - luminance(p, x, y);
-          const double s = std::max(double(sigma_lum(*var, x, y)), floor);
-          beyond += std::abs(d) > b.k * s;
-          sum_d += d;
-          sum_var += s * s;
-        }
-      b.fraction_beyond_k_sigma = double(beyond) / n;
-      b.mean_bias_z = sum_d / std::sqrt(std::max(sum_var, 1e-30));
-      const double pexp = b.expected_fraction;
-      b.significant = b.fraction_beyond_k_sigma > 2.0 * pexp + 3.0 * std::sqrt(pexp / n) || std::abs(b.mean_bias_z) > 5.0;
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "%.2f%% of pixels beyond %.0f sigma (noise alone: %.2f%%); mean bias %.1f sigma: %s",
-                    100 * b.fraction_beyond_k_sigma, b.k, 100 * pexp, b.mean_bias_z,
-                    b.significant ? "bias beyond PT noise" : "consistent with PT noise");
-      b.note = buf;
-    } else {
-      b.note = "no variance AOV: bias reported without a noise judgement";
-    }
-    write_maps(b, v, p, var, opt);
-    out.push_back(b);
+namespace {
+BiasComponent measure_component(const std::string& stage, const std::string& aov, const StageSet& vct,
+                                const std::map<std::string, Image>& pt, const BiasOptions& opt) {
+  BiasComponent b;
+  b.component = aov.substr(3);  // "direct", "indirect_diffuse", ...
+  b.vct_stage = stage;
+  b.pt_aov = aov;
+  b.k = opt.k;
+  auto vi = vct.images.find(stage);
+  auto pi = pt.find(aov);
+  if (vi == vct.images.end() || pi == pt.end()) {
+    b.note = vi == vct.images.end() ? "VCT image " + stage + " missing" : "path tracer AOV " + aov + " missing";
+    return b;
   }
+  const Image& v = vi->second;
+  const Image& p = pi->second;
+  if (v.width != p.width || v.height != p.height) {
+    b.note = "sizes differ (VCT " + std::to_string(v.width) + "x" + std::to_string(v.height) + ", PT " +
+             std::to_string(p.width) + "x" + std::to_string(p.height) + ")";
+    return b;
+  }
+  b.available = true;
+  b.metrics = image_metrics(v, p);
+  auto var_it = pt.find(aov + "_var");
+  Image pooled;
+  const Image* var = nullptr;
+  if (var_it != pt.end() && var_it->second.width == v.width && var_it->second.height == v.height)
+    var = &(pooled = pool_variance(var_it->second));
+  b.have_variance = var != nullptr;
+  b.expected_fraction = student_t_tail(b.k, kPoolDof - 1);
+  if (var) {
+    double mean_p = 0;
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x) mean_p += double(luminance(p, x, y));
+    const double n = double(v.width) * double(v.height);
+    mean_p /= n;
+    // Floor for pixels whose samples all agreed (sigma = 0): float noise is not bias.
+    const double floor = 1e-4 * mean_p + 1e-7;
+    size_t beyond = 0;
+    double sum_d = 0, sum_var = 0;
+    for (int y = 0; y < v.height; ++y)
+      for (int x = 0; x < v.width; ++x) {
+        const double d = luminance(v, x, y) - luminance(p, x, y);
+        const double s = std::max(double(sigma_lum(*var, x, y)), floor);
+        beyond += std::abs(d) > b.k * s;
+        sum_d += d;
+        sum_var += s * s;
+      }
+    b.fraction_beyond_k_sigma = double(beyond) / n;
+    b.mean_bias_z = sum_d / std::sqrt(std::max(sum_var, 1e-30));
+    const double pexp = b.expected_fraction;
+    b.significant = b.fraction_beyond_k_sigma > 2.0 * pexp + 3.0 * std::sqrt(pexp / n) || std::abs(b.mean_bias_z) > 5.0;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%.2f%% of pixels beyond %.0f sigma (noise alone: %.2f%%); mean bias %.1f sigma: %s",
+                  100 * b.fraction_beyond_k_sigma, b.k, 100 * pexp, b.mean_bias_z,
+                  b.significant ? "bias beyond PT noise" : "consistent with PT noise");
+    b.note = buf;
+  } else {
+    b.note = "no variance AOV: bias reported without a noise judgement";
+  }
+  write_maps(b, v, p, var, opt);
+  return b;
+}
+}  // namespace
+
+std::vector<BiasComponent> measure_bias(const StageSet& vct, const std::map<std::string, Image>& pt, const BiasOptions& opt) {
+  // One task per component: each writes its own maps and its own slot, so the result and the
+  // files are the same for any thread count (docs/performance.md, "Where validate's time goes").
+  const auto& pairs = bias_pairs();
+  std::vector<BiasComponent> out(pairs.size());
+  if (!opt.out_dir.empty()) fs::create_directories(opt.out_dir);
+  parallel_tasks(int64_t(pairs.size()), [&](int64_t i) {
+    out[size_t(i)] = measure_component(pairs[size_t(i)].first, pairs[size_t(i)].second, vct, pt, opt);
+  });
   return out;
 }
 

@@ -209,6 +209,43 @@ FrameResult closest_march_end(const FrameResult& plain, const FrameResult& short
   return out;
 }
 
+namespace {
+// What the isolated comparison judges: the stages apply_isolated_verdicts takes (cone-traced, and
+// shading on the test's own inputs), beside the images compare_stage_sets reads for every image
+// stage (depth for edges, texture slack, tie range). Every other stage of the re-traced frame is
+// the test's own copy, equal by construction, and judging it again cost about a third of this
+// phase (docs/performance.md, "Where validate's time goes"). The verdicts of the judged stages do
+// not change: (1) they read only their own images, the context images and the options; (2) the
+// voxels are the test's own, so none differs, none is tainted, and upstream_tie_fraction is 0
+// with or without them; (3) both sides keep the same names, so which side has a stage, and
+// whether a family's chain is broken (all its members pass the same test), stay as they were.
+bool isolated_stage(const std::string& name, bool soft_shadows) {
+  return is_cone_traced(name, soft_shadows) || is_shading_on_own_inputs(name, soft_shadows) ||
+         name == stage_names::kGbufferDepth || name == stage_names::kGbufferTextureSlack ||
+         name == stage_names::kGbufferTieRange;
+}
+
+// `soft_shadows` as compare_stage_sets will judge: either set's settings.
+StageSet isolated_reference_set(const FrameResult& r, const VctSettings& s, bool soft_shadows) {
+  StageSet set = stage_set_header(r, s);
+  for (const StageRow& row : stage_rows()) {
+    if (row.kind != StageKind::Image) continue;
+    for (int i : frame_members(r, row))
+      if (isolated_stage(stage_name(row, i), soft_shadows)) set.images[stage_name(row, i)] = *frame_image(r, row, i);
+  }
+  return set;
+}
+
+// The test's set with the same stages kept (its header, conventions included, unchanged).
+StageSet isolated_test_set(const StageSet& test, bool soft_shadows) {
+  StageSet set = test;
+  set.volumes.clear();
+  for (auto it = set.images.begin(); it != set.images.end();)
+    it = isolated_stage(it->first, soft_shadows) ? std::next(it) : set.images.erase(it);
+  return set;
+}
+}  // namespace
+
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt) {
   const DisplayTransform* display = &test_set.conventions.display;
@@ -216,7 +253,9 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
   const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s, display);
   CompareOptions iso_opt = opt;
   iso_opt.direct_decoded_from_display = direct == DirectInput::Decoded;
-  Report isolated = compare_stage_sets(stage_set_from_frame(ref_on_test, s), test_set, iso_opt);
+  const bool soft = s.soft_shadows || soft_shadows_of(test_set);
+  const StageSet test_judged = isolated_test_set(test_set, soft);
+  Report isolated = compare_stage_sets(isolated_reference_set(ref_on_test, s, soft), test_judged, iso_opt);
   // The march-end tie (docs/compare.md): only where the plain re-trace fails a cone stage, each
   // cone-image pixel is judged against the closest of the three admissible march ends.
   if (any_cone_stage_fails(isolated, s.soft_shadows)) {
@@ -225,7 +264,7 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
                                                   reference_on_test_inputs(scene, test, s, display, +1), test, &moved,
                                                   display);
     const Report plain = std::move(isolated);
-    isolated = compare_stage_sets(stage_set_from_frame(closest, s), test_set, iso_opt);
+    isolated = compare_stage_sets(isolated_reference_set(closest, s, soft), test_judged, iso_opt);
     for (StageVerdict& v : isolated.stages)
       if (is_cone_traced(v.stage, s.soft_shadows)) {
         const StageVerdict* p = find_stage(plain, v.stage);

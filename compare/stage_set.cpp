@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <set>
 
 #include "core/error.h"
+#include "core/parallel_tasks.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
@@ -73,23 +75,36 @@ void write_image_stage(RunDir& rd, const std::string& name, const std::string& s
 }
 }  // namespace
 
-void write_stage_set(const std::string& dir, StageSet& set) {
-  RunDir rd(dir);
+void name_stage_files(const std::string& dir, StageSet& set) {
   set.root = dir;
+  for (const auto& kv : set.volumes) set.files[kv.first] = file_stem(kv.first) + ".nrrd";
+  for (const auto& kv : set.images) set.files[kv.first] = file_stem(kv.first) + ".exr";
+}
+
+void write_named_stage_set(const StageSet& set) {
+  RunDir rd(set.root);
   nlohmann::json stages = nlohmann::json::object();
-  for (const auto& [name, img] : set.images) {
-    const std::string stem = file_stem(name);
-    write_image_stage(rd, name, stem, img);
-    set.files[name] = stem + ".exr";
-    stages[name] = {{"file", stem + ".exr"}, {"kind", "image"}, {"preview", stem + ".png"}};
-  }
+  // One task per stage (its data file and preview), volumes first: they are the largest, so the
+  // last tasks to start are short ones. Each writes its own files, so the bytes do not depend on
+  // the thread count (docs/performance.md, "Where validate's time goes").
+  std::vector<std::function<void()>> tasks;
   for (const auto& [name, vol] : set.volumes) {
     const std::string stem = file_stem(name);
-    rd.write_volume(stem, vol, 1.0f);
-    set.files[name] = stem + ".nrrd";
+    tasks.push_back([&rd, stem, &vol = vol] { rd.write_volume(stem, vol, 1.0f); });
     stages[name] = {{"file", stem + ".nrrd"}, {"kind", "volume"}, {"preview", stem + ".png"}};
   }
+  for (const auto& [name, img] : set.images) {
+    const std::string stem = file_stem(name);
+    tasks.push_back([&rd, name = name, stem, &img = img] { write_image_stage(rd, name, stem, img); });
+    stages[name] = {{"file", stem + ".exr"}, {"kind", "image"}, {"preview", stem + ".png"}};
+  }
+  parallel_tasks(int64_t(tasks.size()), [&](int64_t i) { tasks[size_t(i)](); });
   write_text_atomically(rd.file("vct-stages.json"), stage_set_manifest(set, stages).dump(2) + "\n");
+}
+
+void write_stage_set(const std::string& dir, StageSet& set) {
+  name_stage_files(dir, set);
+  write_named_stage_set(set);
 }
 
 nlohmann::json stage_set_manifest(const StageSet& set, const nlohmann::json& stages) {

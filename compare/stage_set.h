@@ -43,6 +43,10 @@ StageSet stage_set_header(const FrameResult& f, const VctSettings& s);
 
 /// Writes every stage (EXR / NRRD + PNG previews) and `dir`/vct-stages.json; fills set.root/files.
 void write_stage_set(const std::string& dir, StageSet& set);
+/// The two halves of write_stage_set: name_stage_files fills set.root/files without writing;
+/// write_named_stage_set then writes them, only reading `set` (so others may read it meanwhile).
+void name_stage_files(const std::string& dir, StageSet& set);
+void write_named_stage_set(const StageSet& set);
 
 /// The vct-stages.json document of `set` whose "stages" entries ({file, kind, preview}) are given.
 nlohmann::json stage_set_manifest(const StageSet& set, const nlohmann::json& stages);

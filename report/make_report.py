@@ -14,7 +14,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vct_report import attribution, flip_batch, registry, runio, svg  # noqa: E402
 from vct_report.glance import glance  # noqa: E402
-from vct_report.part_times import TIMES  # noqa: E402
+from vct_report.part_times import TIMES, cpu_ms  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -164,11 +164,22 @@ def final_images(p):
 FLIP_RESULTS = {}  # out png -> mean FLIP (or None), filled by precompute_flips
 
 
-def flip_components(r):
-    """Whether component row r gets a FLIP map: $VCT_REPORT_FLIP = full (default: the full image
-    only; HDR-FLIP costs seconds per map), all, or none (docs/report.md)."""
-    mode = os.environ.get("VCT_REPORT_FLIP", "full")
+def flip_mode(run):
+    """Which FLIP maps the page computes: $VCT_REPORT_FLIP if set, else what `vct validate --flip`
+    recorded in run.json, else none. FLIP is a perceptual side metric (no verdict uses it) and
+    HDR-FLIP costs seconds per 256^2 map, so it is opt-in (docs/report.md, docs/performance.md)."""
+    mode = os.environ.get("VCT_REPORT_FLIP") or (run.json.get("report_options") or {}).get("flip") or "none"
+    return mode if mode in ("full", "all", "none") else "none"
+
+
+def flip_components(mode, r):
+    """Whether component row r gets a FLIP map under `mode` (full: the full image only, all, none)."""
     return mode == "all" or (mode == "full" and r.get("component") == "full")
+
+
+FLIP_OPT_IN = ("not computed: FLIP is opt-in (<code>vct validate --flip full</code> for the full images, "
+               "<code>--flip all</code> for every component; or <code>VCT_REPORT_FLIP=full</code> when rebuilding "
+               "with report/make_report.py)")
 
 
 def flip_jobs(p):
@@ -176,7 +187,7 @@ def flip_jobs(p):
     jobs = []
     for side, rows in (p.run.json.get("bias") or {}).items():
         for r in rows:
-            if not r.get("available") or not flip_components(r):
+            if not r.get("available") or not flip_components(flip_mode(p.run), r):
                 continue
             vct_exr, pt_exr = p.run.stage_file(side, r["vct"], False), p.run.file("pt", r["pt"] + ".exr")
             if vct_exr and pt_exr:
@@ -186,9 +197,9 @@ def flip_jobs(p):
 
 def precompute_flips(p):
     """Every FLIP of the page in parallel child processes (vct_report/flip_batch.py)."""
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), cpu_ms()
     FLIP_RESULTS.update(flip_batch.run_all(flip_jobs(p)))
-    TIMES.nested("FLIP", 1000 * (time.perf_counter() - t0))
+    TIMES.nested("FLIP", 1000 * (time.perf_counter() - t0), cpu_ms() - c0)
 
 
 def flip_for(run, comp, vct_exr, pt_exr, out_dir):
@@ -209,10 +220,14 @@ def bias_section(p):
     if not b:
         return "".join(out) + missing("bias (needs the CPU reference and the path tracer in this run)")
     precompute_flips(p)
+    mode = flip_mode(run)
     out.append("<p>Reference = path tracer; relMSE = mean((VCT-PT)^2/(PT^2+eps)) with eps = 0.01; "
                "mean bias = mean(VCT-PT); relative bias = sum(VCT-PT)/sum(PT); SSIM on luminance (Gaussian 11x11); "
                "FLIP (HDR, flip-evaluator); noise-aware: fraction of pixels with |VCT-PT| > 3 sigma_PT (pooled 5x5 "
                "half-split variance) against what PT noise alone gives (Student t, 24 dof).</p>")
+    out.append('<p id="flip-note">FLIP: %s.</p>' % (
+        FLIP_OPT_IN if mode == "none" else "HDR-FLIP of %s against the path tracer" % (
+            "the full image" if mode == "full" else "every component")))
     for side, rows in b.items():
         out.append("<h3>%s vs path tracer</h3><table><tr><th>component</th><th>VCT</th><th>PT</th><th>relMSE</th>"
                    "<th>mean bias</th><th>rel. bias</th><th>SSIM</th><th>FLIP</th><th>&gt;3&sigma;</th><th>noise alone</th>"
@@ -229,7 +244,8 @@ def bias_section(p):
                        "<td class='v-%s'>%s</td></tr>" % (
                            E(r["component"]), E(r["vct"]), E(r["pt"]), fmt(r.get("rel_mse")), fmt(r.get("mean_bias")),
                            fmt(100 * r.get("relative_bias", 0), "%+.2f%%"), fmt(r.get("ssim"), "%.4f"),
-                           fmt(mean_flip, "%.4f") if mean_flip is not None else "n/a",
+                           fmt(mean_flip, "%.4f") if mean_flip is not None else (
+                               "n/a" if flip_components(mode, r) else "not computed"),
                            fmt(100 * r.get("fraction_beyond_k_sigma", 0), "%.2f%%"), fmt(100 * r.get("expected_fraction", 0), "%.2f%%"),
                            fmt(r.get("mean_bias_z"), "%.1f"), "warn" if r.get("significant") else "pass",
                            "bias beyond PT noise" if r.get("significant") else "within PT noise"))
@@ -327,12 +343,13 @@ def voxel_view(p):
     alpha = vol[..., 3] if vol.shape[3] >= 4 else vol[..., 0]
     zz, yy, xx = np.nonzero(alpha > 0)
     step = max(1, int(np.ceil(len(xx) / 30000)))
-    pts = []
-    for x, y, z in zip(xx[::step], yy[::step], zz[::step]):
-        c = vol[z, y, x, :3]
-        c = c / (1.0 + c)  # Reinhard, enough to tell surfaces apart
-        c = np.clip(c ** (1 / 2.2), 0, 1)
-        pts.append([int(x), int(y), int(z), "%02x%02x%02x" % tuple(int(v * 255) for v in c)])
+    xs, ys, zs = xx[::step], yy[::step], zz[::step]
+    # All points at once (a per-point loop was most of the walkthrough's time at 128^3).
+    c = vol[zs, ys, xs, :3]
+    c = c / (1.0 + c)  # Reinhard, enough to tell surfaces apart
+    rgb = (np.clip(c ** (1 / 2.2), 0, 1) * 255).astype(np.int64)
+    pts = [[int(x), int(y), int(z), "%02x%02x%02x" % (r, g, b)]
+           for x, y, z, (r, g, b) in zip(xs.tolist(), ys.tolist(), zs.tolist(), rgb.tolist())]
     return ('<figure><canvas id="voxel-canvas" width="360" height="360"></canvas><figcaption>occupied voxels (%d of %d shown), '
             'turn: <input id="voxel-rot" type="range" min="-180" max="180" value="30"></figcaption></figure>'
             '<script>window.VCT_VOXELS=%s;</script>') % (len(pts), len(xx), json.dumps({"n": int(n), "points": pts}, separators=(",", ":")))

@@ -437,11 +437,19 @@ Settings with_setting(const Settings& s, const std::string& key, const std::stri
 }
 
 namespace {
+// A Markdown table cell: a literal "|" (choice lists "a|b") would end the cell.
+std::string table_cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 template <typename S>
 void markdown_rows(std::ostringstream& o, const std::vector<SettingField<S>>& fields, const S& defaults,
                    const char* scope) {
   for (const auto& f : fields)
-    o << "| `" << scope << f.key << "` | `" << value_text(f.get(defaults)) << "` | " << allowed_text(f) << " | " << f.help
+    o << "| `" << scope << f.key << "` | `" << value_text(f.get(defaults)) << "` | " << table_cell(allowed_text(f))
+      << " | " << table_cell(f.help)
       << (f.gl_uniform ? std::string(" (GLSL `") + f.gl_uniform + "`)" : std::string()) << " |\n";
 }
 }  // namespace

@@ -1,0 +1,89 @@
+#include "validate_checks.h"
+
+#include <functional>
+
+#include "compare/conservative_occupancy.h"
+#include "compare/isolated_stages.h"
+#include "core/parallel_tasks.h"
+#include "facts_notes.h"
+#include "io/image_io.h"
+
+namespace vct::app {
+
+void write_pt_images(RunDir& run, const PtRun& pt) {
+  RunDir pd(run.file("pt"));
+  // One task per AOV, each its own files: the same bytes for any thread count.
+  std::vector<const std::pair<const std::string, Image>*> aovs;
+  for (const auto& aov : pt.aovs) aovs.push_back(&aov);
+  parallel_tasks(int64_t(aovs.size()), [&](int64_t i) {
+    const auto& [name, img] = *aovs[size_t(i)];
+    if (name.size() > 4 && name.substr(name.size() - 4) == "_var") write_exr(pd.file(name + ".exr"), img);
+    else pd.write_color(name, img);
+  });
+}
+
+namespace {
+constexpr int kConcurrentChecksBelowThreads = 4;
+
+struct Task {
+  std::string name;
+  std::function<void()> run;
+  double ms = 0.0, cpu_ms = -1.0;
+};
+}  // namespace
+
+CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, const BackendRun& ref,
+                        const BackendRun& gl, const PtRun& pt, PhaseTimes& phases) {
+  CheckResults r;
+  // Named before any task starts: the writers then only read the sets the others read.
+  if (ref.ok()) cmp::name_stage_files(run.file("ref"), r.ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
+  if (gl.ok()) cmp::name_stage_files(run.file("gl"), r.gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
+  std::vector<Task> tasks;
+  // The longest chain first (one thread: its inner loops run serially inside a task).
+  if (ref.ok() && gl.ok())
+    tasks.push_back({"compare gl vs ref (stages, difference images; cones on gl's voxels)", [&] {
+                       cmp::Report rep =
+                           cmp::compare_stage_sets(r.ref_set, r.gl_set, {10, run.file("compare"), "compare/"});
+                       // A conservative GL mode (conservative_raster) is judged as a superset of the exact set.
+                       cmp::judge_conservative_mode(rep, r.ref_set, r.gl_set, &scene, 10);
+                       // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a
+                       // legitimate voxel tie upstream does not fail a correct marcher downstream.
+                       cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, r.gl_set);
+                       note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
+                       r.report = std::move(rep);
+                     }});
+  if (ref.ok()) tasks.push_back({"write stage set ref", [&] { cmp::write_named_stage_set(r.ref_set); }});
+  if (gl.ok()) tasks.push_back({"write stage set gl", [&] { cmp::write_named_stage_set(r.gl_set); }});
+  if (pt.ok()) tasks.push_back({"write pt images", [&] { write_pt_images(run, pt); }});
+  if (ref.ok() && pt.ok())
+    tasks.push_back({"bias ref vs pt", [&] {
+                       r.bias_ref = cmp::measure_bias(r.ref_set, pt.aovs, {3.0, run.file("bias"), "bias/"});
+                     }});
+  if (ref.ok() && gl.ok() && pt.ok())
+    tasks.push_back({"bias gl vs pt", [&] {
+                       r.bias_gl = cmp::measure_bias(r.gl_set, pt.aovs, {3.0, run.file("bias_gl"), "bias_gl/"});
+                     }});
+  // With few cores the tasks share them better than one task's inner loops do (the comparison
+  // is one thread); with many, a task alone uses them all, and a task's inner loops run serially
+  // inside the group: there the tasks run one after the other.
+  if (thread_count() >= kConcurrentChecksBelowThreads) {
+    for (const Task& t : tasks) phases.time(t.name, t.run);
+    return r;
+  }
+  const std::string group = "stage sets, comparison, bias (" + std::to_string(tasks.size()) + " tasks on " +
+                            std::to_string(thread_count()) + " threads)";
+  phases.time(group, [&] {
+    parallel_tasks(int64_t(tasks.size()), [&](int64_t i) {
+      Task& t = tasks[size_t(i)];
+      Stopwatch sw;
+      const double cpu0 = thread_cpu_ms();
+      t.run();
+      t.ms = sw.ms();
+      t.cpu_ms = thread_cpu_ms() - cpu0;
+    });
+  });
+  for (const Task& t : tasks) phases.add_concurrent(t.name, t.ms, t.cpu_ms);
+  return r;
+}
+
+}  // namespace vct::app
