@@ -902,7 +902,8 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       else
         rep.stages.push_back(model == ToleranceModel::VoxelOccupancy ? compare_occupancy(rs, ts, opt, taint)
                                                                      : compare_radiance(rs, ts, opt, radiance_taint));
-      if (model == ToleranceModel::VoxelRadiance) {
+      // The upstream share needs the reference's voxels; a set without them was judged missing.
+      if (model == ToleranceModel::VoxelRadiance && rs.volumes.count(st::kVoxelRadiance)) {
         taint.resize(std::max(taint.size(), radiance_taint.size()), 0);
         for (size_t i = 0; i < radiance_taint.size(); ++i) taint[i] |= radiance_taint[i];
         size_t tainted = 0;
@@ -935,7 +936,10 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
                                                light_space ? nullptr : depth_hint, stage_opt, slack,
                                                shown.applies_to(stage) ? &shown : nullptr, tie_range));
     } else if (model == ToleranceModel::Mip) {
-      rep.stages.push_back(compare_mip(stage, rs, ts, opt, taint));
+      // The mip bounds and taint are taken on the reference's level 0.
+      rep.stages.push_back(rs.volumes.count(st::kVoxelRadiance)
+                               ? compare_mip(stage, rs, ts, opt, taint)
+                               : missing(stage, "the reference's voxel.radiance is missing"));
     } else {
       rep.stages.push_back(compare_volume_plain(stage, rs.volumes.at(stage), ts.volumes.at(stage), 1e-6, 1e-5, opt));
     }

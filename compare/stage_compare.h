@@ -27,11 +27,9 @@ struct CompareOptions {
   // image.final's display bound grows by one step of its bit depth (docs/compare.md, "Display
   // transform").
   bool direct_decoded_from_display = false;
-  // voxel.radiance judged end to end: voxels beyond bound + shading slack tolerated up to this
-  // fraction of the checked voxels (warn) — the slack is taken on the reference's shadow maps, and
-  // the test's own map may differ at its edge texels. Where such voxels exist, validate and
-  // compare --scene re-judge the stage on the test's own maps with 0 (none tolerated;
-  // docs/compare.md, "Voxel radiance on the test's own shadow maps").
+  // voxel.radiance: voxels beyond bound + shading slack (shadow-test ties the slack does not
+  // see) tolerated up to this fraction of the checked voxels (warn); 0: none (docs/compare.md,
+  // "Voxel radiance on the test's own shadow maps", says why 0.5 % stays).
   double shading_tie_fraction = 0.005;
 };
 

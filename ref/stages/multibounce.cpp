@@ -30,12 +30,7 @@ double total_energy(const Volume& radiance) {
   return sum;
 }
 
-namespace {
-// Particle light is float arithmetic on both sides (positions from a hash, falloff): a voxel it
-// reaches is no longer exact (VoxelGrid::exact). The CAS interval moves with it: GL's resolve adds
-// the particles to the unpacked CAS value and stores the sum (gl/shaders/voxel_resolve.comp), so
-// an interval without them failed every voxel near a fire (demo_room; docs/compare.md, the `cas-rgba8-interval` row).
-void add_particles(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
+void add_particles_to_grid(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
   if (scene.emitters.empty()) return;
   const Volume before = g.radiance;
   add_particles_to_voxels(scene, s, g.radiance);
@@ -47,9 +42,10 @@ void add_particles(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
       if (g.radiance.data[i * 4 + size_t(c)] != before.data[i * 4 + size_t(c)]) g.exact.data[i] = 0.0f;
 }
 
+namespace {
 void finish_frame(const Scene& scene, const VctSettings& s, MultibounceResult& r) {
   Stopwatch sw;
-  add_particles(scene, s, r.grid);
+  add_particles_to_grid(scene, s, r.grid);
   r.timings_ms["particles_voxels"] += sw.ms();
   sw = Stopwatch();
   r.mips = build_mips(r.grid.radiance, s.anisotropic);

@@ -26,6 +26,13 @@ constexpr float kBounceMinLod = 1.0f;
 BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s);
 BounceLight make_bounce_light(const Scene& scene, VoxelMips&& previous, const VctSettings& s) = delete;
 
+/// Adds the particles' light to a reduced grid as the frame does (add_particles_to_voxels): a voxel
+/// it reaches is no longer exact (VoxelGrid::exact: float arithmetic on both sides), and the CAS
+/// interval moves with it, since GL's resolve adds the particles to the unpacked CAS value
+/// (gl/shaders/voxel_resolve.comp); an interval without them fails every voxel near a fire
+/// (demo_room; docs/compare.md, the `cas-rgba8-interval` row).
+void add_particles_to_grid(const Scene& scene, const VctSettings& s, VoxelGrid& g);
+
 /// Total RGB radiance summed over the base level (the energy recorded per frame), in a fixed
 /// order (double accumulation, voxel order).
 double total_energy(const Volume& radiance);

@@ -90,6 +90,19 @@ TEST(ToleranceCases, AMipChainThatStopsShortFails) {
   EXPECT_EQ(find(compare_stage_sets(ref, bare), "mip.iso.4").verdict, Verdict::Missing);
 }
 
+// A reference without voxels (an engine's set given as the reference) against a test with them:
+// the voxel stages are missing, and nothing reads the absent volume (it threw map::at before).
+TEST(ToleranceCases, VoxelsOnTheTestSideOnlyAreMissingNotACrash) {
+  StageSet ref = mip_set(3);
+  ref.volumes.erase("voxel.radiance");
+  const StageSet test = mip_set(3);
+  Report r;
+  ASSERT_NO_THROW(r = compare_stage_sets(ref, test));
+  EXPECT_EQ(find(r, "voxel.radiance").verdict, Verdict::Missing);
+  EXPECT_EQ(find(r, "voxel.occupancy").verdict, Verdict::Missing);
+  EXPECT_EQ(find(r, "mip.iso.1").verdict, Verdict::Missing);
+}
+
 TEST(ToleranceCases, LightInTransparentVoxelsIsJudged) {
   StageSet ref = mip_set(1);
   ref.volumes["voxel.radiance"].set_rgba(3, 4, 5, vec4(0.6f, 0.3f, 0.1f, 0.0f));  // particle light, opacity 0

@@ -1,8 +1,7 @@
 // voxel.radiance judged on the test's own shadow maps (docs/compare.md, "Voxel radiance on the
 // test's own shadow maps"): the reference injects its own fragments through the test's maps, so a
 // map that differs from the reference's (texels that tie on GL's side) moves no voxel beyond its
-// bound, and no voxel beyond it is tolerated there: the slack holds every tap the voxel raster's
-// snap may read (stages/snap_visibility.h), so no counted share of "ties" is left.
+// bound. (The counted share of shading ties stays: docs/compare.md says which voxel keeps it.)
 #include <gtest/gtest.h>
 
 #include "compare/isolated_stages.h"
@@ -61,34 +60,31 @@ TEST(VoxelOwnMaps, AShiftedMapOfTheTestsOwnMovesNoVoxelBeyondTheBound) {
   EXPECT_NE(own.note.find("on the test's own shadow maps: 0 of"), std::string::npos) << own.note;
 }
 
-// The same "GL" with three lit voxels at 1.5x (three of nine PCF taps lit that should not be, as
-// atrium's unexplained voxels once were): far fewer than the end-to-end share of 0.5 %, yet on
-// the test's own maps they fail — there a voxel beyond bound + slack is a bug, not a tie.
-TEST(VoxelOwnMaps, AFewVoxelsBeyondTheBoundOnTheTestsOwnMapsFail) {
-  const Scene scene = load_scene("");
-  const Settings s = small();
+// demo_room's fire with the CAS reduction and a bounce input: the re-injected grid must carry the
+// particles' light in its CAS interval as the frame does (multibounce.h, add_particles_to_grid).
+// Without it, the particle-lit transparent voxels' interval stayed [0, 0] and 59 voxels failed the
+// re-judgement at 64^2, grid 32 where end to end none did (found by the cross-product matrix).
+TEST(VoxelOwnMaps, ReinjectedCasIntervalHoldsTheParticlesLight) {
+  const Scene scene = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/demo_room.gltf");
+  Settings s = small();
+  s.vct.grid = 16;
+  s.vct.reduction = Reduction::CasRgba8;
+  s.vct.bounces = 2;
   const FrameResult ref = render_ref_frame(scene, s);
-  FrameResult gl = ref;
-  Image& d = gl.shadow_maps[0].depth;
-  const Image orig = d;
-  for (int y = 0; y < d.height; ++y)
-    for (int x = 1; x < d.width; ++x) d.at(x, y, 0) = orig.at(x - 1, y, 0);
-  const Voxelization vox = voxelize_conservative(scene, s.vct.grid);
-  gl.voxels = inject_and_reduce(scene, vox, gl.shadow_maps, s.vct);
-  add_particles_to_voxels(scene, s.vct, gl.voxels.radiance);
-  Volume& v = gl.voxels.radiance;
-  int changed = 0;
-  for (size_t i = 0; i < v.voxel_count() && changed < 3; i += 97) {
-    float* p = &v.data[i * 4];
-    if (p[3] <= 0.0f || p[0] < 0.05f) continue;
-    for (int c = 0; c < 3; ++c) p[c] *= 1.5f;
-    ++changed;
+  ASSERT_GT(ref.bounce_input.voxel_count(), 0u);
+  const std::optional<VoxelGrid> grid = reference_voxels_on_test_inputs(scene, ref, s.vct);
+  ASSERT_TRUE(grid);
+  size_t lit = 0;
+  for (size_t i = 0; i < grid->radiance.voxel_count(); ++i) {
+    const float* v = &grid->radiance.data[i * 4];
+    if (v[3] > 0.0f || v[0] + v[1] + v[2] <= 0.0f) continue;  // transparent voxels the fire lights
+    ++lit;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LE(grid->cas_lo.data[i * 4 + size_t(c)], v[c]) << "voxel " << i;
+      EXPECT_GE(grid->cas_hi.data[i * 4 + size_t(c)], v[c]) << "voxel " << i;
+    }
   }
-  ASSERT_EQ(changed, 3);
-  const StageVerdict own = radiance_judged(scene, ref, gl, s.vct, true);
-  EXPECT_EQ(own.verdict, Verdict::Fail) << own.note;
-  EXPECT_NE(own.note.find("on the test's own shadow maps: 3 of"), std::string::npos) << own.note;
-  EXPECT_LT(3.0, 0.005 * double(own.checked));  // the end-to-end share would have let them pass
+  EXPECT_GT(lit, 0u);
 }
 
 }  // namespace
