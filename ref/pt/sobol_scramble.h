@@ -35,14 +35,21 @@ constexpr uint32_t reverse_bits(uint32_t x) {
 }
 
 namespace detail {
+/// Sobol dimension 1's direction numbers V_1..V_32 (primitive polynomial x + 1: V_k = V_{k-1} ^
+/// (V_{k-1} >> 1), V_1 = 1/2), generated from the recurrence.
+constexpr std::array<uint32_t, 32> sobol_dim1_directions() {
+  std::array<uint32_t, 32> dir{};
+  dir[0] = 0x80000000u;
+  for (size_t k = 1; k < 32; ++k) dir[k] = dir[k - 1] ^ (dir[k - 1] >> 1);
+  return dir;
+}
+
 /// Sobol dimension 1 by bytes of the index: table[b][v] = XOR of V_{8b+k+1} over the set bits k
 /// of v, so a 32-bit index costs four lookups instead of a loop over its bits.
 struct SobolDim1Table {
   std::array<std::array<uint32_t, 256>, 4> t{};
   constexpr SobolDim1Table() {
-    uint32_t dir[32] = {};
-    dir[0] = 0x80000000u;
-    for (int k = 1; k < 32; ++k) dir[k] = dir[k - 1] ^ (dir[k - 1] >> 1);
+    const std::array<uint32_t, 32> dir = sobol_dim1_directions();
     for (int b = 0; b < 4; ++b)
       for (uint32_t v = 0; v < 256; ++v) {
         uint32_t x = 0;
@@ -60,9 +67,7 @@ inline constexpr SobolDim1Table kSobolDim1{};
 struct SobolDim1ReversedTable {
   std::array<std::array<uint32_t, 256>, 4> t{};
   constexpr SobolDim1ReversedTable() {
-    uint32_t dir[32] = {};
-    dir[0] = 0x80000000u;
-    for (int k = 1; k < 32; ++k) dir[k] = dir[k - 1] ^ (dir[k - 1] >> 1);
+    const std::array<uint32_t, 32> dir = sobol_dim1_directions();
     for (int b = 0; b < 4; ++b)
       for (uint32_t v = 0; v < 256; ++v) {
         uint32_t x = 0;
