@@ -226,6 +226,12 @@ def pair_stats(a, b):
     return mean, se, float(per_pixel_var.mean())
 
 
+
+def seed_pair_stats(runs):
+    """Per-pixel variance of two seeds' runs (image, wall s, CPU s), and the best wall and CPU time."""
+    _, _, var = pair_stats(runs[0][0], runs[1][0])
+    return var, min(r[1] for r in runs), min(r[2] for r in runs)
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--test", action="store_true")
@@ -281,15 +287,13 @@ def main(argv):
                  np.round((om - bm) / np.sqrt(ose ** 2 + bse ** 2), 2)))
     for ours_name in ours_samplers:
         ours = ours_by[ours_name]
-        _, _, ovar = pair_stats(ours[0][0], ours[1][0])
-        ot, oc = min(r[1] for r in ours), min(r[2] for r in ours)
+        ovar, ot, oc = seed_pair_stats(ours)
         oe = 1.0 / (ot * ovar)
         print("  ours, pt.sampler %s, pixel centres: %.2f s (%d thread%s), CPU %.2f s, per-pixel variance %.5g"
               % (ours_name, ot, a.threads, "s"[:a.threads > 1], oc, ovar))
         for name in samplers:
             theirs = theirs_by[name]
-            _, _, mvar = pair_stats(theirs[0][0], theirs[1][0])
-            mt, mc = min(r[1] for r in theirs), min(r[2] for r in theirs)
+            mvar, mt, mc = seed_pair_stats(theirs)
             me = 1.0 / (mt * mvar)
             # By wall time, and by CPU time (all threads of each renderer: steadier on a shared machine).
             print("    against mitsuba '%s' (box filter; %.2f s, CPU %.2f s, per-pixel variance %.5g): "
