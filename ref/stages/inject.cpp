@@ -5,6 +5,7 @@
 #include "core/parallel.h"
 #include "stages/direct.h"
 #include "stages/fragment_exactness.h"
+#include "stages/coverage_ties.h"
 #include "stages/fragment_slack.h"
 #include "stages/reduction.h"
 #include "stages/voxel_fill.h"
@@ -103,9 +104,10 @@ VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const s
   VoxelGrid g = reduce_fragments(vox, values, settings);
   // Solid interior and thickening (voxel_fill.h) add opacity before particles and mips.
   fill_voxels(scene, vox, settings, g.radiance);
-  g.shading_slack =
-      voxel_shading_slack(vox, fragment_shading_slack(scene, vox, values, maps, settings, bounce));
+  const std::vector<float> slack = fragment_shading_slack(scene, vox, values, maps, settings, bounce);
+  g.shading_slack = voxel_shading_slack(vox, slack);
   g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
+  widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);
   return g;
 }
 

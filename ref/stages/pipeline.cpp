@@ -6,6 +6,7 @@
 #include "core/memory_budget.h"
 #include "io/run_dir.h"
 #include "stages/composite.h"
+#include "stages/coverage_ties.h"
 #include "stages/direct.h"
 #include "stages/direct_slack.h"
 #include "stages/gbuffer.h"
@@ -38,6 +39,7 @@ Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, const std:
   if (s.voxelizer == Voxelizer::Conservative) return conservative;
   Voxelization gpu;
   timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, positions); });
+  timed(r, "coverage_ties", [&] { add_coverage_ties(scene, gpu); });
   timed(r, "holes", [&] { r.holes = hole_map(conservative, gpu); });
   return gpu;
 }

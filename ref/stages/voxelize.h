@@ -33,6 +33,13 @@ struct Voxelization {
   std::vector<VoxelFragment> fragments;
   Volume occupancy;  // 1 channel, 1 where at least one fragment, else 0
   int64_t covered = 0;  // number of occupied voxels
+  /// The GPU rule's MSAA sample positions (pixel units); empty for the conservative voxelizer.
+  std::vector<vec2> samples;
+  /// Coverage ties (stages/coverage_ties.h, filled by add_coverage_ties; empty until then): per
+  /// fragment, 1 where a correct GL may not make it, and the fragments it may make besides these
+  /// (same order as `fragments`).
+  std::vector<uint8_t> may_drop;
+  std::vector<VoxelFragment> may_add;
 };
 
 /// Voxel-space coordinates: (world - origin) / size * n, so voxel i covers [i, i+1).

@@ -62,7 +62,9 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
       });
     }
   });
-  return finish_voxelization(n, per_tri);
+  Voxelization vox = finish_voxelization(n, per_tri);
+  vox.samples = samples;
+  return vox;
 }
 
 }  // namespace vct

@@ -1,7 +1,7 @@
 // voxel.radiance judged on the test's own shadow maps (docs/compare.md, "Voxel radiance on the
 // test's own shadow maps"): the reference injects its own fragments through the test's maps, so a
 // map that differs from the reference's (texels that tie on GL's side) moves no voxel beyond its
-// bound. (The counted share of shading ties stays: docs/compare.md says which voxel keeps it.)
+// bound, with no share of shading ties left there (docs/compare.md, "Voxel shading slack").
 #include <gtest/gtest.h>
 
 #include "compare/isolated_stages.h"

@@ -1,0 +1,197 @@
+#include "stages/coverage_ties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "stages/fragment_slack.h"
+#include "stages/gbuffer_ties.h"
+
+namespace vct {
+
+namespace {
+
+// Fragments are sorted by (voxel linear index, triangle): the key orders them totally.
+int64_t key_voxel(const Voxelization& v, const VoxelFragment& f) {
+  return (int64_t(f.voxel.z) * v.n + f.voxel.y) * v.n + f.voxel.x;
+}
+bool key_less(const Voxelization& v, const VoxelFragment& a, const VoxelFragment& b) {
+  const int64_t la = key_voxel(v, a), lb = key_voxel(v, b);
+  return la != lb ? la < lb : a.triangle < b.triangle;
+}
+bool same_key(const VoxelFragment& a, const VoxelFragment& b) {
+  return a.voxel == b.voxel && a.triangle == b.triangle;
+}
+
+// Walks two sorted fragment lists together: marks fragments of `vox` missing from `shifted`, and
+// collects those of `shifted` missing from `vox`.
+void merge_shifted(const Voxelization& vox, const Voxelization& shifted, std::vector<uint8_t>& may_drop,
+                   std::vector<VoxelFragment>& may_add) {
+  size_t i = 0, j = 0;
+  const auto& a = vox.fragments;
+  const auto& b = shifted.fragments;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && key_less(vox, a[i], b[j]))) {
+      may_drop[i++] = 1;
+    } else if (i == a.size() || key_less(vox, b[j], a[i])) {
+      may_add.push_back(b[j++]);
+    } else {
+      ++i, ++j;
+    }
+  }
+}
+
+// Per voxel, where the fragments of `vox` and of `extra` (both sorted) start.
+struct VoxelRuns {
+  size_t begin = 0, end = 0, extra_begin = 0, extra_end = 0;
+};
+
+// Calls visit(runs) for every voxel of `vox` that has an uncertain fragment or an extra one.
+void for_each_uncertain_voxel(const Voxelization& vox, const std::function<void(const VoxelRuns&)>& visit) {
+  const auto& f = vox.fragments;
+  const auto& x = vox.may_add;
+  size_t b = 0, xb = 0;
+  while (b < f.size()) {
+    size_t e = b;
+    bool uncertain = false;
+    while (e < f.size() && f[e].voxel == f[b].voxel) uncertain |= vox.may_drop[e++] != 0;
+    const int64_t key = key_voxel(vox, f[b]);
+    while (xb < x.size() && key_voxel(vox, x[xb]) < key) ++xb;
+    size_t xe = xb;
+    while (xe < x.size() && key_voxel(vox, x[xe]) == key) ++xe;
+    if (uncertain || xe > xb) visit({b, e, xb, xe});
+    b = e;
+    xb = xe;
+  }
+}
+
+// The largest mean of `certain` plus a subset of `uncertain` (not empty when `certain` is): the
+// subset with the largest mean of any given size is the largest values, and the best size is
+// found by trying every prefix of the sorted values.
+double largest_mean(const std::vector<double>& certain, std::vector<double> uncertain) {
+  std::sort(uncertain.begin(), uncertain.end(), std::greater<>());
+  double sum = 0.0;
+  for (double c : certain) sum += c;
+  double n = double(certain.size());
+  double best = certain.empty() ? -std::numeric_limits<double>::infinity() : sum / n;
+  for (double u : uncertain) {
+    sum += u, n += 1.0;
+    best = std::max(best, sum / n);
+  }
+  return best;
+}
+
+std::vector<double> negated(std::vector<double> v) {
+  for (double& x : v) x = -x;
+  return v;
+}
+
+// How far GL's voxel-space depth along the dominant axis (voxelize.frag floors it to pick the
+// voxel) may lie from the reference's: the point GL interpolates may be voxel_snap_reach away on
+// each window axis, which moves the depth by the plane's in-window gradient times that reach;
+// GL's barycentrics are floats (a few roundings of values in [-1, 2]: 2^-20 each, with room),
+// times the vertices' depth differences. Infinite for a sliver (no bound on the reach).
+double depth_tie_margin(const Scene& scene, int n, const VoxelFragment& f, int& axis, double& depth) {
+  const uvec3 t = scene.triangles[f.triangle];
+  const vec3 p[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
+  axis = dominant_axis(p[0], p[1], p[2]);
+  const int pu = axis == 0 ? 1 : 0, pv = axis == 2 ? 1 : 2;  // as voxelize_gpu.cpp's window axes
+  glm::dvec3 v[3];
+  for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, p[i]);
+  const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
+  depth = v[0][axis] + double(f.b1) * e1[axis] + double(f.b2) * e2[axis];
+  const double det = e1[pu] * e2[pv] - e2[pu] * e1[pv];
+  const double reach = voxel_snap_reach(scene, n, f);
+  if (std::abs(det) < 1e-300 || !std::isfinite(reach)) return std::numeric_limits<double>::infinity();
+  // d(depth)/d(u, v): the depth edges times the inverse of the window edges' matrix.
+  const double gu = (e1[axis] * e2[pv] - e2[axis] * e1[pv]) / det;
+  const double gv = (e2[axis] * e1[pu] - e1[axis] * e2[pu]) / det;
+  return reach * (std::abs(gu) + std::abs(gv)) + 0x1p-20 * (std::abs(e1[axis]) + std::abs(e2[axis]));
+}
+
+// A fragment whose depth lies within its margin of a voxel boundary may be written to the voxel
+// on the other side: it may be dropped here and added there.
+void add_depth_ties(const Scene& scene, Voxelization& vox, std::vector<VoxelFragment>& added) {
+  for (size_t i = 0; i < vox.fragments.size(); ++i) {
+    const VoxelFragment& f = vox.fragments[i];
+    int axis = 0;
+    double depth = 0.0;
+    const double margin = depth_tie_margin(scene, vox.n, f, axis, depth);
+    const int index = f.voxel[axis];
+    for (const int side : {-1, 1}) {
+      const double to_boundary = side < 0 ? depth - double(index) : double(index + 1) - depth;
+      if (!(to_boundary <= margin) || index + side < 0 || index + side >= vox.n) continue;
+      vox.may_drop[i] = 1;
+      VoxelFragment moved = f;
+      moved.voxel[axis] += side;
+      added.push_back(moved);
+    }
+  }
+}
+
+}  // namespace
+
+MeanRange admissible_mean_range(const std::vector<double>& certain_lo, const std::vector<double>& certain_hi,
+                                std::vector<double> uncertain_lo, std::vector<double> uncertain_hi) {
+  MeanRange r;
+  r.hi = largest_mean(certain_hi, std::move(uncertain_hi));
+  r.lo = -largest_mean(negated(certain_lo), negated(std::move(uncertain_lo)));
+  return r;
+}
+
+void add_coverage_ties(const Scene& scene, Voxelization& vox) {
+  vox.may_drop.assign(vox.fragments.size(), 0);
+  vox.may_add.clear();
+  if (vox.samples.empty()) return;
+  std::vector<VoxelFragment> added;
+  for (const vec2 shift : {vec2(-1, -1), vec2(-1, 1), vec2(1, -1), vec2(1, 1)}) {
+    std::vector<vec2> moved = vox.samples;
+    for (vec2& p : moved) p += shift * float(kRasterTieShift);
+    merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, moved), vox.may_drop, added);
+  }
+  add_depth_ties(scene, vox, added);
+  // A fragment found by several shifts is the same fragment (evaluated at its pixel centre,
+  // whichever samples covered it): keep one.
+  std::sort(added.begin(), added.end(), [&](const VoxelFragment& a, const VoxelFragment& b) { return key_less(vox, a, b); });
+  for (const VoxelFragment& f : added)
+    if (vox.may_add.empty() || !same_key(vox.may_add.back(), f)) vox.may_add.push_back(f);
+}
+
+void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
+                             const std::vector<float>& fragment_slack, const std::vector<ShadowMap>& maps,
+                             const VctSettings& settings, const BounceLight* bounce, Volume& slack,
+                             Volume& exact) {
+  if (vox.may_drop.size() != vox.fragments.size()) return;  // add_coverage_ties not run
+  Voxelization extra;
+  extra.n = vox.n;
+  extra.fragments = vox.may_add;
+  const std::vector<vec3> extra_values = fragment_radiance(scene, extra, maps, settings, bounce);
+  const std::vector<float> extra_slack = fragment_shading_slack(scene, extra, extra_values, maps, settings, bounce);
+  for_each_uncertain_voxel(vox, [&](const VoxelRuns& r) {
+    double widest = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> clo, chi, ulo, uhi;
+      double mean = 0.0;
+      for (size_t k = r.begin; k < r.end; ++k) {
+        const double v = double(values[k][c]), s = double(fragment_slack[k]);
+        mean += v;
+        (vox.may_drop[k] ? ulo : clo).push_back(v - s);
+        (vox.may_drop[k] ? uhi : chi).push_back(v + s);
+      }
+      mean /= double(r.end - r.begin);
+      for (size_t k = r.extra_begin; k < r.extra_end; ++k) {
+        ulo.push_back(double(extra_values[k][c]) - double(extra_slack[k]));
+        uhi.push_back(double(extra_values[k][c]) + double(extra_slack[k]));
+      }
+      const MeanRange m = admissible_mean_range(clo, chi, std::move(ulo), std::move(uhi));
+      widest = std::max({widest, m.hi - mean, mean - m.lo});
+    }
+    const ivec3 v = vox.fragments[r.begin].voxel;
+    float& s = *slack.voxel(v.x, v.y, v.z);
+    s = std::max(s, std::nextafter(float(widest), std::numeric_limits<float>::infinity()));  // rounded up
+    if (exact.voxel_count() > 0) *exact.voxel(v.x, v.y, v.z) = 0.0f;
+  });
+}
+
+}  // namespace vct

@@ -1,0 +1,134 @@
+// Coverage ties of the voxel raster (stages/coverage_ties.h): the admissible means against brute
+// force, and the fragments a snapped raster may drop or add against voxelizations of triangles
+// whose window vertices really moved by one sub-pixel step.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "stage_test_scene.h"
+#include "stages/coverage_ties.h"
+#include "stages/raster.h"
+#include "stages/voxelize.h"
+
+namespace vct {
+namespace {
+
+// {1, 1} certain, {4, 0} uncertain: the means of {1,1}, {1,1,4}, {1,1,0}, {1,1,4,0} are 1, 2,
+// 2/3 and 1.5, so the range is [2/3, 2]. With nothing certain the set may be {3} or {1} alone.
+TEST(CoverageTies, MeanRangeByHand) {
+  const MeanRange a = admissible_mean_range({1, 1}, {1, 1}, {4, 0}, {4, 0});
+  EXPECT_DOUBLE_EQ(a.lo, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(a.hi, 2.0);
+  const MeanRange b = admissible_mean_range({}, {}, {3, 1}, {3, 1});
+  EXPECT_DOUBLE_EQ(b.lo, 1.0);
+  EXPECT_DOUBLE_EQ(b.hi, 3.0);
+  // Each fragment's own slack widens its end: lo from value - slack, hi from value + slack.
+  const MeanRange c = admissible_mean_range({0.9}, {1.1}, {}, {});
+  EXPECT_DOUBLE_EQ(c.lo, 0.9);
+  EXPECT_DOUBLE_EQ(c.hi, 1.1);
+}
+
+// Every subset of up to 6 uncertain values, added to 0-3 certain ones: the extremes of the
+// enumerated means equal the range.
+TEST(CoverageTies, MeanRangeEqualsTheExtremesOfEverySubset) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> value(0.0, 2.0);
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<double> certain(size_t(trial % 4)), uncertain(size_t(1 + trial % 6));
+    for (double& v : certain) v = value(rng);
+    for (double& v : uncertain) v = value(rng);
+    double lo = 1e300, hi = -1e300;
+    for (unsigned mask = 0; mask < (1u << uncertain.size()); ++mask) {
+      double sum = 0.0;
+      size_t n = certain.size();
+      for (double c : certain) sum += c;
+      for (size_t k = 0; k < uncertain.size(); ++k)
+        if (mask >> k & 1u) sum += uncertain[k], ++n;
+      if (n == 0) continue;
+      lo = std::min(lo, sum / double(n));
+      hi = std::max(hi, sum / double(n));
+    }
+    const MeanRange r = admissible_mean_range(certain, certain, uncertain, uncertain);
+    EXPECT_NEAR(r.lo, lo, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(r.hi, hi, 1e-12) << "trial " << trial;
+  }
+}
+
+using FragmentKey = std::tuple<int, int, int, uint32_t>;
+std::set<FragmentKey> keys(const std::vector<VoxelFragment>& fragments) {
+  std::set<FragmentKey> k;
+  for (const VoxelFragment& f : fragments) k.insert({f.voxel.x, f.voxel.y, f.voxel.z, f.triangle});
+  return k;
+}
+
+// 150 random tilted triangles (z-dominant, unshared vertices, a few voxels to a fraction of one) in a
+// 16^3 grid. Then every vertex moves by -1, 0 or +1 sub-pixel step (2^-8 voxel) on
+// each window axis (x, y), its depth kept, as a snapping GL may place it; the scene is voxelized
+// again with the same samples, 200 times. Every fragment that run loses must be one the reference marked
+// may_drop, and every fragment it gains one of may_add.
+TEST(CoverageTies, EverySnappedVoxelizationIsAmongTheTies) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> centre(-1.6f, 1.6f), size(0.02f, 0.6f), tilt(-0.7f, 0.7f);
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.5f));
+  for (int t = 0; t < 150; ++t) {
+    const vec3 c(centre(rng), centre(rng), centre(rng) * 0.5f);
+    const float r = size(rng), gx = tilt(rng), gy = tilt(rng);  // depth slopes, |n_z| dominant
+    const vec3 p[3] = {c + vec3(-r, -r * 0.7f, 0), c + vec3(r, -r * 0.2f, 0), c + vec3(-r * 0.1f, r, 0)};
+    vec3 q[3];
+    for (int i = 0; i < 3; ++i) q[i] = p[i] + vec3(0, 0, gx * (p[i].x - c.x) + gy * (p[i].y - c.y));
+    test::add_triangle(s, q[0], q[1], q[2], m);
+  }
+  s.bounds.add(vec3(-2.0f));
+  s.bounds.add(vec3(2.0f));
+  s.volume = fit_volume(s.bounds);
+  const int n = 16;
+  Voxelization vox = voxelize_gpu_rule(s, n, 4);
+  add_coverage_ties(s, vox);
+  std::set<FragmentKey> droppable, addable = keys(vox.may_add);
+  for (size_t i = 0; i < vox.fragments.size(); ++i)
+    if (vox.may_drop[i]) droppable.insert({vox.fragments[i].voxel.x, vox.fragments[i].voxel.y, vox.fragments[i].voxel.z, vox.fragments[i].triangle});
+  const std::set<FragmentKey> base = keys(vox.fragments);
+  const float step = s.volume.size / float(n) / 256.0f;
+  std::uniform_int_distribution<int> snap(-1, 1);
+  size_t changed = 0;
+  for (int run = 0; run < 200; ++run) {
+    Scene moved = s;
+    for (vec3& p : moved.positions) p += vec3(float(snap(rng)) * step, float(snap(rng)) * step, 0.0f);
+    const std::set<FragmentKey> now = keys(voxelize_gpu_rule(moved, n, 4).fragments);
+    for (const FragmentKey& k : base) {
+      if (now.count(k)) continue;
+      ++changed;
+      EXPECT_TRUE(droppable.count(k)) << "lost a fragment not marked may_drop, triangle " << std::get<3>(k);
+    }
+    for (const FragmentKey& k : now) {
+      if (base.count(k)) continue;
+      ++changed;
+      EXPECT_TRUE(addable.count(k)) << "gained a fragment not in may_add, triangle " << std::get<3>(k);
+    }
+  }
+  std::printf("%zu fragments, %zu may be dropped, %zu may be added; %zu changes over the snaps\n", base.size(),
+              droppable.size(), addable.size(), changed);
+  EXPECT_GT(changed, 0u);  // the snaps did change some fragment sets: the test tests something
+  EXPECT_LT(droppable.size() + addable.size(), base.size() / 2);  // and the ties are not everything
+}
+
+// The conservative voxelizer has no samples: no ties.
+TEST(CoverageTies, ConservativeVoxelizationHasNone) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(0.5f));
+  test::add_quad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {0, 1, 0}, m);
+  s.volume = fit_volume(s.bounds);
+  Voxelization vox = voxelize_conservative(s, 8);
+  add_coverage_ties(s, vox);
+  EXPECT_TRUE(vox.may_add.empty());
+  EXPECT_EQ(std::count(vox.may_drop.begin(), vox.may_drop.end(), 1), 0);
+}
+
+}  // namespace
+}  // namespace vct
