@@ -24,7 +24,8 @@ const std::vector<StageGroup>& stage_groups() {
       // The CPU's "voxelize" is the conservative voxelizer (always run, for the holes map).
       {"voxelize+inject+mips",
        {"voxelize", "resolve", "voxel_fill", "mips", "particles_voxels"},
-       {"voxelize", "voxelize_gpu_rule", "holes", "inject", "mips", "particles_voxels", "inject_mips_multibounce"}},
+       {"voxelize", "voxelize_gpu_rule", "coverage_ties", "holes", "inject", "mips", "particles_voxels",
+        "inject_mips_multibounce"}},
       {"direct", {"direct"}, {"direct", "direct_soft_shadows"}},
       {"indirect+composite", {"indirect_cones"}, {"indirect_cones", "composite"}},
       {"particles", {"particles"}, {"particles"}},
