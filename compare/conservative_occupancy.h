@@ -14,6 +14,7 @@
 #include "core/math.h"
 #include "core/volume.h"
 #include "stages/backend_facts.h"
+#include "stages/voxelize.h"  // triangle_meets_box, kConservativeArithmetic
 
 namespace vct {
 struct Scene;
@@ -29,18 +30,9 @@ struct ConservativeBound {
   std::string source;  // the freedom the numbers stand for
 };
 
-/// GL's own arithmetic in the conservative shaders (clip, depth range, in double that GLSL 4.50
-/// §4.7.1 only promises to be as precise as float): the whole bound of the gs mode, part of the
-/// hardware modes'.
-constexpr double kConservativeArithmetic = 1.0 / 1024.0;
-
 /// The bound of the mode `facts` say ran; mode "" when none did. A hardware mode without its
 /// snapping precision (conservative_snap_bits < 1) is an InputError naming `where`.
 ConservativeBound conservative_bound(const BackendFacts& facts, const std::string& where);
-
-/// Closed triangle against the closed box [lo, hi]: separating-axis test over the 3 box normals,
-/// the triangle normal and the 9 edge cross products, in double; touching counts as meeting.
-bool triangle_meets_box(const glm::dvec3 tri[3], const glm::dvec3& lo, const glm::dvec3& hi);
 
 using VoxelTriangle = std::array<glm::dvec3, 3>;
 

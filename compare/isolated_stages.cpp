@@ -299,11 +299,14 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
     FrameResult r = test;
     r.backend = "ref-on-" + test.backend + "-voxel-inputs";
     r.voxels = std::move(*grid);
-    // On the test's own maps no shadow-map tie is left to share. The coverage ties model the GPU
-    // sample rule only: a conservative raster's fragment sets at voxel-box boundaries are not
-    // modelled, so that voxelizer keeps the share (docs/compare.md, "Voxel shading slack").
+    // On the test's own maps no shadow-map tie is left to share. The coverage ties cover the
+    // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
+    // by what its driver reports, which only the occupancy judge reads, so those modes keep the
+    // share (docs/compare.md, "Voxel shading slack").
     CompareOptions own_maps = opt;
-    if (s.voxelizer != Voxelizer::Conservative) own_maps.shading_tie_fraction = 0.0;
+    const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
+                                       s.conservative_raster == ConservativeRaster::Intel;
+    if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
     const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, own_maps);
     const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
     for (StageVerdict& e : end_to_end.stages)

@@ -130,6 +130,14 @@ void add_depth_ties(const Scene& scene, Voxelization& vox, std::vector<VoxelFrag
   }
 }
 
+// vox.may_add = `added` sorted, one per key: a fragment found by several shifts is the same
+// fragment (evaluated at its pixel centre, or its closest point, whichever samples covered it).
+void keep_unique(Voxelization& vox, std::vector<VoxelFragment>& added) {
+  std::sort(added.begin(), added.end(), [&](const VoxelFragment& a, const VoxelFragment& b) { return key_less(vox, a, b); });
+  for (const VoxelFragment& f : added)
+    if (vox.may_add.empty() || !same_key(vox.may_add.back(), f)) vox.may_add.push_back(f);
+}
+
 }  // namespace
 
 MeanRange admissible_mean_range(const std::vector<double>& certain_lo, const std::vector<double>& certain_hi,
@@ -143,19 +151,23 @@ MeanRange admissible_mean_range(const std::vector<double>& certain_lo, const std
 void add_coverage_ties(const Scene& scene, Voxelization& vox) {
   vox.may_drop.assign(vox.fragments.size(), 0);
   vox.may_add.clear();
-  if (vox.samples.empty()) return;
   std::vector<VoxelFragment> added;
+  if (vox.samples.empty()) {
+    // The conservative voxelizer: GL's conservative modes decide the same boxes with their own
+    // arithmetic (kConservativeArithmetic): a triangle meeting a box only that close to its
+    // faces may go either way. Grown boxes only add fragments, shrunk ones only drop them.
+    merge_shifted(vox, voxelize_conservative(scene, vox.n, kConservativeArithmetic), vox.may_drop, added);
+    merge_shifted(vox, voxelize_conservative(scene, vox.n, -kConservativeArithmetic), vox.may_drop, added);
+    keep_unique(vox, added);
+    return;
+  }
   for (const vec2 shift : {vec2(-1, -1), vec2(-1, 1), vec2(1, -1), vec2(1, 1)}) {
     std::vector<vec2> moved = vox.samples;
     for (vec2& p : moved) p += shift * float(kRasterTieShift);
     merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, moved), vox.may_drop, added);
   }
   add_depth_ties(scene, vox, added);
-  // A fragment found by several shifts is the same fragment (evaluated at its pixel centre,
-  // whichever samples covered it): keep one.
-  std::sort(added.begin(), added.end(), [&](const VoxelFragment& a, const VoxelFragment& b) { return key_less(vox, a, b); });
-  for (const VoxelFragment& f : added)
-    if (vox.may_add.empty() || !same_key(vox.may_add.back(), f)) vox.may_add.push_back(f);
+  keep_unique(vox, added);
 }
 
 void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,

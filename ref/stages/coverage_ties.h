@@ -31,7 +31,9 @@ namespace vct {
 /// moved by each of the four (+-2^-8, +-2^-8) pixel shifts: a fragment missing from any shifted
 /// voxelization may be dropped, one present in any but not in `vox` may be added; and a fragment
 /// whose depth lies within its depth margin of a voxel boundary may move to the voxel beyond it.
-/// No-op for the conservative voxelizer (vox.samples empty: its coverage is exact).
+/// For the conservative voxelizer (vox.samples empty) the ties are the triangles meeting a voxel
+/// box within kConservativeArithmetic of its faces, as GL's conservative modes' own arithmetic
+/// may decide them either way (the gs mode's whole bound; a hardware mode over-estimates more).
 void add_coverage_ties(const Scene& scene, Voxelization& vox);
 
 /// Widens `slack` (per voxel, stages/fragment_slack.h's voxel_shading_slack) by the fragment sets

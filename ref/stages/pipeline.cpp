@@ -36,7 +36,10 @@ Voxelization run_voxelizers(const Scene& scene, const VctSettings& s, const std:
   Voxelization conservative;
   timed(r, "voxelize", [&] { conservative = voxelize_conservative(scene, s.grid); });
   r.conservative_occupancy = conservative.occupancy;
-  if (s.voxelizer == Voxelizer::Conservative) return conservative;
+  if (s.voxelizer == Voxelizer::Conservative) {
+    timed(r, "coverage_ties", [&] { add_coverage_ties(scene, conservative); });
+    return conservative;
+  }
   Voxelization gpu;
   timed(r, "voxelize_gpu_rule", [&] { gpu = voxelize_gpu_rule(scene, s.grid, positions); });
   timed(r, "coverage_ties", [&] { add_coverage_ties(scene, gpu); });

@@ -16,6 +16,32 @@ int dominant_axis(const vec3& v0, const vec3& v1, const vec3& v2) {
   return 1;
 }
 
+namespace {
+
+// Projections of the triangle and the box (centre c, half-extents h) onto axis a are disjoint.
+bool separated(const glm::dvec3 t[3], const glm::dvec3& c, const glm::dvec3& h, const glm::dvec3& a) {
+  if (a.x == 0.0 && a.y == 0.0 && a.z == 0.0) return false;  // parallel edges: no axis
+  const double p0 = glm::dot(t[0] - c, a), p1 = glm::dot(t[1] - c, a), p2 = glm::dot(t[2] - c, a);
+  const double r = h.x * std::abs(a.x) + h.y * std::abs(a.y) + h.z * std::abs(a.z);
+  return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+}
+
+}  // namespace
+
+bool triangle_meets_box(const glm::dvec3 tri[3], const glm::dvec3& lo, const glm::dvec3& hi) {
+  if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return false;
+  const glm::dvec3 c = (lo + hi) * 0.5, h = (hi - lo) * 0.5;
+  const glm::dvec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const glm::dvec3 e[3] = {tri[1] - tri[0], tri[2] - tri[1], tri[0] - tri[2]};
+  for (const glm::dvec3& a : axes)
+    if (separated(tri, c, h, a)) return false;
+  if (separated(tri, c, h, glm::cross(e[0], e[1]))) return false;
+  for (const glm::dvec3& a : axes)
+    for (const glm::dvec3& ed : e)
+      if (separated(tri, c, h, glm::cross(a, ed))) return false;
+  return true;
+}
+
 bool triangle_overlaps_voxel(const glm::dvec3 tri[3], const glm::dvec3& lo) {
   const glm::dvec3 hi = lo + glm::dvec3(1.0);
   const glm::dvec3 e[3] = {tri[1] - tri[0], tri[2] - tri[1], tri[0] - tri[2]};

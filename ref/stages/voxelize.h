@@ -45,9 +45,17 @@ struct Voxelization {
 /// Voxel-space coordinates: (world - origin) / size * n, so voxel i covers [i, i+1).
 glm::dvec3 to_voxel_space(const Scene& scene, int n, const vec3& world);
 
+/// GL's own arithmetic in the conservative shaders (clip, depth range, in double that GLSL 4.50
+/// §4.7.1 only promises to be as precise as float), in voxels: the whole bound of the gs mode,
+/// part of the hardware modes' (compare/conservative_occupancy.h), and the conservative
+/// voxelizer's coverage ties (stages/coverage_ties.h).
+constexpr double kConservativeArithmetic = 1.0 / 1024.0;
+
 /// Exact conservative voxelization; one fragment per (triangle, voxel) at the point of the
-/// triangle closest to the voxel centre.
-Voxelization voxelize_conservative(const Scene& scene, int n);
+/// triangle closest to the voxel centre. With `grow` != 0 the voxel boxes are closed and grown
+/// (shrunk, when negative) by that many voxels on every side: the sets a GL whose box tests are
+/// that far off may make (stages/coverage_ties.h).
+Voxelization voxelize_conservative(const Scene& scene, int n, double grow = 0.0);
 
 /// The GPU rule with 1, 4 or 8 samples; one fragment per covered pixel (any sample), evaluated at
 /// the pixel centre as GL evaluates non-centroid inputs (extrapolated barycentrics allowed).
@@ -70,6 +78,10 @@ int dominant_axis(const vec3& v0, const vec3& v1, const vec3& v2);
 /// Exact test: does the closed triangle (voxel-space coordinates) meet the half-open box
 /// [lo, lo+1)^3? Separating-axis theorem over 13 axes with open/closed interval ends.
 bool triangle_overlaps_voxel(const glm::dvec3 tri[3], const glm::dvec3& lo);
+
+/// Closed triangle against the closed box [lo, hi]: separating-axis test over the 3 box normals,
+/// the triangle normal and the 9 edge cross products, in double; touching counts as meeting.
+bool triangle_meets_box(const glm::dvec3 tri[3], const glm::dvec3& lo, const glm::dvec3& hi);
 
 /// Barycentrics (b1, b2) of the point of triangle `tri` closest to `p` (Ericson, RTCD 5.1.5).
 glm::dvec2 closest_point_barycentrics(const glm::dvec3 tri[3], const glm::dvec3& p);

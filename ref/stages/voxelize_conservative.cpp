@@ -10,13 +10,14 @@
 
 namespace vct {
 
-Voxelization voxelize_conservative(const Scene& scene, int n) {
+Voxelization voxelize_conservative(const Scene& scene, int n, double grow) {
   std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
   parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
     const uvec3 t = scene.triangles[size_t(ti)];
     const glm::dvec3 v[3] = {to_voxel_space(scene, n, scene.positions[t.x]), to_voxel_space(scene, n, scene.positions[t.y]),
                              to_voxel_space(scene, n, scene.positions[t.z])};
-    const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])), hi = glm::max(v[0], glm::max(v[1], v[2]));
+    const glm::dvec3 lo = glm::min(v[0], glm::min(v[1], v[2])) - std::max(grow, 0.0),
+                     hi = glm::max(v[0], glm::max(v[1], v[2])) + std::max(grow, 0.0);
     ivec3 a, b;
     for (int c = 0; c < 3; ++c) {
       a[c] = int(std::clamp(std::floor(lo[c]), 0.0, double(n - 1)));
@@ -28,7 +29,9 @@ Voxelization voxelize_conservative(const Scene& scene, int n) {
       for (int y = a.y; y <= b.y; ++y)
         for (int x = a.x; x <= b.x; ++x) {
           const glm::dvec3 corner(x, y, z);
-          if (!triangle_overlaps_voxel(v, corner)) continue;
+          const bool meets = grow == 0.0 ? triangle_overlaps_voxel(v, corner)
+                                         : triangle_meets_box(v, corner - grow, corner + 1.0 + grow);
+          if (!meets) continue;
           const glm::dvec2 bc = closest_point_barycentrics(v, corner + glm::dvec3(0.5));
           // Alpha masks are tested at the fragment's one evaluation point, as the GPU rule tests
           // its pixel centre: a voxel whose closest point is cut away holds none of this triangle

@@ -118,16 +118,33 @@ TEST(CoverageTies, EverySnappedVoxelizationIsAmongTheTies) {
   EXPECT_LT(droppable.size() + addable.size(), base.size() / 2);  // and the ties are not everything
 }
 
-// The conservative voxelizer has no samples: no ties.
-TEST(CoverageTies, ConservativeVoxelizationHasNone) {
-  Scene s;
-  const uint32_t m = test::add_material(s, vec3(0.5f));
-  test::add_quad(s, {-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {0, 1, 0}, m);
-  s.volume = fit_volume(s.bounds);
-  Voxelization vox = voxelize_conservative(s, 8);
-  add_coverage_ties(s, vox);
-  EXPECT_TRUE(vox.may_add.empty());
-  EXPECT_EQ(std::count(vox.may_drop.begin(), vox.may_drop.end(), 1), 0);
+bool has(const std::vector<VoxelFragment>& fragments, const std::vector<uint8_t>* only, ivec3 voxel) {
+  for (size_t i = 0; i < fragments.size(); ++i)
+    if (fragments[i].voxel == voxel && (!only || (*only)[i])) return true;
+  return false;
+}
+
+// The conservative voxelizer: boxes the triangle meets only within GL's conservative arithmetic
+// (kConservativeArithmetic) of their faces. Voxel space = world here (origin 0, size n). The
+// triangle (1,1)-(3,1)-(1,3) at z = 2.5: its hypotenuse x + y = 4 touches voxel (2,2,2) at its
+// corner (2,2) only, which the half-open box holds: a fragment that may be dropped. Its edge y = 1
+// touches voxel (1,0,2) on that box's open face: no fragment, one that may be added. Voxel
+// (1,1,2) lies well inside: certain. Voxel (1,0,2) moved 1/512 away (a triangle at y >= 1 + 1/512)
+// is no tie.
+TEST(CoverageTies, ConservativeBoxesTouchedWithinTheArithmeticAreTies) {
+  for (const float gap : {0.0f, 1.0f / 512.0f}) {
+    Scene s;
+    const uint32_t m = test::add_material(s, vec3(0.5f));
+    test::add_triangle(s, {1, 1 + gap, 2.5f}, {3, 1 + gap, 2.5f}, {1, 3, 2.5f}, m);
+    s.volume.origin = vec3(0.0f);
+    s.volume.size = 8.0f;
+    Voxelization vox = voxelize_conservative(s, 8);
+    add_coverage_ties(s, vox);
+    EXPECT_TRUE(has(vox.fragments, nullptr, {1, 1, 2}));
+    EXPECT_FALSE(has(vox.fragments, &vox.may_drop, {1, 1, 2}));
+    EXPECT_EQ(has(vox.may_add, nullptr, {1, 0, 2}), gap == 0.0f) << "gap " << gap;
+    if (gap == 0.0f) EXPECT_TRUE(has(vox.fragments, &vox.may_drop, {2, 2, 2}));
+  }
 }
 
 }  // namespace
