@@ -50,8 +50,21 @@ struct ValidateOptions {
   GlFlags gl;
 };
 
+// True when a --set names `key` (with or without its "vct." prefix).
+bool set_names(const CommonOptions& o, const std::string& key) {
+  for (const std::string& kv : o.sets) {
+    const std::string k = kv.substr(0, kv.find('='));
+    if (k == key || k == "vct." + key) return true;
+  }
+  return false;
+}
+
 Settings resolve(const CommonOptions& o) {
   Settings s = resolve_settings(o, validate_defaults());
+  // A conservative raster is judged against the exact voxelizer (docs/compare.md, "Conservative
+  // voxelization"), not validate's default sample rule, unless a --set asks otherwise.
+  if (s.vct.conservative_raster != ConservativeRaster::Off && !set_names(o, "voxelizer"))
+    s.vct.voxelizer = Voxelizer::Conservative;
   s.pt.width = s.vct.width;  // bias needs the same pixels on both sides
   s.pt.height = s.vct.height;
   validate_settings(s);

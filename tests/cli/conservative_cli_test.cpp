@@ -28,5 +28,21 @@ TEST(ConservativeCli, HardwareModeWithoutTheExtensionExits3AndWritesNothing) {
   }
 }
 
+// `vct validate --set conservative_raster=gs` judges the GL voxels against the exact voxelizer by
+// itself (validate's default reference voxelizer is the sample rule); a --set voxelizer=gpu that
+// asks for the sample rule keeps it, and the occupancy judge then fails with its own reason.
+TEST(ConservativeCli, ValidateWithTheGsModeUsesTheExactVoxelizer) {
+  const std::string args = "validate --width 16 --height 16 --grid 16 --spp 1 --no-report --flip none "
+                           "--set conservative_raster=gs --out '";
+  const VctOutput r = run_vct_captured(args + (scratch_root() / "cons_validate").string() + "'");
+  if (r.exit_code == 3) GTEST_SKIP() << "no GL context: " << r.err;
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("pass voxel.occupancy"), std::string::npos) << r.out;
+  const VctOutput asked = run_vct_captured(args + (scratch_root() / "cons_validate_gpu").string() +
+                                           "' --set voxelizer=gpu");
+  EXPECT_EQ(asked.exit_code, 1) << asked.out << asked.err;
+  EXPECT_NE(asked.out.find("the reference must voxelize exactly"), std::string::npos) << asked.out;
+}
+
 }  // namespace
 }  // namespace vct::test
