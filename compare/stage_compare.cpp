@@ -161,7 +161,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
     v.bound += "; ties: only PCF taps that the lookup's float arithmetic may flip on the test's own shadow maps, "
                "no edge or interior share";
   else if (alternatives_only)
-    v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
+    v.bound += "; ties: only the reference's raster alternatives (" + tie_range_stage(stage) +
+               "), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -932,9 +933,13 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       const DisplayTransform& shown = ts.conventions.display;
       CompareOptions stage_opt = opt;
       if (light_space) stage_opt.depth_quantum = depth_quantum_of(rs);
+      // A shadow map's raster alternatives are its own range image (stages/shadow_map_ties.h);
+      // without one (an external reference) it keeps the neighbourhood rule and the shares.
+      const auto own_range = light_space ? rs.images.find(tie_range_stage(stage)) : rs.images.end();
+      const Image* range = !light_space ? tie_range : own_range != rs.images.end() ? &own_range->second : nullptr;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
                                                light_space ? nullptr : depth_hint, stage_opt, slack,
-                                               shown.applies_to(stage) ? &shown : nullptr, tie_range));
+                                               shown.applies_to(stage) ? &shown : nullptr, range));
     } else if (model == ToleranceModel::Mip) {
       // The mip bounds and taint are taken on the reference's level 0.
       rep.stages.push_back(rs.volumes.count(st::kVoxelRadiance)
