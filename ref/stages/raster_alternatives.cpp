@@ -20,6 +20,51 @@ void copy_entry(const VisibilityBuffer& from, size_t i, VisibilityBuffer& to) {
   to.facing_tie[i] = from.facing_tie[i];
 }
 
+VisibilityBuffer empty_buffer(int w, int h) {
+  VisibilityBuffer vb;
+  vb.width = w;
+  vb.height = h;
+  const size_t n = size_t(w) * size_t(h);
+  vb.depth.assign(n, 1.0f);
+  vb.triangle.assign(n, -1);
+  vb.bary.assign(n, vec3(0.0f));
+  vb.front_facing.assign(n, 0);
+  vb.facing_tie.assign(n, 0);
+  return vb;
+}
+
+// The front-most fragment at each pixel centre that a correct GL may keep: an alpha-tested
+// fragment the reference cuts away is skipped only where its test cannot flip. Layers in front
+// that are cut away for certain (a leaf's transparent corner over another leaf) do not hide a
+// tie behind them. Rasterized as render_visibility (bands, triangles in index order).
+VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  VisibilityBuffer vb = empty_buffer(w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
+  const std::vector<vec2>& centre = standard_sample_positions(1);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
+      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
+        const int row = h - 1 - f.y;
+        const size_t i = vb.index(f.x, row);
+        if (!(f.depth < vb.depth[i])) return;  // GL_LESS
+        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z) &&
+            !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary))
+          return;
+        vb.depth[i] = f.depth;
+        vb.triangle[i] = int32_t(t.source);
+        vb.bary[i] = f.bary;
+        vb.front_facing[i] = t.front_facing ? 1 : 0;
+        vb.facing_tie[i] = t.facing_tie ? 1 : 0;
+      });
+    }
+  });
+  return vb;
+}
+
 }  // namespace
 
 double depth_tie_margin(const RasterTriangle& t) {
@@ -41,14 +86,7 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
     for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
   // The front fragment's margin, found again by its source triangle at the pixel.
   std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
-  VisibilityBuffer alt;
-  alt.width = w;
-  alt.height = h;
-  alt.depth.assign(front.depth.size(), 1.0f);
-  alt.triangle.assign(front.depth.size(), -1);
-  alt.bary.assign(front.depth.size(), vec3(0.0f));
-  alt.front_facing.assign(front.depth.size(), 0);
-  alt.facing_tie.assign(front.depth.size(), 0);
+  VisibilityBuffer alt = empty_buffer(w, h);
   const std::vector<vec2>& centre = standard_sample_positions(1);
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
@@ -83,7 +121,7 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 
 AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb) {
   const int w = vb.width, h = vb.height;
-  const VisibilityBuffer unmasked = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  const VisibilityBuffer unmasked = front_that_may_be_kept(scene, view_proj, w, h);
   AlphaFlipSurfaces out;
   out.surface = other_surfaces(scene, view_proj, vb, false);  // behind the reference's front
   out.may_flip.assign(vb.triangle.size(), 0);

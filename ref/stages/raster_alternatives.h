@@ -42,9 +42,10 @@ double depth_tie_margin(const RasterTriangle& t);
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
                                 bool depth_ties);
 
-/// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface, masks ignored, may pass or
-/// fail its alpha test in a correct GL (`may_flip` 1), `surface` holds the other outcome: that
-/// surface where the reference (`vb`, rendered with the masks) discarded it, what lies behind it
+/// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface a correct GL may keep (masks
+/// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)
+/// may pass or fail its alpha test (`may_flip` 1), `surface` holds the other outcome: that surface
+/// where the reference (`vb`, rendered with the masks) discarded it, what lies behind it
 /// (other_surfaces; triangle -1 = nothing, the clear value) where the reference kept it.
 struct AlphaFlipSurfaces {
   VisibilityBuffer surface;

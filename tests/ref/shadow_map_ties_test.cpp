@@ -93,6 +93,26 @@ TEST(ShadowMapTies, AlphaTestAtTheCutoffAdmitsTheCardAndTheBackdrop) {
   }
 }
 
+TEST(ShadowMapTies, ACardCutAwayForCertainDoesNotHideTheTieBehindIt) {
+  // The same card and backdrop under a fully transparent masked card (alpha 0 everywhere: cut away
+  // for certain), the light at z = 2: window depth (-z_view - 0.5) / 3, so the clear card stores
+  // nothing, the half-masked card 0.5, the backdrop 5/6. The tie on x = 0 is the second layer's.
+  Scene s = test::half_masked_card(true);
+  Material clear = s.materials[0];
+  clear.base_color_texture.texture = -1;
+  clear.base_color_factor = vec4(1.0f, 1.0f, 1.0f, 0.0f);
+  s.materials.push_back(clear);
+  test::add_card_quad(s, 0.5f, 1.0f, uint32_t(s.materials.size() - 1));
+  const mat4 vp = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.5f, 3.5f) *
+                  glm::lookAt(vec3(0.0f, 0.0f, 2.0f), vec3(0.0f), vec3(0.0f, 1.0f, 0.0f));
+  const Image r = shadow_depth_range(s, vp, 33, ShadowDepthFormat::Depth32f);
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LE(lo_of(r, 16, row), 0.5f + 1e-6f) << row;
+    EXPECT_GE(hi_of(r, 16, row), 5.0f / 6.0f - 1e-6f) << row;
+    EXPECT_NEAR(hi_of(r, 18, row) - lo_of(r, 18, row), 0.0f, 1e-6f) << row;
+  }
+}
+
 TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
   Scene s = test::stage_room();
   s.lights.resize(1);
