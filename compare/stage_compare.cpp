@@ -307,10 +307,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%zu of %zu edge pixels = %.2f%%, %.3f%% interior)",
                 v.out_of_bound, v.checked, edge_bad, edge_pixels, 100 * fe, 100 * fi);
   v.note = buf;
+  const bool light_space_range = alternatives_only && tie_range_stage(stage) != stage_names::kGbufferTieRange;
   if (alternatives)
     v.note += "; " + std::to_string(alternatives) +
-              (pcf_range ? " within the range of PCF taps that may flip (float lookup arithmetic)"
-                         : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
+              (pcf_range            ? " within the range of PCF taps that may flip (float lookup arithmetic)"
+               : light_space_range ? " at a depth the reference's raster alternatives allow (2^-8 texel snapping, "
+                                     "alpha-test ties)"
+                                   : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
               (pcf_range ? " outside the range of PCF taps that may flip (not a value a tie can give)"
