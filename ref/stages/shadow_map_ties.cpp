@@ -51,16 +51,19 @@ float clamped(double z) { return float(std::clamp(z, 0.0, 1.0)); }
 // centre the smallest z - m and z + m (m = depth_tie_margin). Each shift's front depth is then
 // min(common, partial[k]); 1 (the clear value) where nothing is.
 // The partial rows are filled on first use (`edged`): most rows of a band hold no edge texel
-// of any triangle when maps are large.
+// of any triangle when maps are large. One per thread, reset for each band: a band's arrays are
+// larger than malloc's mmap threshold, and fresh pages per band cost more than the sweep.
 struct BandDepths {
   int width = 0;
   std::vector<float> common, lo, hi;
   std::array<std::vector<float>, kShifts> partial;
   std::vector<uint8_t> edged;
-  BandDepths(int w, int rows) : width(w), edged(size_t(rows), 0) {
+  void reset(int w, int rows) {
+    width = w;
     const size_t n = size_t(w) * size_t(rows);
     common.assign(n, 1.0f), lo.assign(n, 1.0f), hi.assign(n, 1.0f);
     for (auto& p : partial) p.resize(n);
+    edged.assign(size_t(rows), 0);
   }
   void touch_partial(size_t row) {
     if (edged[row]) return;
@@ -151,23 +154,22 @@ void sweep_triangle(const RasterTriangle& t, int y0, int y1, const Scene& scene,
 
 // One sweep over the binned triangles, band by band in parallel (a band owns its rows and walks
 // its triangles in index order; every value is a minimum, so the result does not depend on the
-// thread count), each band folded into [lo, hi] (row 0 = top) as soon as it is done, so the
-// scratch is one band per thread.
-void sweep_alternatives(const Scene& scene, const mat4& view_proj, int size, std::vector<float>& lo,
-                        std::vector<float>& hi) {
+// thread count), each band folded into `range` (channels lo, hi; row 0 = top) as soon as it is
+// done, so the scratch is one band per thread.
+void sweep_alternatives(const Scene& scene, const mat4& view_proj, Image& range) {
+  const int size = range.width;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, size, size);
-  lo.assign(size_t(size) * size_t(size), 1.0f);
-  hi.assign(lo.size(), 1.0f);
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(size, y0 + kRasterBandRows) - 1;
-    BandDepths b(size, y1 - y0 + 1);
+    thread_local BandDepths b;
+    b.reset(size, y1 - y0 + 1);
     for (uint32_t ti : binned.bands[size_t(band)]) sweep_triangle(binned.triangles[ti], y0, y1, scene, b);
-    for (int y = y0; y <= y1; ++y)
+    for (int y = y0; y <= y1; ++y) {
+      const bool edged = b.edged[size_t(y - y0)];
       for (int x = 0; x < size; ++x) {
         const size_t i = size_t(y - y0) * size_t(size) + size_t(x);
-        const size_t o = size_t(size - 1 - y) * size_t(size) + size_t(x);
         float l = b.lo[i], h = b.hi[i];
-        if (b.edged[size_t(y - y0)]) {
+        if (edged) {
           for (const auto& p : b.partial) {
             const float shifted = std::min(b.common[i], p[i]);
             l = std::min(l, shifted), h = std::max(h, shifted);
@@ -175,23 +177,26 @@ void sweep_alternatives(const Scene& scene, const mat4& view_proj, int size, std
         } else {  // no edge texel in the row: every shift sees `common`
           l = std::min(l, b.common[i]), h = std::max(h, b.common[i]);
         }
-        lo[o] = l, hi[o] = h;
+        float* out = range.pixel(x, size - 1 - y);
+        out[0] = l, out[1] = h;
       }
+    }
   });
 }
 
 // The other outcome of every alpha test that may flip (raster_alternatives.h): its depth, or the
 // clear value where nothing lies behind.
-void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, int size, std::vector<float>& lo,
-                          std::vector<float>& hi) {
+void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, Image& range) {
+  const int size = range.width;
   const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, size, size, &scene);
   const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);
   parallel_rows(size, [&](int row) {
     for (int x = 0; x < size; ++x) {
       const size_t i = vb.index(x, row);
       if (!flips.may_flip[i]) continue;
-      lo[i] = std::min(lo[i], flips.surface.depth[i]);
-      hi[i] = std::max(hi[i], flips.surface.depth[i]);
+      float* out = range.pixel(x, row);
+      out[0] = std::min(out[0], flips.surface.depth[i]);
+      out[1] = std::max(out[1], flips.surface.depth[i]);
     }
   });
 }
@@ -199,17 +204,13 @@ void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, int size, s
 }  // namespace
 
 Image shadow_depth_range(const Scene& scene, const mat4& view_proj, int size, ShadowDepthFormat format) {
-  std::vector<float> lo, hi;
-  sweep_alternatives(scene, view_proj, size, lo, hi);
-  if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, size, lo, hi);
   Image range(size, size, 2);
   range.channel_names = {tie_range_channel_name("depth", 0, false), tie_range_channel_name("depth", 0, true)};
+  sweep_alternatives(scene, view_proj, range);
+  if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, range);
   // Rounding to the format is monotone, so the rounded ends still hold the map's own stored value.
-  const bool rounds = depth_quantum(format) > 0.0;
-  for (size_t i = 0; i < lo.size(); ++i) {
-    range.data[2 * i] = rounds ? stored_window_depth(lo[i], format) : lo[i];
-    range.data[2 * i + 1] = rounds ? stored_window_depth(hi[i], format) : hi[i];
-  }
+  if (depth_quantum(format) > 0.0)
+    for (float& z : range.data) z = stored_window_depth(z, format);
   return range;
 }
 
