@@ -7,7 +7,6 @@
 
 #include "alpha_card_scene.h"
 #include "stage_test_scene.h"
-#include "stages/raster_alternatives.h"
 #include "stages/shadow_map.h"
 #include "stages/shadow_map_ties.h"
 
