@@ -98,11 +98,12 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
   // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images. Before the G-buffer, one map (or face) at a time, its
-  // range of alternatives (stages/shadow_map_ties.h): six float images for the shifted samples and
-  // the margins (24 B/texel), or with alpha masks its two ends (8 B), the masked and unmasked
-  // visibility buffers and the surfaces behind with their doubles (3 x 22 + 16 B): 90 B/texel.
+  // range of alternatives (stages/shadow_map_ties.h) is written straight into its image (counted
+  // there) through one band of scratch per thread; with alpha masks the alpha ties add the
+  // masked front, the front that may be kept and the surfaces behind with their doubles: the
+  // camera's 3 x 22 + 16 B per texel of the map.
   const uint64_t camera = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
-  const uint64_t light = (8 + 3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
+  const uint64_t light = (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
   e.raster_scratch = std::max(camera, light);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each
   // pixel's first vertex while they fit in their budget.

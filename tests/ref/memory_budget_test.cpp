@@ -34,12 +34,12 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   EXPECT_EQ(e.path_tracer, 100ull * (16 * 8 + 256));  // accumulators + the kept first vertices
   EXPECT_EQ(e.baseline, 136ull << 20);
   EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
-  // Shadow maps are rasterized depth-only, but their range of alternatives needs up to 90 B per
-  // texel while it is found (with alpha masks: two ends, three visibility buffers, the doubles of
-  // the surfaces behind), one map at a time: a large map's scratch outweighs a small image's.
+  // Shadow maps are rasterized depth-only, but their range of alternatives needs up to 82 B per
+  // texel while it is found (with alpha masks: three visibility buffers, the doubles of the
+  // surfaces behind), one map at a time: a large map's scratch outweighs a small image's.
   s.vct.shadow_map_size = 2048;
   const MemoryEstimate big_map = estimate_memory(s);
-  EXPECT_EQ(big_map.raster_scratch, 2048ull * 2048 * 90);
+  EXPECT_EQ(big_map.raster_scratch, 2048ull * 2048 * 82);
   EXPECT_EQ(big_map.images, 2048ull * 2048 * 12 + 100ull * 100 * 532);
   // A large image's visibility buffer outweighs a small grid; only the larger counts.
   s.vct.grid = 16;
