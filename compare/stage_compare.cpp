@@ -161,7 +161,8 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
     v.bound += "; ties: only PCF taps that the lookup's float arithmetic may flip on the test's own shadow maps, "
                "no edge or interior share";
   else if (alternatives_only)
-    v.bound += "; ties: only the reference's raster alternatives (gbuffer.tie_range), no edge or interior share";
+    v.bound += "; ties: only the reference's raster alternatives (" + tie_range_stage(stage) +
+               "), no edge or interior share";
   double mean_abs = 0;
   for (float x : ref.data) mean_abs += double(std::abs(x));
   mean_abs /= std::max<size_t>(1, ref.data.size());
@@ -306,10 +307,13 @@ StageVerdict compare_image_stage(const std::string& stage, const Image& ref, con
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels beyond the bound (%zu of %zu edge pixels = %.2f%%, %.3f%% interior)",
                 v.out_of_bound, v.checked, edge_bad, edge_pixels, 100 * fe, 100 * fi);
   v.note = buf;
+  const bool light_space_range = alternatives_only && tie_range_stage(stage) != stage_names::kGbufferTieRange;
   if (alternatives)
     v.note += "; " + std::to_string(alternatives) +
-              (pcf_range ? " within the range of PCF taps that may flip (float lookup arithmetic)"
-                         : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
+              (pcf_range            ? " within the range of PCF taps that may flip (float lookup arithmetic)"
+               : light_space_range ? " at a depth the reference's raster alternatives allow (2^-8 texel snapping, "
+                                     "alpha-test ties)"
+                                   : " showing a surface or facing the reference's raster alternatives allow (2^-8 px snapping)");
   if (inadmissible)
     v.note += "; " + std::to_string(inadmissible) +
               (pcf_range ? " outside the range of PCF taps that may flip (not a value a tie can give)"
@@ -929,9 +933,13 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
       const DisplayTransform& shown = ts.conventions.display;
       CompareOptions stage_opt = opt;
       if (light_space) stage_opt.depth_quantum = depth_quantum_of(rs);
+      // A shadow map's raster alternatives are its own range image (stages/shadow_map_ties.h);
+      // without one (an external reference) it keeps the neighbourhood rule and the shares.
+      const auto own_range = light_space ? rs.images.find(tie_range_stage(stage)) : rs.images.end();
+      const Image* range = !light_space ? tie_range : own_range != rs.images.end() ? &own_range->second : nullptr;
       rep.stages.push_back(compare_image_stage(stage, rs.images.at(stage), ts.images.at(stage),
                                                light_space ? nullptr : depth_hint, stage_opt, slack,
-                                               shown.applies_to(stage) ? &shown : nullptr, tie_range));
+                                               shown.applies_to(stage) ? &shown : nullptr, range));
     } else if (model == ToleranceModel::Mip) {
       // The mip bounds and taint are taken on the reference's level 0.
       rep.stages.push_back(rs.volumes.count(st::kVoxelRadiance)

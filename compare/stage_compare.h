@@ -45,9 +45,10 @@ Report compare_stage_sets(const StageSet& reference, const StageSet& test, const
 /// space; nullptr = linear.
 /// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
 /// bound of the textured G-buffer stages; nullptr = none (bare images, external references).
-/// `tie_range`: the reference's GBuffer::tie_range (stages/gbuffer_ties.h): a beyond-bound
-/// G-buffer pixel inside the range of the values a correct GL may show there (plus its bound) is
-/// admitted as a raster alternative, at any count (compare/tie_range.h); nullptr = none.
+/// `tie_range`: the reference's GBuffer::tie_range (stages/gbuffer_ties.h), or for a shadow map its
+/// ShadowMap::tie_range / cube_tie_range face (stages/shadow_map_ties.h): a beyond-bound pixel
+/// inside the range of the values a correct GL may show there (plus its bound) is admitted as a
+/// raster alternative, at any count, and any other fails (compare/tie_range.h); nullptr = none.
 StageVerdict compare_image_stage(const std::string& stage, const Image& ref, const Image& test,
                                  const Image* edge_hint, const CompareOptions& opt,
                                  const Image* texture_slack = nullptr,

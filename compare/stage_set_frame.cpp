@@ -133,6 +133,7 @@ void check_light_maps(const StageSet& set, const Scene& scene) {
   for (const auto& [name, img] : set.images) {
     const auto ref = find_stage(name);
     if (!ref || (ref->row->index != StageIndex::Light && ref->row->index != StageIndex::CubeFace)) continue;
+    if (ref->row->role != StageRole::Judged) continue;  // a reference's range beside its map
     const bool cube = ref->row->index == StageIndex::CubeFace;
     const size_t light = size_t(cube ? ref->index / 6 : ref->index);
     const bool fits = light < scene.lights.size() && scene.lights[light].is_point() == cube;

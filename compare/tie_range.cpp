@@ -1,6 +1,7 @@
 #include "compare/tie_range.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "stages/gbuffer_ties.h"
 #include "stages/stage_registry.h"
@@ -12,16 +13,34 @@ int channel_named(const Image& im, const std::string& name) {
   const auto it = std::find(im.channel_names.begin(), im.channel_names.end(), name);
   return it == im.channel_names.end() ? -1 : int(it - im.channel_names.begin());
 }
+
+// The range row of a judged shadow-map family (the same member numbering), or nullptr.
+const char* light_space_range_row(const std::string& stage) {
+  const std::optional<StageRef> ref = find_stage(stage);
+  if (!ref || ref->row->role != StageRole::Judged) return nullptr;
+  const std::string family = ref->row->name;
+  if (family == stage_names::kShadowMap) return stage_names::kShadowMapTieRange;
+  if (family == stage_names::kShadowMapCube) return stage_names::kShadowMapCubeTieRange;
+  return nullptr;
+}
 }  // namespace
+
+std::string tie_range_stage(const std::string& stage) {
+  const char* row = light_space_range_row(stage);
+  return row ? stage_name(stage_row(row), find_stage(stage)->index) : std::string(stage_names::kGbufferTieRange);
+}
 
 TieRangeChannels tie_range_channels(const std::string& stage, const Image& range, int channels) {
   const std::string prefix = "gbuffer.";
   TieRangeChannels out;
   // G-buffer stages by their attachment's name (stages/gbuffer_ties.h), the shading stages judged
-  // on the test's own inputs by their stage name (stages/direct_ties.h).
+  // on the test's own inputs by their stage name (stages/direct_ties.h), shadow maps as "depth"
+  // (stages/shadow_map_ties.h).
   const bool gbuffer = stage.compare(0, prefix.size(), prefix) == 0;
-  if (!gbuffer && stage != stage_names::kImageDirect && stage != stage_names::kImageEmission) return out;
-  const std::string group = gbuffer ? stage.substr(prefix.size()) : stage;
+  const bool light_space = light_space_range_row(stage) != nullptr;
+  if (!gbuffer && !light_space && stage != stage_names::kImageDirect && stage != stage_names::kImageEmission)
+    return out;
+  const std::string group = gbuffer ? stage.substr(prefix.size()) : light_space ? "depth" : stage;
   for (int c = 0; c < channels; ++c) {
     const int lo = channel_named(range, tie_range_channel_name(group, c, false));
     const int hi = channel_named(range, tie_range_channel_name(group, c, true));

@@ -61,11 +61,12 @@ uint64_t voxel_bytes(const VctSettings& v) {
 }
 
 // Alive from the G-buffer on; `shadow_layers` square float depth images (1 when the scene's lights
-// are not known yet; a point light's cube counts six).
+// are not known yet; a point light's cube counts six), each with its reference-only range of
+// alternatives (two floats per texel: stages/shadow_map_ties.h).
 uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
   const uint64_t shadow =
-      uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * 4;
+      uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * (4 + 8);
   // G-buffer 21 floats (84 B), its texture slack (6 floats, 24 B) and raster-alternative range
   // (42 floats, 168 B: stages/gbuffer_ties.h); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
   // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
@@ -96,8 +97,14 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   // more (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
   // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
   // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
-  // the map itself, counted in the images.
-  e.raster_scratch = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
+  // the map itself, counted in the images. Before the G-buffer, one map (or face) at a time, its
+  // range of alternatives (stages/shadow_map_ties.h) is written straight into its image (counted
+  // there) through one band of scratch per thread; with alpha masks the alpha ties add the
+  // masked front, the front that may be kept and the surfaces behind with their doubles: the
+  // camera's 3 x 22 + 16 B per texel of the map.
+  const uint64_t camera = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
+  const uint64_t light = (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
+  e.raster_scratch = std::max(camera, light);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each
   // pixel's first vertex while they fit in their budget.
   const uint64_t pt_pixels = uint64_t(s.pt.width) * uint64_t(s.pt.height);

@@ -5,7 +5,6 @@
 
 #include "core/parallel.h"
 #include "scene/alpha_mask.h"
-#include "stages/alpha_ties.h"
 #include "stages/gbuffer.h"
 #include "stages/texture_slack.h"
 
@@ -80,60 +79,6 @@ void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const Visibil
   });
 }
 
-// Per pixel, the fragment other than the reference's front one (a different source triangle) whose
-// key is smallest. Depth ties (`depth_ties`): key = depth minus margin, kept when it ties with the
-// front, z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key =
-// depth: the surface behind the front one (or none). Rasterized as render_visibility does (bands,
-// triangles in index order, alpha test), so the result does not depend on the thread count.
-VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
-                                bool depth_ties) {
-  const int w = front.width, h = front.height;
-  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
-  std::vector<double> margins(binned.triangles.size());
-  if (depth_ties)
-    for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
-  // The front fragment's margin, found again by its source triangle at the pixel.
-  std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
-  VisibilityBuffer alt;
-  alt.width = w;
-  alt.height = h;
-  alt.depth.assign(front.depth.size(), 1.0f);
-  alt.triangle.assign(front.depth.size(), -1);
-  alt.bary.assign(front.depth.size(), vec3(0.0f));
-  alt.front_facing.assign(front.depth.size(), 0);
-  alt.facing_tie.assign(front.depth.size(), 0);
-  const std::vector<vec2>& centre = standard_sample_positions(1);
-  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
-    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
-    for (uint32_t ti : binned.bands[size_t(band)]) {
-      const RasterTriangle& t = binned.triangles[ti];
-      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
-      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
-        const size_t i = front.index(f.x, h - 1 - f.y);
-        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
-        if (int32_t(t.source) == front.triangle[i]) {
-          front_margin[i] = std::max(front_margin[i], margins[ti]);
-          return;
-        }
-        const double key = double(f.depth) - margins[ti];
-        if (!(key < best[i])) return;
-        best[i] = key;
-        alt.depth[i] = f.depth;
-        alt.triangle[i] = int32_t(t.source);
-        alt.bary[i] = f.bary;
-        alt.front_facing[i] = t.front_facing ? 1 : 0;
-        alt.facing_tie[i] = t.facing_tie ? 1 : 0;
-      });
-    }
-  });
-  if (!depth_ties) return alt;
-  // No tie: the front surface itself (widen_by skips it; -1 would mean an empty pixel).
-  for (size_t i = 0; i < alt.triangle.size(); ++i)
-    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
-      alt.triangle[i] = front.triangle[i];
-  return alt;
-}
-
 void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, const VisibilityBuffer& other,
               GBuffer& g) {
   parallel_rows(vb.height, [&](int row) {
@@ -148,36 +93,16 @@ void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer&
 }
 
 // Alpha-mask ties (stages/alpha_ties.h): where the front-most surface, masks ignored, may pass or
-// fail its alpha test in a correct GL, the other outcome is admissible: that surface where the
-// reference discarded it, what lies behind it where the reference kept it.
+// fail its alpha test in a correct GL, the other outcome is admissible (raster_alternatives.h).
 void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
-  const int w = vb.width, h = vb.height;
-  const VisibilityBuffer unmasked = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
-  const VisibilityBuffer behind = other_surfaces(scene, view_proj, vb, false);
-  const WindowBarycentrics wb(view_proj, w, h);
-  parallel_rows(h, [&](int row) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = vb.index(x, row);
-      const int32_t top = unmasked.triangle[i];
-      if (top < 0 || !alpha_test_may_flip(scene, wb, x, row, uint32_t(top), unmasked.bary[i])) continue;
-      const GBufferSample alt = vb.triangle[i] != top ? sample_of(scene, view_proj, unmasked, x, row)
-                                                      : sample_of(scene, view_proj, behind, x, row);
-      widen(g.tie_range, x, row, alt);
-    }
+  const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x)
+      if (flips.may_flip[vb.index(x, row)]) widen(g.tie_range, x, row, sample_of(scene, view_proj, flips.surface, x, row));
   });
 }
 
 }  // namespace
-
-double depth_tie_margin(const RasterTriangle& t) {
-  const EdgeSetup e = edge_setup(t);
-  double dzdx = 0.0, dzdy = 0.0;  // per sub-pixel step
-  for (int i = 0; i < 3; ++i) {
-    dzdx += double(e.a[i]) * t.z[i];
-    dzdy += double(e.b[i]) * t.z[i];
-  }
-  return std::ldexp(1.0, -22) + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
-}
 
 std::string tie_range_channel_name(const std::string& group, int c, bool upper) {
   return group + "." + std::to_string(c) + (upper ? ".hi" : ".lo");

@@ -21,19 +21,10 @@
 #include "core/math.h"
 #include "scene/scene.h"
 #include "stages/raster.h"
+#include "stages/raster_alternatives.h"
 #include "stages/stage_types.h"
 
 namespace vct {
-
-/// The four sample shifts (pixels, window axes) whose coverage the alternatives follow.
-constexpr double kRasterTieShift = 1.0 / 256.0;
-
-/// How far a correct GL's window depth of triangle `t` at a pixel centre may lie from the
-/// reference's: its plane moved by one sub-pixel step on each axis, 2^-8 (|dz/dx| + |dz/dy|) per
-/// pixel (the d32f-depth model's slope term; dz/dx = sum a_i z_i / area2 per step), plus 2^-22
-/// for the float evaluation b0 z0 + b1 z1 + b2 z2 and its storage as D32F (three roundings of
-/// values below 1, each at most half an ulp of 1, 2^-24, with room to spare).
-double depth_tie_margin(const RasterTriangle& t);
 
 /// The G-buffer stages the range covers, each with its channel count, in GBufferSample order.
 struct TieRangeGroup {

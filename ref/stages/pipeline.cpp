@@ -18,6 +18,7 @@
 #include "stages/raster.h"
 #include "stages/running_mean.h"
 #include "stages/shadow_map.h"
+#include "stages/shadow_map_ties.h"
 #include "stages/soft_shadow.h"
 #include "stages/voxelize.h"
 
@@ -96,6 +97,8 @@ FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const
   r.facts.sample_positions = sample_positions.empty() ? standard_sample_positions(s.msaa_samples) : sample_positions;
   const Stopwatch total;
   timed(r, "shadow_maps", [&] { r.shadow_maps = render_shadow_maps(scene, s); });
+  // The reference's own raster alternatives in light space, for judging a test's maps.
+  timed(r, "shadow_tie_ranges", [&] { add_shadow_tie_ranges(scene, s, r.shadow_maps); });
   timed(r, "gbuffer", [&] { r.gbuffer = render_gbuffer(scene, s); });
   const Voxelization vox = run_voxelizers(scene, s, r.facts.sample_positions, r);
   {

@@ -176,13 +176,17 @@ void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, i
 }
 
 bool centre_row_span(const EdgeSetup& e, int y, int& x0, int& x1) {
-  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+  return sample_row_span(e, y, kSubpixelScale / 2, kSubpixelScale / 2, x0, x1);
+}
+
+bool sample_row_span(const EdgeSetup& e, int y, int64_t sx, int64_t sy, int& x0, int& x1) {
+  const int64_t py = int64_t(y) * kSubpixelScale + sy;
   int64_t lo = x0, hi = x1;
   for (int i = 0; i < 3; ++i) {
-    // rasterize() covers the centre of pixel x iff e_i + bias_i >= 0 at px = x*S + S/2, i.e.
+    // rasterize() covers the sample of pixel x iff e_i + bias_i >= 0 at px = x*S + sx, i.e.
     // step*x + r >= 0 with:
     const int64_t step = e.a[i] * kSubpixelScale;
-    const int64_t r = e.a[i] * (kSubpixelScale / 2) + e.b[i] * py + e.c[i] + e.bias[i];
+    const int64_t r = e.a[i] * sx + e.b[i] * py + e.c[i] + e.bias[i];
     if (step > 0) {
       lo = std::max(lo, ceil_div(-r, step));
     } else if (step < 0) {

@@ -100,6 +100,10 @@ inline float interpolate_window_depth(double b0, double b1, double b2, const dou
 /// integer arithmetic. Returns false when no centre of the row is covered.
 bool centre_row_span(const EdgeSetup& e, int y, int& x0, int& x1);
 
+/// The same for the sample at offset (sx, sy) in sub-pixel steps (0..255) from each pixel's
+/// lower-left corner: what rasterize() covers with that one sample (centre_row_span is (128, 128)).
+bool sample_row_span(const EdgeSetup& e, int y, int64_t sx, int64_t sy, int& x0, int& x1);
+
 /// Calls emit(const RasterFragment&) for every pixel of [x0,x1]x[y0,y1] (inclusive, window
 /// coordinates) with at least one covered sample, in row-major order (y, then x).
 template <class Emit>

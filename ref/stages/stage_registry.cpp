@@ -33,6 +33,15 @@ Image* cube_face(FrameResult& f, int i, bool grow) {
   }
   return &f.shadow_maps[light].cube[size_t(i % 6)];
 }
+// The reference's light-space raster alternatives beside each map (stages/shadow_map_ties.h).
+Image* shadow_tie_range(FrameResult& f, int i, bool grow) {
+  Image* map = shadow_map(f, i, grow);
+  return map ? &f.shadow_maps[size_t(i)].tie_range : nullptr;
+}
+Image* cube_face_tie_range(FrameResult& f, int i, bool grow) {
+  Image* face = cube_face(f, i, grow);
+  return face ? &f.shadow_maps[size_t(i / 6)].cube_tie_range[size_t(i % 6)] : nullptr;
+}
 Volume* conservative(FrameResult& f, int, bool) { return &f.conservative_occupancy; }
 Volume* holes(FrameResult& f, int, bool) { return &f.holes; }
 Volume* bounce_input(FrameResult& f, int, bool) { return &f.bounce_input; }
@@ -74,6 +83,10 @@ const std::vector<StageRow> kRows = {
    "a spot (perspective) or directional (orthographic) light's D32F depth map", "Shadow maps", "ref/stages/shadow_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
   {st::kShadowMapCube,         "shadow_map_cube_{}",            K::Image,  X::CubeFace, R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     cube_face,                                         nullptr,
    "one face of a point light's D32F cube (member light x 6 + face, GL's face order +x -x +y -y +z -z)", "Shadow maps", "ref/stages/shadow_map.cpp, ref/stages/cube_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
+  {st::kShadowMapTieRange,     "",                              K::Image,  X::Light,    R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     shadow_tie_range,                                  nullptr,
+   "per texel of a spot or directional light's map, the range of the depths a correct GL may store under 2^-8 texel vertex snapping and alpha-test ties (reference only)", "Shadow maps", "ref/stages/shadow_map_ties.cpp, ref/stages/raster_alternatives.cpp", "-", "shadow"},
+  {st::kShadowMapCubeTieRange, "",                              K::Image,  X::CubeFace, R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     cube_face_tie_range,                               nullptr,
+   "the same range per texel of one face of a point light's cube (member light x 6 + face; reference only)", "Shadow maps", "ref/stages/shadow_map_ties.cpp, ref/stages/raster_alternatives.cpp", "-", "shadow"},
   {st::kGbufferCoverage,       "gbuffer_coverage",              K::Image,  X::None,     R::Judged,    P::Unit,     T::Coverage,       false, C::Always,            1, "",                     gbuffer<&GBuffer::coverage>,                       nullptr,
    "the camera G-buffer's coverage per pixel centre", "G-buffer and direct light", "ref/stages/gbuffer.cpp, ref/stages/raster.cpp", "gl/gl_pass_raster.cpp (gbuffer_pass), gl/shaders/gbuffer.frag", "gbuffer"},
   {st::kGbufferDepth,          "gbuffer_depth",                 K::Image,  X::None,     R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     gbuffer<&GBuffer::depth>,                          nullptr,

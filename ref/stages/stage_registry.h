@@ -3,8 +3,9 @@
 // stage_set*.cpp), the comparison's order and tolerance models, and the report (validate writes
 // the table into run.json; `vct stages --json` prints it). Adding a stage is one row here plus its computation (docs/CONVENTIONS.md).
 //
-// Families are numbered: "shadow_map.<light>", "shadow_map_cube.<light x 6 + face>", "mip.iso.<level>",
-// "mip.<dir>.<level>" (level >= 1).
+// Families are numbered: "shadow_map.<light>", "shadow_map_cube.<light x 6 + face>" (and their
+// reference-only ranges "shadow_map_tie_range.<light>", "shadow_map_cube_tie_range.<light x 6 +
+// face>"), "mip.iso.<level>", "mip.<dir>.<level>" (level >= 1).
 // Row order is the pipeline order: the first failing stage in this order is the one to blame.
 #pragma once
 
@@ -21,6 +22,8 @@ namespace vct {
 namespace stage_names {
 inline constexpr char kShadowMap[] = "shadow_map";
 inline constexpr char kShadowMapCube[] = "shadow_map_cube";
+inline constexpr char kShadowMapTieRange[] = "shadow_map_tie_range";
+inline constexpr char kShadowMapCubeTieRange[] = "shadow_map_cube_tie_range";
 inline constexpr char kGbufferCoverage[] = "gbuffer.coverage";
 inline constexpr char kGbufferDepth[] = "gbuffer.depth";
 inline constexpr char kGbufferPosition[] = "gbuffer.position";

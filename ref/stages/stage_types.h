@@ -28,6 +28,11 @@ struct ShadowMap {
   mat4 view_proj{1.0f};  // world -> light clip space
   std::array<Image, 6> cube;         // point lights: face f sees along its Table 8.19 major axis
   std::array<mat4, 6> cube_view_proj{};  // world -> face clip space (90 degree perspective)
+  // Reference only (empty from GL): per texel the range [lo, hi] of the depth a correct GL may
+  // store there under 2^-8 texel vertex snapping and alpha-test ties, of `depth` and of each
+  // `cube` face (stages/shadow_map_ties.h); the comparison admits a value inside it.
+  Image tie_range;
+  std::array<Image, 6> cube_tie_range;
   bool is_cube() const { return !cube[0].empty(); }
 };
 

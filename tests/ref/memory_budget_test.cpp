@@ -27,20 +27,23 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   const uint64_t fragments = 8 * 64 * 64 * 116;  // 8 N^2 fragments, 116 B each
   EXPECT_EQ(e.voxels, occupancy + grid + mips + fragments);
   EXPECT_EQ(e.voxels, 15934608u);
-  // Shadow map 50^2 floats; per pixel: G-buffer 84 + texture slack 24 + raster alternatives 168
-  // + frame images 96 + cone images 2 x 80.
-  EXPECT_EQ(e.images, 50ull * 50 * 4 + 100ull * 100 * 532);
+  // Shadow map 50^2 floats and its range (two floats per texel); per pixel: G-buffer 84 + texture
+  // slack 24 + raster alternatives 168 + frame images 96 + cone images 2 x 80.
+  EXPECT_EQ(e.images, 50ull * 50 * 12 + 100ull * 100 * 532);
   EXPECT_EQ(e.raster_scratch, 100ull * 100 * 82);  // the camera's visibility buffer is larger
   EXPECT_EQ(e.path_tracer, 100ull * (16 * 8 + 256));  // accumulators + the kept first vertices
   EXPECT_EQ(e.baseline, 136ull << 20);
   EXPECT_EQ(e.total(), e.baseline + e.voxels + e.images + e.path_tracer);
-  // Shadow maps are rasterized depth-only: a large map adds its floats, no scratch.
+  // Shadow maps are rasterized depth-only, but their range of alternatives needs up to 82 B per
+  // texel while it is found (with alpha masks: three visibility buffers, the doubles of the
+  // surfaces behind), one map at a time: a large map's scratch outweighs a small image's.
   s.vct.shadow_map_size = 2048;
   const MemoryEstimate big_map = estimate_memory(s);
-  EXPECT_EQ(big_map.raster_scratch, 100ull * 100 * 82);
-  EXPECT_EQ(big_map.images, 2048ull * 2048 * 4 + 100ull * 100 * 532);
+  EXPECT_EQ(big_map.raster_scratch, 2048ull * 2048 * 82);
+  EXPECT_EQ(big_map.images, 2048ull * 2048 * 12 + 100ull * 100 * 532);
   // A large image's visibility buffer outweighs a small grid; only the larger counts.
   s.vct.grid = 16;
+  s.vct.shadow_map_size = 50;
   s.vct.width = s.vct.height = 2048;
   const MemoryEstimate big_image = estimate_memory(s);
   EXPECT_EQ(big_image.raster_scratch, 2048ull * 2048 * 82);
@@ -57,19 +60,19 @@ TEST(MemoryBudget, ConeImagesFollowTheConeCount) {
   s.vct.diffuse_cone_count = 5;
   EXPECT_EQ(sixteen - estimate_memory(s).images, 100ull * 11 * 2 * 16);
   s.vct.diffuse_cones = false;
-  EXPECT_EQ(estimate_memory(s).images, uint64_t(s.vct.shadow_map_size) * s.vct.shadow_map_size * 4 + 100ull * 372);  // 84 + 24 + 168 + 96
+  EXPECT_EQ(estimate_memory(s).images, uint64_t(s.vct.shadow_map_size) * s.vct.shadow_map_size * 12 + 100ull * 372);  // 84 + 24 + 168 + 96
 }
 
 // Each light's shadow maps count: one square float map per spot or directional light, six per
-// point light (shadow_map_layers); without a scene, one.
+// point light (shadow_map_layers), each with its two-float range; without a scene, one.
 TEST(MemoryBudget, ShadowMapsFollowTheLights) {
   Settings s;
   s.vct.shadow_map_size = 512;
   const uint64_t one = estimate_memory(s).images;
   EXPECT_EQ(estimate_memory(s, 1).images, one);
   // A sun and two point lamps (sun_room): 1 + 6 + 6 maps.
-  EXPECT_EQ(estimate_memory(s, 13).images - one, 12ull * 512 * 512 * 4);
-  EXPECT_EQ(estimate_memory(s, 0).images, one - 512ull * 512 * 4);
+  EXPECT_EQ(estimate_memory(s, 13).images - one, 12ull * 512 * 512 * 12);  // map + range
+  EXPECT_EQ(estimate_memory(s, 0).images, one - 512ull * 512 * 12);
 }
 
 // Multibounce keeps two mip pyramids (or two grids) and, while small, every earlier frame.

@@ -13,6 +13,7 @@
 #include "stages/inject.h"
 #include "stages/mips.h"
 #include "stages/shadow_map.h"
+#include "stages/shadow_map_ties.h"
 #include "stages/voxelize.h"
 
 namespace vct {
@@ -31,8 +32,12 @@ std::vector<uint8_t> run_all(const Scene& s, int threads) {
   st.width = 64;
   st.height = 48;
   st.shadow_map_size = 128;
-  const auto maps = render_shadow_maps(s, st);
-  for (const auto& m : maps) add(m.depth.data);
+  auto maps = render_shadow_maps(s, st);
+  add_shadow_tie_ranges(s, st, maps);
+  for (const auto& m : maps) {
+    add(m.depth.data);
+    add(m.tie_range.data);
+  }
   const GBuffer g = render_gbuffer(s, st);
   for (const Image* i : {&g.position, &g.normal, &g.albedo, &g.material, &g.depth, &g.coverage, &g.texture_slack, &g.tie_range})
     add(i->data);

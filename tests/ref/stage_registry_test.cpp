@@ -80,7 +80,9 @@ TEST(StageRegistry, NamesAreUniqueAndFamiliesNumbered) {
   for (const StageRow& row : stage_rows()) {
     EXPECT_TRUE(names.insert(row.name).second) << row.name;
     const bool family = row.index != StageIndex::None;
-    EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
+    // A dumped family's stem names its member; rows without a stem (the reference-only ranges)
+    // reach the dumps through the manifest's stage set, named by stage (compare/dump_manifest.h).
+    if (*row.dump_stem != '\0') EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
     EXPECT_TRUE(row.image || row.volume || row.role == StageRole::Derived) << row.name;
     if (row.role != StageRole::Derived) {
       EXPECT_EQ(row.kind == StageKind::Image, row.image != nullptr) << row.name;

@@ -1,0 +1,141 @@
+#include "stages/raster_alternatives.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/parallel.h"
+#include "scene/alpha_mask.h"
+#include "stages/alpha_ties.h"
+#include "stages/texture_slack.h"
+
+namespace vct {
+
+namespace {
+
+void copy_entry(const VisibilityBuffer& from, size_t i, VisibilityBuffer& to) {
+  to.depth[i] = from.depth[i];
+  to.triangle[i] = from.triangle[i];
+  to.bary[i] = from.bary[i];
+  to.front_facing[i] = from.front_facing[i];
+  to.facing_tie[i] = from.facing_tie[i];
+}
+
+VisibilityBuffer empty_buffer(int w, int h) {
+  VisibilityBuffer vb;
+  vb.width = w;
+  vb.height = h;
+  const size_t n = size_t(w) * size_t(h);
+  vb.depth.assign(n, 1.0f);
+  vb.triangle.assign(n, -1);
+  vb.bary.assign(n, vec3(0.0f));
+  vb.front_facing.assign(n, 0);
+  vb.facing_tie.assign(n, 0);
+  return vb;
+}
+
+// The front-most fragment at each pixel centre that a correct GL may keep: an alpha-tested
+// fragment the reference cuts away is skipped only where its test cannot flip. Layers in front
+// that are cut away for certain (a leaf's transparent corner over another leaf) do not hide a
+// tie behind them. Rasterized as render_visibility (bands, triangles in index order).
+VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  VisibilityBuffer vb = empty_buffer(w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
+  const std::vector<vec2>& centre = standard_sample_positions(1);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
+      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
+        const int row = h - 1 - f.y;
+        const size_t i = vb.index(f.x, row);
+        if (!(f.depth < vb.depth[i])) return;  // GL_LESS
+        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z) &&
+            !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary))
+          return;
+        vb.depth[i] = f.depth;
+        vb.triangle[i] = int32_t(t.source);
+        vb.bary[i] = f.bary;
+        vb.front_facing[i] = t.front_facing ? 1 : 0;
+        vb.facing_tie[i] = t.facing_tie ? 1 : 0;
+      });
+    }
+  });
+  return vb;
+}
+
+}  // namespace
+
+double depth_tie_margin(const RasterTriangle& t) {
+  const EdgeSetup e = edge_setup(t);
+  double dzdx = 0.0, dzdy = 0.0;  // per sub-pixel step
+  for (int i = 0; i < 3; ++i) {
+    dzdx += double(e.a[i]) * t.z[i];
+    dzdy += double(e.b[i]) * t.z[i];
+  }
+  return std::ldexp(1.0, -22) + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
+}
+
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
+                                bool depth_ties) {
+  const int w = front.width, h = front.height;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  std::vector<double> margins(binned.triangles.size());
+  if (depth_ties)
+    for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
+  // The front fragment's margin, found again by its source triangle at the pixel.
+  std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
+  VisibilityBuffer alt = empty_buffer(w, h);
+  const std::vector<vec2>& centre = standard_sample_positions(1);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
+      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
+        const size_t i = front.index(f.x, h - 1 - f.y);
+        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
+        if (int32_t(t.source) == front.triangle[i]) {
+          front_margin[i] = std::max(front_margin[i], margins[ti]);
+          return;
+        }
+        const double key = double(f.depth) - margins[ti];
+        if (!(key < best[i])) return;
+        best[i] = key;
+        alt.depth[i] = f.depth;
+        alt.triangle[i] = int32_t(t.source);
+        alt.bary[i] = f.bary;
+        alt.front_facing[i] = t.front_facing ? 1 : 0;
+        alt.facing_tie[i] = t.facing_tie ? 1 : 0;
+      });
+    }
+  });
+  if (!depth_ties) return alt;
+  // No tie: the front surface itself (callers skip it; -1 would mean an empty pixel).
+  for (size_t i = 0; i < alt.triangle.size(); ++i)
+    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
+      alt.triangle[i] = front.triangle[i];
+  return alt;
+}
+
+AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb) {
+  const int w = vb.width, h = vb.height;
+  const VisibilityBuffer unmasked = front_that_may_be_kept(scene, view_proj, w, h);
+  AlphaFlipSurfaces out;
+  out.surface = other_surfaces(scene, view_proj, vb, false);  // behind the reference's front
+  out.may_flip.assign(vb.triangle.size(), 0);
+  const WindowBarycentrics wb(view_proj, w, h);
+  parallel_rows(h, [&](int row) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = vb.index(x, row);
+      const int32_t top = unmasked.triangle[i];
+      if (top < 0 || !alpha_test_may_flip(scene, wb, x, row, uint32_t(top), unmasked.bary[i])) continue;
+      out.may_flip[i] = 1;
+      if (vb.triangle[i] != top) copy_entry(unmasked, i, out.surface);  // the reference discarded it
+    }
+  });
+  return out;
+}
+
+}  // namespace vct

@@ -1,0 +1,56 @@
+// What one sub-pixel step of vertex snapping leaves free in a rasterization, shared by the camera's
+// raster alternatives (stages/gbuffer_ties.h) and the shadow maps' (stages/shadow_map_ties.h). GL
+// leaves how window coordinates are computed and rounded to the sub-pixel grid to the
+// implementation (GL 4.5 section 14.6.1; GL_SUBPIXEL_BITS only says how many bits are kept), so
+// every snapped coordinate may be one step (2^-8 pixel) off the reference's: edges move like the
+// sample moved by (+-2^-8, +-2^-8), depth planes by their slope times one step, and an alpha test
+// near its cutoff may go either way (docs/compare.md, "Raster alternatives").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "scene/scene.h"
+#include "stages/raster.h"
+
+namespace vct {
+
+/// The four sample shifts (pixels, window axes) whose coverage the alternatives follow.
+constexpr double kRasterTieShift = 1.0 / 256.0;
+
+/// Sample offset k (0..3) of the four (+-2^-8, +-2^-8) shifts from the pixel centre, in
+/// sub-pixel steps from the pixel's lower-left corner (x, y): (127 or 129, 127 or 129).
+inline void shifted_sample_steps(int k, int64_t& sx, int64_t& sy) {
+  sx = kSubpixelScale / 2 + ((k & 1) ? 1 : -1);
+  sy = kSubpixelScale / 2 + ((k & 2) ? 1 : -1);
+}
+
+/// How far a correct GL's window depth of triangle `t` at a pixel centre may lie from the
+/// reference's: its plane moved by one sub-pixel step on each axis, 2^-8 (|dz/dx| + |dz/dy|) per
+/// pixel (the d32f-depth model's slope term; dz/dx = sum a_i z_i / area2 per step), plus 2^-22
+/// for the float evaluation b0 z0 + b1 z1 + b2 z2 and its storage as D32F (three roundings of
+/// values below 1, each at most half an ulp of 1, 2^-24, with room to spare).
+double depth_tie_margin(const RasterTriangle& t);
+
+/// Per pixel, the fragment other than `front`'s (a different source triangle) whose key is
+/// smallest. `depth_ties`: key = depth minus depth_tie_margin, kept when it ties with the front,
+/// z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key = depth:
+/// the surface behind the front one (triangle -1: none). Alpha-masked fragments are discarded.
+/// Rasterized as render_visibility does (bands, triangles in index order), so the result does not
+/// depend on the thread count.
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
+                                bool depth_ties);
+
+/// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface a correct GL may keep (masks
+/// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)
+/// may pass or fail its alpha test (`may_flip` 1), `surface` holds the other outcome: that surface
+/// where the reference (`vb`, rendered with the masks) discarded it, what lies behind it
+/// (other_surfaces; triangle -1 = nothing, the clear value) where the reference kept it.
+struct AlphaFlipSurfaces {
+  VisibilityBuffer surface;
+  std::vector<uint8_t> may_flip;
+};
+AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb);
+
+}  // namespace vct

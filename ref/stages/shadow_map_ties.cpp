@@ -1,0 +1,229 @@
+#include "stages/shadow_map_ties.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/parallel.h"
+#include "scene/alpha_mask.h"
+#include "stages/gbuffer_ties.h"
+#include "stages/raster.h"
+#include "stages/raster_alternatives.h"
+#include "stages/shadow_map.h"
+
+namespace vct {
+
+namespace {
+
+constexpr int kShifts = 4;
+
+// Which of the five samples (the centre, then the four shifts) of row y the triangle covers.
+struct RowSpans {
+  int x0[1 + kShifts], x1[1 + kShifts];
+  bool any[1 + kShifts];
+  bool covers(int k, int x) const { return any[k] && x >= x0[k] && x <= x1[k]; }
+};
+
+// The spans of the five samples, their union [ux0, ux1] and the texels all five cover [ix0, ix1]
+// (empty when ix0 > ix1). False when no sample of the row is covered.
+bool row_spans(const RasterTriangle& t, const EdgeSetup& e, int y, RowSpans& s, int& ux0, int& ux1, int& ix0,
+               int& ix1) {
+  ux0 = t.xmax + 1, ux1 = t.xmin - 1, ix0 = t.xmin, ix1 = t.xmax;
+  for (int k = 0; k <= kShifts; ++k) {
+    int64_t sx = kSubpixelScale / 2, sy = kSubpixelScale / 2;
+    if (k > 0) shifted_sample_steps(k - 1, sx, sy);
+    s.x0[k] = t.xmin, s.x1[k] = t.xmax;
+    s.any[k] = sample_row_span(e, y, sx, sy, s.x0[k], s.x1[k]);
+    if (!s.any[k]) {
+      ix0 = t.xmax + 1;
+      continue;
+    }
+    ux0 = std::min(ux0, s.x0[k]), ux1 = std::max(ux1, s.x1[k]);
+    ix0 = std::max(ix0, s.x0[k]), ix1 = std::min(ix1, s.x1[k]);
+  }
+  return ux0 <= ux1;
+}
+
+float clamped(double z) { return float(std::clamp(z, 0.0, 1.0)); }
+
+// One band's rows (band row r = window y - y0) while its triangles are swept: the smallest depth
+// of the fragments covering all five samples (`common`, most of them), of those covering shift k
+// but not all five (`partial[k]`, texels near an edge), and over the fragments covering the
+// centre the smallest z - m and z + m (m = depth_tie_margin). Each shift's front depth is then
+// min(common, partial[k]); 1 (the clear value) where nothing is.
+// The partial rows are filled on first use (`edged`): most rows of a band hold no edge texel
+// of any triangle when maps are large. One per thread, reset for each band: a band's arrays are
+// larger than malloc's mmap threshold, and fresh pages per band cost more than the sweep.
+struct BandDepths {
+  int width = 0;
+  std::vector<float> common, lo, hi;
+  std::array<std::vector<float>, kShifts> partial;
+  std::vector<uint8_t> edged;
+  void reset(int w, int rows) {
+    width = w;
+    const size_t n = size_t(w) * size_t(rows);
+    common.assign(n, 1.0f), lo.assign(n, 1.0f), hi.assign(n, 1.0f);
+    for (auto& p : partial) p.resize(n);
+    edged.assign(size_t(rows), 0);
+  }
+  void touch_partial(size_t row) {
+    if (edged[row]) return;
+    edged[row] = 1;
+    for (auto& p : partial) std::fill_n(p.begin() + ptrdiff_t(row * size_t(width)), width, 1.0f);
+  }
+};
+
+// One fragment at texel x of band row r, whichever samples `spans` says it covers.
+void add_fragment(const RowSpans& spans, int x, size_t r, float z, double m, BandDepths& b) {
+  const size_t i = r * size_t(b.width) + size_t(x);
+  bool all = true;
+  for (int k = 0; k <= kShifts; ++k) all = all && spans.covers(k, x);
+  if (all) {
+    b.common[i] = std::min(b.common[i], z);
+  } else {
+    b.touch_partial(r);
+    for (int k = 0; k < kShifts; ++k)
+      if (spans.covers(k + 1, x)) b.partial[size_t(k)][i] = std::min(b.partial[size_t(k)][i], z);
+  }
+  if (!spans.covers(0, x)) return;
+  b.lo[i] = std::min(b.lo[i], clamped(double(z) - m));
+  b.hi[i] = std::min(b.hi[i], clamped(double(z) + m));
+}
+
+// Texels x0..x1 of band row `row` covered by all five samples, as depth_raster.cpp's span loop:
+// edge values carried in doubles as e(x0) + k * step (exact integers below 2^53), the same depth
+// bits as the map's, and a loop that vectorizes.
+void add_interior(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, size_t row, double m,
+                  BandDepths& b) {
+  const int64_t px = int64_t(x0) * kSubpixelScale + kSubpixelScale / 2;
+  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+  double e0[3], step[3];
+  for (int i = 0; i < 3; ++i) {
+    e0[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]);
+    step[i] = double(e.a[i] * kSubpixelScale);
+  }
+  const double area = double(t.area2);
+  float* common = b.common.data() + row + size_t(x0);
+  float* lo = b.lo.data() + row + size_t(x0);
+  float* hi = b.hi.data() + row + size_t(x0);
+  for (int k = 0; k <= x1 - x0; ++k) {
+    const double dk = double(k);
+    const float z = interpolate_window_depth((e0[0] + dk * step[0]) / area, (e0[1] + dk * step[1]) / area,
+                                             (e0[2] + dk * step[2]) / area, t.z);
+    common[k] = z < common[k] ? z : common[k];
+    const float l = clamped(double(z) - m), h = clamped(double(z) + m);
+    lo[k] = l < lo[k] ? l : lo[k];
+    hi[k] = h < hi[k] ? h : hi[k];
+  }
+}
+
+// One triangle's fragments in the band's rows. The depth is the one every raster path computes at
+// the centre (interpolate_window_depth from exact edge values), whichever sample decided coverage;
+// an alpha-masked fragment writes nothing anywhere (GL discards it before the depth test, and its
+// barycentrics are the centre's for every sample).
+void sweep_triangle(const RasterTriangle& t, int y0, int y1, const Scene& scene, BandDepths& b) {
+  const EdgeSetup e = edge_setup(t);
+  const double m = depth_tie_margin(t);
+  const bool masked = triangle_alpha_tested(scene, t.source);
+  const double area = double(t.area2);
+  RowSpans spans;
+  RasterFragment f;
+  for (int y = std::max(y0, t.ymin); y <= std::min(y1, t.ymax); ++y) {
+    int ux0, ux1, ix0, ix1;
+    if (!row_spans(t, e, y, spans, ux0, ux1, ix0, ix1)) continue;
+    const size_t row = size_t(y - y0) * size_t(b.width);
+    if (!masked && ix0 <= ix1) add_interior(t, e, y, ix0, ix1, row, m, b);
+    const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+    for (int x = ux0; x <= ux1; ++x) {
+      if (!masked && x == ix0 && ix0 <= ix1) x = ix1 + 1;  // the interior is done
+      if (x > ux1) break;
+      float z;
+      if (masked) {
+        interpolate_at_centre(t, e, x, y, f);
+        if (surface_masked(scene, t.source, f.bary.y, f.bary.z)) continue;
+        z = f.depth;
+      } else {
+        const int64_t px = int64_t(x) * kSubpixelScale + kSubpixelScale / 2;
+        z = interpolate_window_depth(double(e.a[0] * px + e.b[0] * py + e.c[0]) / area,
+                                     double(e.a[1] * px + e.b[1] * py + e.c[1]) / area,
+                                     double(e.a[2] * px + e.b[2] * py + e.c[2]) / area, t.z);
+      }
+      add_fragment(spans, x, size_t(y - y0), z, m, b);
+    }
+  }
+}
+
+// One sweep over the binned triangles, band by band in parallel (a band owns its rows and walks
+// its triangles in index order; every value is a minimum, so the result does not depend on the
+// thread count), each band folded into `range` (channels lo, hi; row 0 = top) as soon as it is
+// done, so the scratch is one band per thread.
+void sweep_alternatives(const Scene& scene, const mat4& view_proj, Image& range) {
+  const int size = range.width;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, size, size);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(size, y0 + kRasterBandRows) - 1;
+    thread_local BandDepths b;
+    b.reset(size, y1 - y0 + 1);
+    for (uint32_t ti : binned.bands[size_t(band)]) sweep_triangle(binned.triangles[ti], y0, y1, scene, b);
+    for (int y = y0; y <= y1; ++y) {
+      const bool edged = b.edged[size_t(y - y0)];
+      for (int x = 0; x < size; ++x) {
+        const size_t i = size_t(y - y0) * size_t(size) + size_t(x);
+        float l = b.lo[i], h = b.hi[i];
+        if (edged) {
+          for (const auto& p : b.partial) {
+            const float shifted = std::min(b.common[i], p[i]);
+            l = std::min(l, shifted), h = std::max(h, shifted);
+          }
+        } else {  // no edge texel in the row: every shift sees `common`
+          l = std::min(l, b.common[i]), h = std::max(h, b.common[i]);
+        }
+        float* out = range.pixel(x, size - 1 - y);
+        out[0] = l, out[1] = h;
+      }
+    }
+  });
+}
+
+// The other outcome of every alpha test that may flip (raster_alternatives.h): its depth, or the
+// clear value where nothing lies behind.
+void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, Image& range) {
+  const int size = range.width;
+  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, size, size, &scene);
+  const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);
+  parallel_rows(size, [&](int row) {
+    for (int x = 0; x < size; ++x) {
+      const size_t i = vb.index(x, row);
+      if (!flips.may_flip[i]) continue;
+      float* out = range.pixel(x, row);
+      out[0] = std::min(out[0], flips.surface.depth[i]);
+      out[1] = std::max(out[1], flips.surface.depth[i]);
+    }
+  });
+}
+
+}  // namespace
+
+Image shadow_depth_range(const Scene& scene, const mat4& view_proj, int size, ShadowDepthFormat format) {
+  Image range(size, size, 2);
+  range.channel_names = {tie_range_channel_name("depth", 0, false), tie_range_channel_name("depth", 0, true)};
+  sweep_alternatives(scene, view_proj, range);
+  if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, range);
+  // Rounding to the format is monotone, so the rounded ends still hold the map's own stored value.
+  if (depth_quantum(format) > 0.0)
+    for (float& z : range.data) z = stored_window_depth(z, format);
+  return range;
+}
+
+void add_shadow_tie_ranges(const Scene& scene, const VctSettings& settings, std::vector<ShadowMap>& maps) {
+  const int size = settings.shadow_map_size;
+  const ShadowDepthFormat format = settings.shadow_depth_format;
+  for (ShadowMap& m : maps) {
+    if (m.is_cube()) {
+      for (size_t f = 0; f < 6; ++f) m.cube_tie_range[f] = shadow_depth_range(scene, m.cube_view_proj[f], size, format);
+    } else if (!m.depth.empty()) {
+      m.tie_range = shadow_depth_range(scene, m.view_proj, size, format);
+    }
+  }
+}
+
+}  // namespace vct

@@ -1,0 +1,149 @@
+// Raster alternatives in light space (stages/shadow_map_ties.h): the depths a correct GL may store
+// at a shadow-map texel under 2^-8 texel vertex snapping and alpha-test ties, hand-computed on
+// orthographic maps where one texel is one world unit and every window depth is exact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "alpha_card_scene.h"
+#include "stage_test_scene.h"
+#include "stages/shadow_map.h"
+#include "stages/shadow_map_ties.h"
+
+namespace vct {
+namespace {
+
+constexpr int kSize = 16;
+
+// Looks down -z from the origin; x, y in [-8, 8] map onto 16 x 16 texels (texel column c's centre
+// at x = c - 7.5), depth 1..11: window depth (-z - 1) / 10, so z = -3 stores 0.2 and z = -8 0.7.
+mat4 light_view_proj() {
+  return glm::ortho(-8.0f, 8.0f, -8.0f, 8.0f, 1.0f, 11.0f) *
+         glm::lookAt(vec3(0.0f), vec3(0.0f, 0.0f, -1.0f), vec3(0.0f, 1.0f, 0.0f));
+}
+
+float lo_of(const Image& r, int x, int row) { return r.at(x, row, 0); }
+float hi_of(const Image& r, int x, int row) { return r.at(x, row, 1); }
+
+TEST(ShadowMapTies, SilhouetteThroughAColumnOfTexelCentresAdmitsTheFarDepthAndTheClearValue) {
+  Scene s;
+  const uint32_t grey = test::add_material(s, vec3(0.5f));
+  // A quad at z = -3 whose right edge x = 2.5 runs through the centres of texel column 10; behind
+  // it, in the lower half of the map only (y < 0: image rows 8..15), a wall at z = -8.
+  test::add_quad(s, {-9, -9, -3}, {2.5f, -9, -3}, {2.5f, 9, -3}, {-9, 9, -3}, {0, 0, 1}, grey);
+  test::add_quad(s, {-9, -9, -8}, {9, -9, -8}, {9, 0, -8}, {-9, 0, -8}, {0, 0, 1}, grey);
+  const Image r = shadow_depth_range(s, light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
+  ASSERT_EQ(r.channels, 2);
+  EXPECT_EQ(r.channel_names[0], "depth.0.lo");
+  EXPECT_EQ(r.channel_names[1], "depth.0.hi");
+  // Both planes face the light head-on: their margin is the float term alone.
+  const float m = float(std::ldexp(1.0, -22));
+  for (int row = 0; row < kSize; ++row) {
+    const bool wall = row >= 8;
+    // On the edge: the reference keeps the wall (0.7) or nothing (1) -- the top-left rule leaves a
+    // centre on a right edge uncovered -- and the sample one step left lands on the quad (0.2, its
+    // depth at the centre).
+    EXPECT_NEAR(lo_of(r, 10, row), 0.2f, 1e-7f) << row;
+    EXPECT_NEAR(hi_of(r, 10, row), wall ? 0.7f + m : 1.0f, 1e-7f) << row;
+    // Half a texel off the edge (128 sub-texel steps): only the own plane's margin.
+    EXPECT_NEAR(lo_of(r, 9, row), 0.2f - m, 1e-7f) << row;
+    EXPECT_NEAR(hi_of(r, 9, row), 0.2f + m, 1e-7f) << row;
+    EXPECT_NEAR(lo_of(r, 11, row), wall ? 0.7f - m : 1.0f, 1e-7f) << row;
+    EXPECT_NEAR(hi_of(r, 11, row), wall ? 0.7f + m : 1.0f, 1e-7f) << row;
+    EXPECT_NEAR(hi_of(r, 3, row) - lo_of(r, 3, row), 2.0f * m, 1e-7f) << row;
+  }
+  // Nothing covers any sample of the upper right: the clear value only.
+  EXPECT_EQ(lo_of(r, 14, 2), 1.0f);
+  EXPECT_EQ(hi_of(r, 14, 2), 1.0f);
+}
+
+TEST(ShadowMapTies, SlopedPlaneSpansItsOwnMarginOfOneStepPerAxis) {
+  Scene s;
+  const uint32_t grey = test::add_material(s, vec3(0.5f));
+  // z = -3 - 0.1 x: window depth 0.2 + 0.01 x, 0.01 per texel along x, none along y; one
+  // sub-texel step on each axis moves it by 2^-8 * 0.01 (depth_tie_margin, with its 2^-22).
+  test::add_quad(s, {-9, -9, -2.1f}, {9, -9, -3.9f}, {9, 9, -3.9f}, {-9, 9, -2.1f}, {0, 0, 1}, grey);
+  const Image r = shadow_depth_range(s, light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
+  const double m = std::ldexp(1.0, -22) + 0.01 / 256.0;
+  for (int row = 1; row < kSize - 1; row += 3)
+    for (int x = 1; x < kSize - 1; x += 2) {
+      const double z = 0.2 + 0.01 * (double(x) - 7.5);
+      EXPECT_NEAR(lo_of(r, x, row), z - m, 2e-7) << x << "," << row;
+      EXPECT_NEAR(hi_of(r, x, row), z + m, 2e-7) << x << "," << row;
+    }
+}
+
+TEST(ShadowMapTies, AlphaTestAtTheCutoffAdmitsTheCardAndTheBackdrop) {
+  // The half-masked card (alpha_card_scene.h, alpha = cutoff on x = 0) seen by an orthographic
+  // light from z = 1 over exactly the card, 33 texels: x = 0 is column 16's centres. Window depth
+  // (-z_view - 0.5) / 2.5: the card (z_view = -1) stores 0.2, the backdrop (-2) 0.6.
+  const Scene s = test::half_masked_card(true);
+  const mat4 vp = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.5f, 3.0f) *
+                  glm::lookAt(vec3(0.0f, 0.0f, 1.0f), vec3(0.0f), vec3(0.0f, 1.0f, 0.0f));
+  const Image r = shadow_depth_range(s, vp, 33, ShadowDepthFormat::Depth32f);
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LE(lo_of(r, 16, row), 0.2f + 1e-6f) << row;
+    EXPECT_GE(hi_of(r, 16, row), 0.6f - 1e-6f) << row;
+    // Two columns away the alpha is 0.12 from the cutoff: one outcome, the own plane's margin.
+    EXPECT_NEAR(lo_of(r, 18, row), 0.2f, 1e-6f) << row;
+    EXPECT_NEAR(hi_of(r, 18, row), 0.2f, 1e-6f) << row;
+    EXPECT_NEAR(lo_of(r, 14, row), 0.6f, 1e-6f) << row;
+    EXPECT_NEAR(hi_of(r, 14, row), 0.6f, 1e-6f) << row;
+  }
+}
+
+TEST(ShadowMapTies, ACardCutAwayForCertainDoesNotHideTheTieBehindIt) {
+  // The same card and backdrop under a fully transparent masked card (alpha 0 everywhere: cut away
+  // for certain), the light at z = 2: window depth (-z_view - 0.5) / 3, so the clear card stores
+  // nothing, the half-masked card 0.5, the backdrop 5/6. The tie on x = 0 is the second layer's.
+  Scene s = test::half_masked_card(true);
+  Material clear = s.materials[0];
+  clear.base_color_texture.texture = -1;
+  clear.base_color_factor = vec4(1.0f, 1.0f, 1.0f, 0.0f);
+  s.materials.push_back(clear);
+  test::add_card_quad(s, 0.5f, 1.0f, uint32_t(s.materials.size() - 1));
+  const mat4 vp = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.5f, 3.5f) *
+                  glm::lookAt(vec3(0.0f, 0.0f, 2.0f), vec3(0.0f), vec3(0.0f, 1.0f, 0.0f));
+  const Image r = shadow_depth_range(s, vp, 33, ShadowDepthFormat::Depth32f);
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LE(lo_of(r, 16, row), 0.5f + 1e-6f) << row;
+    EXPECT_GE(hi_of(r, 16, row), 5.0f / 6.0f - 1e-6f) << row;
+    EXPECT_NEAR(hi_of(r, 18, row) - lo_of(r, 18, row), 0.0f, 1e-6f) << row;
+  }
+}
+
+TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
+  Scene s = test::stage_room();
+  s.lights.resize(1);
+  s.lights[0].kind = LightKind::Point;
+  VctSettings st;
+  st.shadow_map_size = 32;
+  st.shadow_depth_format = ShadowDepthFormat::Depth16;
+  std::vector<ShadowMap> maps = render_shadow_maps(s, st);
+  add_shadow_tie_ranges(s, st, maps);
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_TRUE(maps[0].tie_range.empty());  // a point light has faces, no 2D map
+  const double q = 1.0 / 65535.0;
+  const auto on_grid = [](float z) { return stored_window_depth(z, ShadowDepthFormat::Depth16) == z; };
+  int widened = 0;
+  for (size_t f = 0; f < 6; ++f) {
+    const Image& face = maps[0].cube[f];
+    const Image& r = maps[0].cube_tie_range[f];
+    ASSERT_EQ(r.width, 32);
+    ASSERT_EQ(r.channels, 2);
+    for (int row = 0; row < 32; ++row)
+      for (int x = 0; x < 32; ++x) {
+        const float z = face.at(x, row, 0), lo = lo_of(r, x, row), hi = hi_of(r, x, row);
+        EXPECT_LE(lo, z);
+        EXPECT_GE(hi, z);
+        // Both ends rounded to the format's steps, as the map.
+        EXPECT_TRUE(on_grid(lo)) << lo;
+        EXPECT_TRUE(on_grid(hi)) << hi;
+        widened += hi - lo > 1.5 * q;
+      }
+  }
+  EXPECT_GT(widened, 0);  // the room's box and walls have silhouettes in some face
+}
+
+}  // namespace
+}  // namespace vct
