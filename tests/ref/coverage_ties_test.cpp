@@ -143,7 +143,9 @@ TEST(CoverageTies, ConservativeBoxesTouchedWithinTheArithmeticAreTies) {
     EXPECT_TRUE(has(vox.fragments, nullptr, {1, 1, 2}));
     EXPECT_FALSE(has(vox.fragments, &vox.may_drop, {1, 1, 2}));
     EXPECT_EQ(has(vox.may_add, nullptr, {1, 0, 2}), gap == 0.0f) << "gap " << gap;
-    if (gap == 0.0f) EXPECT_TRUE(has(vox.fragments, &vox.may_drop, {2, 2, 2}));
+    if (gap == 0.0f) {
+      EXPECT_TRUE(has(vox.fragments, &vox.may_drop, {2, 2, 2}));
+    }
   }
 }
 

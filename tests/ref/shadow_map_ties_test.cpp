@@ -139,7 +139,7 @@ TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
         // Both ends rounded to the format's steps, as the map.
         EXPECT_TRUE(on_grid(lo)) << lo;
         EXPECT_TRUE(on_grid(hi)) << hi;
-        widened += hi - lo > 1.5 * q;
+        widened += double(hi - lo) > 1.5 * q;
       }
   }
   EXPECT_GT(widened, 0);  // the room's box and walls have silhouettes in some face

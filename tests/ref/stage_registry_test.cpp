@@ -82,7 +82,9 @@ TEST(StageRegistry, NamesAreUniqueAndFamiliesNumbered) {
     const bool family = row.index != StageIndex::None;
     // A dumped family's stem names its member; rows without a stem (the reference-only ranges)
     // reach the dumps through the manifest's stage set, named by stage (compare/dump_manifest.h).
-    if (*row.dump_stem != '\0') EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
+    if (*row.dump_stem != '\0') {
+      EXPECT_EQ(family, std::string(row.dump_stem).find("{}") != std::string::npos) << row.name;
+    }
     EXPECT_TRUE(row.image || row.volume || row.role == StageRole::Derived) << row.name;
     if (row.role != StageRole::Derived) {
       EXPECT_EQ(row.kind == StageKind::Image, row.image != nullptr) << row.name;
