@@ -2,13 +2,14 @@
 # Runs `vct validate` over every scene in scenes/ (and the built-in one) across image sizes,
 # grids and pipeline options, and prints one line per run: verdict and first failing stage.
 # A FAIL on a correct build is a bug of a tolerance model or of the emulation (docs/compare.md).
-#   scripts/validate_matrix.sh [--quick] [--cross] [--sizes 64,128] [--grids 32,64] [--out DIR] [--threads N]
+#   scripts/validate_matrix.sh [--quick] [--cross] [--sizes 64,128] [--grids 32,64] [--variants A,B] [--out DIR] [--threads N]
 #   --quick: 64^2 and grid 32 only, the option variants on the built-in scene (minutes, not hours)
 #   --cross: every combination of the four pipeline options (reduction, bounces, soft shadows,
 #            anisotropic mips: 16 variants) instead of one at a time. Thread count is not crossed:
 #            every stage's bytes are the same for any thread count (the Determinism tests), so a
 #            verdict cannot depend on it.
 #   --sizes / --grids: a part of the full matrix (every scene, every variant, these sizes only)
+#   --variants: only these variants by name (e.g. default,cas-b3-soft-aniso)
 # Exit 1 when any run fails.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -19,12 +20,14 @@ CROSS=0
 THREADS=2
 SIZES=""
 GRIDS=""
+VARIANTS=""
 while (($#)); do
   case $1 in
     --quick) QUICK=1 ;;
     --cross) CROSS=1 ;;
     --sizes) SIZES=$2; shift ;;
     --grids) GRIDS=$2; shift ;;
+    --variants) VARIANTS=",$2," ; shift ;;
     --out) OUT=$2; shift ;;
     --threads) THREADS=$2; shift ;;
     *) echo "validate_matrix.sh: unknown argument $1" >&2; exit 2 ;;
@@ -81,6 +84,7 @@ for scene in "${scenes[@]}"; do
         flags=${v#*|}
         # --quick: the variants on the built-in scene, the default on every other scene
         if ((QUICK)) && [ -n "$scene" ] && [ "$name" != default ]; then continue; fi
+        if [ -n "$VARIANTS" ] && [[ $VARIANTS != *",$name,"* ]]; then continue; fi
         run_one "$scene" "$size" "$grid" "$name" "$flags"
       done
     done
