@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "stages/fragment_slack.h"
-#include "stages/gbuffer_ties.h"
+#include "stages/raster_alternatives.h"  // kRasterTieShift
 
 namespace vct {
 
@@ -66,7 +66,7 @@ void for_each_uncertain_voxel(const Voxelization& vox, const std::function<void(
   }
 }
 
-// The largest mean of `certain` plus a subset of `uncertain` (not empty when `certain` is): the
+// The largest mean of `certain` plus a subset of `uncertain` (the whole set never empty): the
 // subset with the largest mean of any given size is the largest values, and the best size is
 // found by trying every prefix of the sorted values.
 double largest_mean(const std::vector<double>& certain, std::vector<double> uncertain) {
