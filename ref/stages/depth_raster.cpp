@@ -11,18 +11,12 @@ namespace vct {
 namespace {
 
 // Depth test of the covered centres x0..x1 of row y against `row` (window x indexed).
-// Edge values are carried in doubles as e(x0) + k * step: every term is an integer below 2^53
-// (|e| < 2^49 for a 16384^2 viewport with the 4-viewport guard band, 8 sub-pixel bits), so they
-// are exactly the int64 values rasterize() converts, and the loop has no int64 -> double
-// conversion per pixel (it vectorizes).
+// Edge values are carried in doubles as e(x0) + k * step (SpanEdges, stages/raster.h: exact, and
+// the loop vectorizes).
 void depth_test_span(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, float* row) {
-  const int64_t px = int64_t(x0) * kSubpixelScale + kSubpixelScale / 2;
-  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
-  double e0[3], step[3];
-  for (int i = 0; i < 3; ++i) {
-    e0[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]);
-    step[i] = double(e.a[i] * kSubpixelScale);
-  }
+  const SpanEdges span(e, y, x0);
+  const double* e0 = span.e0;
+  const double* step = span.step;
   const double area = double(t.area2);
   float* out = row + x0;
   const int n = x1 - x0 + 1;

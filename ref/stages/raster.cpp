@@ -224,10 +224,7 @@ BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vec
   return b;
 }
 
-VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
-                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
-                                   int width, int height, const Scene* alpha_scene, vec2 sample) {
-  const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
+VisibilityBuffer empty_visibility(int width, int height) {
   VisibilityBuffer vb;
   vb.width = width;
   vb.height = height;
@@ -237,6 +234,31 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
   vb.bary.assign(n, vec3(0.0f));
   vb.front_facing.assign(n, 0);
   vb.facing_tie.assign(n, 0);
+  return vb;
+}
+
+void store_fragment(VisibilityBuffer& vb, size_t i, const RasterTriangle& t, const RasterFragment& f) {
+  vb.depth[i] = f.depth;
+  vb.triangle[i] = int32_t(t.source);
+  vb.bary[i] = f.bary;
+  vb.front_facing[i] = t.front_facing ? 1 : 0;
+  vb.facing_tie[i] = t.facing_tie ? 1 : 0;
+}
+
+SpanEdges::SpanEdges(const EdgeSetup& e, int y, int x0) {
+  const int64_t px = int64_t(x0) * kSubpixelScale + kSubpixelScale / 2;
+  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
+  for (int i = 0; i < 3; ++i) {
+    e0[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]);
+    step[i] = double(e.a[i] * kSubpixelScale);
+  }
+}
+
+VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
+                                   const std::vector<uvec3>& triangles, const mat4& view_proj,
+                                   int width, int height, const Scene* alpha_scene, vec2 sample) {
+  const BinnedTriangles binned = setup_and_bin(positions, triangles, view_proj, width, height);
+  VisibilityBuffer vb = empty_visibility(width, height);
   const std::vector<vec2> samples = {sample};
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(height, y0 + kRasterBandRows) - 1;
@@ -247,11 +269,7 @@ VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
         const size_t idx = vb.index(f.x, height - 1 - f.y);
         if (!(f.depth < vb.depth[idx])) return;  // GL_LESS
         if (alpha_tested && surface_masked(*alpha_scene, t.source, f.bary.y, f.bary.z)) return;
-        vb.depth[idx] = f.depth;
-        vb.triangle[idx] = int32_t(t.source);
-        vb.bary[idx] = f.bary;
-        vb.front_facing[idx] = t.front_facing ? 1 : 0;
-        vb.facing_tie[idx] = t.facing_tie ? 1 : 0;
+        store_fragment(vb, idx, t, f);
       });
     }
   });

@@ -165,6 +165,21 @@ struct VisibilityBuffer {
   size_t index(int x, int row) const { return size_t(row) * size_t(width) + size_t(x); }
 };
 
+/// A width x height buffer with every pixel empty (depth 1, no triangle).
+VisibilityBuffer empty_visibility(int width, int height);
+
+/// Writes fragment `f` of triangle `t` into pixel `i` of `vb` (depth, source, barycentrics, facing).
+void store_fragment(VisibilityBuffer& vb, size_t i, const RasterTriangle& t, const RasterFragment& f);
+
+/// Edge values along row y from pixel x0, e(x0 + k) = e0[i] + k * step[i], carried in doubles: every
+/// term is an integer below 2^53 (|e| < 2^49 for a 16384^2 viewport with the 4-viewport guard band,
+/// 8 sub-pixel bits), so they are exactly the int64 values rasterize() converts, and a span loop
+/// over k has no int64 -> double conversion per pixel (it vectorizes).
+struct SpanEdges {
+  double e0[3], step[3];
+  SpanEdges(const EdgeSetup& e, int y, int x0);
+};
+
 /// Rasterizes every triangle of `positions`/`triangles` (world space) through `view_proj`.
 /// Parallel over bands of rows; each band walks the triangles in index order, so the result does
 /// not depend on the thread count. With `alpha_scene` (whose triangles these are), a fragment that

@@ -20,17 +20,19 @@ void copy_entry(const VisibilityBuffer& from, size_t i, VisibilityBuffer& to) {
   to.facing_tie[i] = from.facing_tie[i];
 }
 
-VisibilityBuffer empty_buffer(int w, int h) {
-  VisibilityBuffer vb;
-  vb.width = w;
-  vb.height = h;
-  const size_t n = size_t(w) * size_t(h);
-  vb.depth.assign(n, 1.0f);
-  vb.triangle.assign(n, -1);
-  vb.bary.assign(n, vec3(0.0f));
-  vb.front_facing.assign(n, 0);
-  vb.facing_tie.assign(n, 0);
-  return vb;
+// Calls visit(ti, t, f) for every fragment at the pixel centres of every triangle, bands in
+// parallel (each owns its rows), triangles in index order within a band: as render_visibility, so
+// the result does not depend on the thread count.
+template <class Visit>
+void for_each_centre_fragment(const BinnedTriangles& binned, int w, int h, Visit&& visit) {
+  const std::vector<vec2>& centre = standard_sample_positions(1);
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) { visit(ti, t, f); });
+    }
+  });
 }
 
 // The front-most fragment at each pixel centre that a correct GL may keep: an alpha-tested
@@ -39,28 +41,16 @@ VisibilityBuffer empty_buffer(int w, int h) {
 // tie behind them. Rasterized as render_visibility (bands, triangles in index order).
 VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
-  VisibilityBuffer vb = empty_buffer(w, h);
+  VisibilityBuffer vb = empty_visibility(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
-  const std::vector<vec2>& centre = standard_sample_positions(1);
-  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
-    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
-    for (uint32_t ti : binned.bands[size_t(band)]) {
-      const RasterTriangle& t = binned.triangles[ti];
-      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
-      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
-        const int row = h - 1 - f.y;
-        const size_t i = vb.index(f.x, row);
-        if (!(f.depth < vb.depth[i])) return;  // GL_LESS
-        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z) &&
-            !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary))
-          return;
-        vb.depth[i] = f.depth;
-        vb.triangle[i] = int32_t(t.source);
-        vb.bary[i] = f.bary;
-        vb.front_facing[i] = t.front_facing ? 1 : 0;
-        vb.facing_tie[i] = t.facing_tie ? 1 : 0;
-      });
-    }
+  for_each_centre_fragment(binned, w, h, [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
+    const int row = h - 1 - f.y;
+    const size_t i = vb.index(f.x, row);
+    if (!(f.depth < vb.depth[i])) return;  // GL_LESS
+    if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z) &&
+        !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary))
+      return;
+    store_fragment(vb, i, t, f);
   });
   return vb;
 }
@@ -86,30 +76,18 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
     for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
   // The front fragment's margin, found again by its source triangle at the pixel.
   std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
-  VisibilityBuffer alt = empty_buffer(w, h);
-  const std::vector<vec2>& centre = standard_sample_positions(1);
-  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
-    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
-    for (uint32_t ti : binned.bands[size_t(band)]) {
-      const RasterTriangle& t = binned.triangles[ti];
-      const bool alpha_tested = triangle_alpha_tested(scene, t.source);
-      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) {
-        const size_t i = front.index(f.x, h - 1 - f.y);
-        if (alpha_tested && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
-        if (int32_t(t.source) == front.triangle[i]) {
-          front_margin[i] = std::max(front_margin[i], margins[ti]);
-          return;
-        }
-        const double key = double(f.depth) - margins[ti];
-        if (!(key < best[i])) return;
-        best[i] = key;
-        alt.depth[i] = f.depth;
-        alt.triangle[i] = int32_t(t.source);
-        alt.bary[i] = f.bary;
-        alt.front_facing[i] = t.front_facing ? 1 : 0;
-        alt.facing_tie[i] = t.facing_tie ? 1 : 0;
-      });
+  VisibilityBuffer alt = empty_visibility(w, h);
+  for_each_centre_fragment(binned, w, h, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    const size_t i = front.index(f.x, h - 1 - f.y);
+    if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
+    if (int32_t(t.source) == front.triangle[i]) {
+      front_margin[i] = std::max(front_margin[i], margins[ti]);
+      return;
     }
+    const double key = double(f.depth) - margins[ti];
+    if (!(key < best[i])) return;
+    best[i] = key;
+    store_fragment(alt, i, t, f);
   });
   if (!depth_ties) return alt;
   // No tie: the front surface itself (callers skip it; -1 would mean an empty pixel).

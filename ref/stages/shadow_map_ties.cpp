@@ -94,13 +94,9 @@ void add_fragment(const RowSpans& spans, int x, size_t r, float z, double m, Ban
 // bits as the map's, and a loop that vectorizes.
 void add_interior(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, size_t row, double m,
                   BandDepths& b) {
-  const int64_t px = int64_t(x0) * kSubpixelScale + kSubpixelScale / 2;
-  const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;
-  double e0[3], step[3];
-  for (int i = 0; i < 3; ++i) {
-    e0[i] = double(e.a[i] * px + e.b[i] * py + e.c[i]);
-    step[i] = double(e.a[i] * kSubpixelScale);
-  }
+  const SpanEdges span(e, y, x0);
+  const double* e0 = span.e0;
+  const double* step = span.step;
   const double area = double(t.area2);
   float* common = b.common.data() + row + size_t(x0);
   float* lo = b.lo.data() + row + size_t(x0);
