@@ -254,9 +254,10 @@ std::string format_bench(const nlohmann::json& j) {
     if (!gl) {
       out += line("%-24s %12.2f\n", g["name"].get<std::string>().c_str(), r);
     } else {
-      const double ratio = g["ref_over_gl"].is_null() ? 0.0 : g["ref_over_gl"].get<double>();
-      out += line("%-24s %12.2f %12.2f %10.2f\n", g["name"].get<std::string>().c_str(), r, g["gl_ms"].get<double>(),
-                  ratio);
+      // No GL time (the reference's own extras, a stage GL does not run): no ratio.
+      const std::string ratio = g["ref_over_gl"].is_null() ? "-" : line("%.2f", g["ref_over_gl"].get<double>());
+      out += line("%-24s %12.2f %12.2f %10s\n", g["name"].get<std::string>().c_str(), r, g["gl_ms"].get<double>(),
+                  ratio.c_str());
     }
   }
   out += "\n" + stage_table("CPU reference stages (wall clock, median):", j["ref"]);

@@ -62,7 +62,10 @@ int main(int argc, char** argv) {
     std::printf("%-24s %12s %12s %10s\n", "stage group", "GL ms", "CPU ref ms", "CPU/GL");
     for (const StageGroup& g : stage_groups()) {
       const double a = sum_stages(gl_t, g.gl), b = sum_stages(ref_t, g.ref);
-      std::printf("%-24s %12.2f %12.2f %10.2f\n", g.name.c_str(), a, b, a > 0.0 ? b / a : 0.0);
+      if (a > 0.0)
+        std::printf("%-24s %12.2f %12.2f %10.2f\n", g.name.c_str(), a, b, b / a);
+      else
+        std::printf("%-24s %12.2f %12.2f %10s\n", g.name.c_str(), a, b, "-");  // no GL counterpart
     }
     std::printf("\nGL stages (GPU timer queries):\n");
     for (const auto& [k, v] : gl_t) std::printf("  %-26s %10.2f ms\n", k.c_str(), v);

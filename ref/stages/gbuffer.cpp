@@ -1,6 +1,7 @@
 #include "stages/gbuffer.h"
 
 #include "core/parallel.h"
+#include "io/run_dir.h"  // Stopwatch
 #include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/alpha_ties.h"
@@ -89,7 +90,7 @@ GBufferSample gbuffer_sample(const Scene& scene, const mat4& view_proj, int widt
   return evaluate_pixel(scene, view_proj, width, height, x, row, triangle, bary, depth, front_facing, m, lods);
 }
 
-GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
+GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings, double* ties_ms) {
   const int w = settings.width, h = settings.height;
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
   // Alpha-masked fragments are discarded (gbuffer.frag does the same): what lies behind shows.
@@ -111,8 +112,10 @@ GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings) {
       for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];  // kSlackDirect: later
     }
   });
+  const Stopwatch ties;
   add_tie_ranges(scene, view_proj, vb, g);
   if (scene_has_alpha_test(scene)) mark_alpha_ties(scene, view_proj, wb, g);
+  if (ties_ms) *ties_ms = ties.ms();
   return g;
 }
 

@@ -29,6 +29,8 @@ SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
 /// settings.width x settings.height view through scene.camera (projection aspect = width/height).
 /// Normals face the camera: back-facing triangles (clockwise in window space, GL's
 /// gl_FrontFacing == false) get their shading normal negated.
-GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings);
+/// `ties_ms`, when given, receives the time of the raster alternatives (gbuffer.tie_range, the
+/// oracle's own work, which `vct bench` counts apart from the G-buffer itself).
+GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings, double* ties_ms = nullptr);
 
 }  // namespace vct

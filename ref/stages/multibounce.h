@@ -49,7 +49,7 @@ struct MultibounceResult {
   std::vector<Volume> earlier_frames;  // base level of each frame before the last (if kept)
   Volume bounce_input;  // the base level the last frame's bounce light came from (frames > 1)
   int frames = 0;
-  std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject"
+  std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject", "voxel_slack"
 };
 
 /// Runs frame 1 and then up to settings.bounces - 1 bounce frames; stops early when

@@ -16,6 +16,14 @@ namespace vct {
 /// `march_end`: the indirect cones' MarchParams::march_end (the march-end tie's alternatives).
 void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end = 0);
 
+/// The reference's own work for the judge, which a VCT frame does not do (raster alternatives,
+/// slacks, coverage ties, the holes map, the running mean's interval), by timing name: `vct bench`
+/// counts them apart from the stages (compare/stage_timings.cpp), and the timing "total_vct" is
+/// "total" without them.
+inline constexpr const char* kOracleExtraStages[] = {"gbuffer_ties", "shadow_tie_ranges", "direct_slack",
+                                                     "voxel_slack",  "coverage_ties",     "holes",
+                                                     "running_mean_interval"};
+
 /// Runs every stage of the CPU reference. Threads come from set_thread_count(); the result is
 /// byte-identical for any thread count.
 FrameResult render_ref_frame(const Scene& scene, const Settings& settings);

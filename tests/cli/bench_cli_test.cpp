@@ -33,10 +33,20 @@ TEST(BenchCli, WritesBenchJsonWithRatios) {
   EXPECT_GT(total, 0.0);
   EXPECT_GT(j["ref"]["indirect_cones"].get<double>(), 0.0);
   EXPECT_LE(j["ref"]["indirect_cones"].get<double>(), total);
-  ASSERT_EQ(j["groups"].size(), 7u);
-  const auto& last = j["groups"][6];
+  ASSERT_EQ(j["groups"].size(), 9u);
+  const auto& last = j["groups"][8];
   EXPECT_EQ(last["name"], "total");
   EXPECT_DOUBLE_EQ(last["ref_ms"].get<double>(), total);
+  // The oracle's own extras (no GL counterpart, so no ratio) and the frame without them.
+  const auto& extras = j["groups"][6];
+  const auto& vct_work = j["groups"][7];
+  EXPECT_EQ(extras["name"], "oracle extras (ref only)");
+  EXPECT_GT(extras["ref_ms"].get<double>(), 0.0);
+  EXPECT_EQ(vct_work["name"], "total, VCT work");
+  EXPECT_NEAR(vct_work["ref_ms"].get<double>() + extras["ref_ms"].get<double>(), total, 1e-6 * total);
+  if (!j["gl"].is_null()) {
+    EXPECT_TRUE(extras["ref_over_gl"].is_null());
+  }
   if (j["gl"].is_null()) {
     EXPECT_TRUE(j.contains("gl_note"));
   } else {
