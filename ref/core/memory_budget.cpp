@@ -25,8 +25,11 @@ constexpr uint64_t kFragmentsPerSlice = 8;
 
 // Per fragment: the sorted VoxelFragment list (48 B), the per-triangle lists it was gathered from
 // (48 B: freed, but as small blocks in the worker threads' heaps, which are not returned to the
-// system), the injected radiance (vec3, 12 B) and the reduction's voxel start index (8 B).
-constexpr uint64_t kBytesPerFragment = 48 + 48 + 12 + 8;
+// system) and its may_drop flag (1 B, stages/coverage_ties.h); then the larger of two phases: the
+// coverage ties, which hold one re-voxelization's sorted list at a time (48 B; its per-triangle
+// lists reuse the heap blocks above), and the injection's radiance (vec3, 12 B) and the
+// reduction's voxel start index (8 B).
+constexpr uint64_t kBytesPerFragment = 48 + 48 + 1 + std::max<uint64_t>(48, 12 + 8);
 
 // One frame's VoxelMips: iso[0] is a copy of the base level (RGBA float, 16 B/voxel) and every
 // pyramid's levels 1..log2 N hold (N^3 - 1) / 7 voxels; anisotropic adds six directional pyramids.

@@ -24,9 +24,9 @@ TEST(MemoryBudget, EstimateMatchesHandCount) {
   const uint64_t grid = 20 * n3;      // RGBA float radiance + float fragment count
   // iso[0] copies the base; levels 1..6 hold 32^3 + 16^3 + ... + 1 = 37449 voxels.
   const uint64_t mips = 16 * n3 + 16 * 37449;
-  const uint64_t fragments = 8 * 64 * 64 * 116;  // 8 N^2 fragments, 116 B each
+  const uint64_t fragments = 8 * 64 * 64 * 145;  // 8 N^2 fragments, 145 B each
   EXPECT_EQ(e.voxels, occupancy + grid + mips + fragments);
-  EXPECT_EQ(e.voxels, 15934608u);
+  EXPECT_EQ(e.voxels, 16884880u);
   // Shadow map 50^2 floats and its range (two floats per texel); per pixel: G-buffer 84 + texture
   // slack 24 + raster alternatives 168 + frame images 96 + cone images 2 x 80.
   EXPECT_EQ(e.images, 50ull * 50 * 12 + 100ull * 100 * 532);
@@ -88,10 +88,10 @@ TEST(MemoryBudget, MultibounceAnisotropicHandCount) {
   const uint64_t grid = 20 * n3;       // RGBA float + fragment count
   // iso[0] copy; the iso pyramid and six directional ones, levels 1..4: 512 + 64 + 8 + 1 = 585.
   const uint64_t mips = 16 * n3 + 7 * 16 * 585;
-  const uint64_t fragments = 8 * 16 * 16 * 116;
+  const uint64_t fragments = 8 * 16 * 16 * 145;
   const uint64_t kept = 2 * 16 * n3;  // base levels of frames 1 and 2 (RGBA float)
   EXPECT_EQ(estimate_memory(s).voxels, occupancy + grid + 2 * mips + fragments + kept);
-  EXPECT_EQ(estimate_memory(s).voxels, 761824u);
+  EXPECT_EQ(estimate_memory(s).voxels, 821216u);
   // Isotropic mips (74896 B) are smaller than the grid: the grid is what is there twice.
   s.vct.anisotropic = false;
   s.vct.bounces = 2;
