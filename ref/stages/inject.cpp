@@ -1,13 +1,12 @@
 #include "stages/inject.h"
 
-#include "io/run_dir.h"  // Stopwatch
-
 #include <algorithm>
 
 #include "core/parallel.h"
+#include "io/run_dir.h"  // Stopwatch
+#include "stages/coverage_ties.h"
 #include "stages/direct.h"
 #include "stages/fragment_exactness.h"
-#include "stages/coverage_ties.h"
 #include "stages/fragment_slack.h"
 #include "stages/reduction.h"
 #include "stages/voxel_fill.h"
