@@ -660,7 +660,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
             " transparent with light)";
   v.extra["transparent_lit"] = transparent_lit;
   if (tfrags) v.note += "; " + std::to_string(count_ties) + " with a different fragment count (coverage ties" +
-                        std::string(too_many ? ": more than 2%, not ties)" : ", tolerated)");
+                        std::string(too_many ? ": more than 2%, not ties)" : ", judged within the slack)");
   v.extra["fragment_count_ties"] = count_ties;
   v.extra["exact_voxels"] = exact_checked;
   v.extra["exact_voxels_differing"] = exact_differ;
