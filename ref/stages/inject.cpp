@@ -100,17 +100,19 @@ VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& val
 }
 
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
-                            const VctSettings& settings, const BounceLight* bounce, double* slack_ms) {
+                            const VctSettings& settings, const BounceLight* bounce, OracleVolumes oracle) {
   const std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
   VoxelGrid g = reduce_fragments(vox, values, settings);
   // Solid interior and thickening (voxel_fill.h) add opacity before particles and mips.
   fill_voxels(scene, vox, settings, g.radiance);
-  const Stopwatch oracle;
-  const std::vector<float> slack = fragment_shading_slack(scene, vox, values, maps, settings, bounce);
-  g.shading_slack = voxel_shading_slack(vox, slack);
-  g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
-  widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);
-  if (slack_ms) *slack_ms = oracle.ms();
+  const Stopwatch sw;
+  if (oracle.judged) {
+    const std::vector<float> slack = fragment_shading_slack(scene, vox, values, maps, settings, bounce);
+    g.shading_slack = voxel_shading_slack(vox, slack);
+    g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
+    widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);
+  }
+  if (oracle.ms) *oracle.ms = sw.ms();
   return g;
 }
 

@@ -33,11 +33,16 @@ std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox,
 /// (and where stages/voxel_fill.h adds the solid interior or thickening),
 /// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
 /// shading_slack (stages/fragment_slack.h).
-/// `slack_ms`, when given, receives the time of the slack, exactness and coverage-tie volumes (the
-/// oracle's own work, which `vct bench` counts apart from the injection itself).
+/// The judge's volumes beside the voxels: shading slack, exactness, coverage ties (the oracle's own
+/// work). `judged` false skips them (a multibounce frame that is not the last: nothing judges
+/// it); `ms`, when given, receives their time (`vct bench` counts it apart from the injection).
+struct OracleVolumes {
+  bool judged = true;
+  double* ms = nullptr;
+};
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                             const VctSettings& settings, const BounceLight* bounce = nullptr,
-                            double* slack_ms = nullptr);
+                            OracleVolumes oracle = {});
 
 /// The reduction alone, from per-fragment values (same order as vox.fragments).
 VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& values, const VctSettings& settings);

@@ -66,8 +66,11 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
                                           bool keep_frames) {
   MultibounceResult r;
   Stopwatch sw;
+  // Only the last frame's voxels are judged; which frame is last is known in advance unless the
+  // loop may stop early on convergence.
+  const auto judged = [&](int frame) { return frame == s.bounces - 1 || s.convergence_tolerance > 0.0f; };
   double slack_ms = 0.0;
-  r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr, &slack_ms);
+  r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr, {judged(0), &slack_ms});
   r.timings_ms["inject"] = sw.ms() - slack_ms;
   r.timings_ms["voxel_slack"] = slack_ms;
   finish_frame(scene, s, r);
@@ -77,7 +80,7 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
     const VoxelMips previous = std::move(r.mips);
     const BounceLight bounce = make_bounce_light(scene, previous, s);
     sw = Stopwatch();
-    r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce, &slack_ms);
+    r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce, {judged(frame), &slack_ms});
     r.timings_ms["bounce_inject"] += sw.ms() - slack_ms;
     r.timings_ms["voxel_slack"] += slack_ms;
     finish_frame(scene, s, r);
