@@ -12,13 +12,11 @@ namespace vct {
 
 namespace {
 
-// Fragments are sorted by (voxel linear index, triangle): the key orders them totally.
-int64_t key_voxel(const Voxelization& v, const VoxelFragment& f) {
-  return (int64_t(f.voxel.z) * v.n + f.voxel.y) * v.n + f.voxel.x;
-}
+// Fragments are sorted by (voxel linear index, triangle) (stages/voxelize.h): the key orders them
+// totally.
+int64_t key_voxel(const Voxelization& v, const VoxelFragment& f) { return voxel_linear_index(v.n, f.voxel); }
 bool key_less(const Voxelization& v, const VoxelFragment& a, const VoxelFragment& b) {
-  const int64_t la = key_voxel(v, a), lb = key_voxel(v, b);
-  return la != lb ? la < lb : a.triangle < b.triangle;
+  return fragment_before(v.n, a, b);
 }
 bool same_key(const VoxelFragment& a, const VoxelFragment& b) {
   return a.voxel == b.voxel && a.triangle == b.triangle;
@@ -87,44 +85,19 @@ std::vector<double> negated(std::vector<double> v) {
   return v;
 }
 
-// How far GL's voxel-space depth along the dominant axis (voxelize.frag floors it to pick the
-// voxel) may lie from the reference's: the point GL interpolates may be voxel_snap_reach away on
-// each window axis, which moves the depth by the plane's in-window gradient times that reach;
-// GL's barycentrics are floats (a few roundings of values in [-1, 2]: 2^-20 each, with room),
-// times the vertices' depth differences. Infinite for a sliver (no bound on the reach).
-double depth_tie_margin(const Scene& scene, int n, const VoxelFragment& f, int& axis, double& depth) {
-  const uvec3 t = scene.triangles[f.triangle];
-  const vec3 p[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
-  axis = dominant_axis(p[0], p[1], p[2]);
-  const int pu = axis == 0 ? 1 : 0, pv = axis == 2 ? 1 : 2;  // as voxelize_gpu.cpp's window axes
-  glm::dvec3 v[3];
-  for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, p[i]);
-  const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
-  depth = v[0][axis] + double(f.b1) * e1[axis] + double(f.b2) * e2[axis];
-  const double det = e1[pu] * e2[pv] - e2[pu] * e1[pv];
-  const double reach = voxel_snap_reach(scene, n, f);
-  if (std::abs(det) < 1e-300 || !std::isfinite(reach)) return std::numeric_limits<double>::infinity();
-  // d(depth)/d(u, v): the depth edges times the inverse of the window edges' matrix.
-  const double gu = (e1[axis] * e2[pv] - e2[axis] * e1[pv]) / det;
-  const double gv = (e2[axis] * e1[pu] - e1[axis] * e2[pu]) / det;
-  return reach * (std::abs(gu) + std::abs(gv)) + 0x1p-20 * (std::abs(e1[axis]) + std::abs(e2[axis]));
-}
-
 // A fragment whose depth lies within its margin of a voxel boundary may be written to the voxel
 // on the other side: it may be dropped here and added there.
 void add_depth_ties(const Scene& scene, Voxelization& vox, std::vector<VoxelFragment>& added) {
   for (size_t i = 0; i < vox.fragments.size(); ++i) {
     const VoxelFragment& f = vox.fragments[i];
-    int axis = 0;
-    double depth = 0.0;
-    const double margin = depth_tie_margin(scene, vox.n, f, axis, depth);
-    const int index = f.voxel[axis];
+    const VoxelDepthTie tie = voxel_depth_tie(scene, vox.n, f);
+    const int index = f.voxel[tie.axis];
     for (const int side : {-1, 1}) {
-      const double to_boundary = side < 0 ? depth - double(index) : double(index + 1) - depth;
-      if (!(to_boundary <= margin) || index + side < 0 || index + side >= vox.n) continue;
+      const double to_boundary = side < 0 ? tie.depth - double(index) : double(index + 1) - tie.depth;
+      if (!(to_boundary <= tie.margin) || index + side < 0 || index + side >= vox.n) continue;
       vox.may_drop[i] = 1;
       VoxelFragment moved = f;
-      moved.voxel[axis] += side;
+      moved.voxel[tie.axis] += side;
       added.push_back(moved);
     }
   }

@@ -33,6 +33,8 @@ struct SnapWindow {
   double a, b, c, d, det;    // the projected edges (P1 - P0, P2 - P0) along the window's u and v
   double reach = kVoxelSnapShift;  // |e| per window axis, voxels
   bool bounded = true;             // false where s G >= 1/2 (a sliver): no bound on the shift
+  int axis = 0;                    // the dominant axis (the window's depth)
+  double depth0 = 0.0, depth_e1 = 0.0, depth_e2 = 0.0;  // voxel-space depth of vertex 0 and the edges'
 };
 
 bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& w) {
@@ -42,6 +44,8 @@ bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& 
   const int pu = axis == 0 ? 1 : 0, pv = axis == 2 ? 1 : 2;  // as voxelize_gpu.cpp's window axes
   glm::dvec3 v[3];
   for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, p[i]);
+  w.axis = axis;
+  w.depth0 = v[0][axis], w.depth_e1 = v[1][axis] - v[0][axis], w.depth_e2 = v[2][axis] - v[0][axis];
   w.a = v[1][pu] - v[0][pu], w.b = v[2][pu] - v[0][pu];
   w.c = v[1][pv] - v[0][pv], w.d = v[2][pv] - v[0][pv];
   w.det = w.a * w.d - w.b * w.c;
@@ -186,6 +190,23 @@ double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f) {
   SnapWindow w;
   if (!snap_window(scene, n, f, w) || !w.bounded) return std::numeric_limits<double>::infinity();
   return w.reach;
+}
+
+VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f) {
+  SnapWindow w;
+  const bool window = snap_window(scene, n, f, w);
+  VoxelDepthTie t;
+  t.axis = w.axis;
+  t.depth = w.depth0 + double(f.b1) * w.depth_e1 + double(f.b2) * w.depth_e2;
+  if (!window || !w.bounded) {
+    t.margin = std::numeric_limits<double>::infinity();
+    return t;
+  }
+  // d(depth)/d(u, v): the depth edges times the inverse of the window edges' matrix.
+  const double gu = (w.depth_e1 * w.d - w.depth_e2 * w.c) / w.det;
+  const double gv = (w.depth_e2 * w.a - w.depth_e1 * w.b) / w.det;
+  t.margin = w.reach * (std::abs(gu) + std::abs(gv)) + 0x1p-20 * (std::abs(w.depth_e1) + std::abs(w.depth_e2));
+  return t;
 }
 
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,

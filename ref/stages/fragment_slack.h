@@ -33,6 +33,18 @@ constexpr double kVoxelSnapShift = 1.0 / 256.0;
 /// +infinity for a sliver (kVoxelSnapShift G >= 1/2) or a triangle seen edge-on in its window.
 double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f);
 
+/// Where GL may write fragment f along its dominant axis (stages/coverage_ties.h): the axis, the
+/// reference's voxel-space depth there (relative to vertex 0, as voxelize.frag interpolates it)
+/// and how far GL's may lie from it. The point GL interpolates may be voxel_snap_reach away on
+/// each window axis, which moves the depth by the plane's in-window gradient times that reach;
+/// GL's barycentrics are floats (a few roundings of values in [-1, 2]: 2^-20 each, with room),
+/// times the vertices' depth differences. +infinity for a sliver (no bound on the reach).
+struct VoxelDepthTie {
+  int axis = 0;
+  double depth = 0.0, margin = 0.0;
+};
+VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f);
+
 /// Per fragment, the largest |change| (over RGB) of its light against `values`
 /// (fragment_radiance): the largest over the four corners of the snap's reach at the reference's
 /// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel

@@ -107,12 +107,9 @@ Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>&
     v.fragments.insert(v.fragments.end(), f.begin(), f.end());
     std::vector<VoxelFragment>().swap(f);
   }
-  const auto linear = [n](const ivec3& c) { return (int64_t(c.z) * n + c.y) * n + c.x; };
   // Keys are unique (one fragment per triangle and voxel), so the order is total.
-  std::sort(v.fragments.begin(), v.fragments.end(), [&](const VoxelFragment& a, const VoxelFragment& b) {
-    const int64_t la = linear(a.voxel), lb = linear(b.voxel);
-    return la != lb ? la < lb : a.triangle < b.triangle;
-  });
+  std::sort(v.fragments.begin(), v.fragments.end(),
+            [n](const VoxelFragment& a, const VoxelFragment& b) { return fragment_before(n, a, b); });
   v.occupancy = Volume(n, n, n, 1);
   v.occupancy.channel_names = {"occupancy"};
   for (const VoxelFragment& f : v.fragments) {

@@ -86,6 +86,14 @@ bool triangle_meets_box(const glm::dvec3 tri[3], const glm::dvec3& lo, const glm
 /// Barycentrics (b1, b2) of the point of triangle `tri` closest to `p` (Ericson, RTCD 5.1.5).
 glm::dvec2 closest_point_barycentrics(const glm::dvec3 tri[3], const glm::dvec3& p);
 
+/// x + n (y + n z): the order of Voxelization::fragments, voxel by voxel.
+inline int64_t voxel_linear_index(int n, const ivec3& v) { return (int64_t(v.z) * n + v.y) * n + v.x; }
+/// The total order of Voxelization::fragments: by voxel, then by triangle.
+inline bool fragment_before(int n, const VoxelFragment& a, const VoxelFragment& b) {
+  const int64_t la = voxel_linear_index(n, a.voxel), lb = voxel_linear_index(n, b.voxel);
+  return la != lb ? la < lb : a.triangle < b.triangle;
+}
+
 /// Sorts fragments, fills occupancy and the covered count.
 Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>& per_triangle);
 
