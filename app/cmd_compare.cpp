@@ -7,13 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "commands.h"
 #include "compare_scene.h"
 #include "options.h"
-#include "facts_notes.h"
-#include "compare/conservative_occupancy.h"
-#include "compare/isolated_stages.h"
+#include "compare/judge.h"
 #include "compare/metrics.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
@@ -93,27 +92,21 @@ bool has_cone_stage(const cmp::Report& rep, bool soft_shadows) {
 // bad input writes neither masks nor compare.json.
 int compare_sets(const cmp::StageSet& ref, const cmp::StageSet& test, const CompareArgs& a) {
   const std::string title = test.backend + " vs " + ref.backend;
-  const cmp::CompareOptions opt = compare_options(a);
-  if (a.scene.empty()) {
-    const std::unique_ptr<RunDir> run = open_out_run(a);
-    cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
-    cmp::judge_conservative_mode(rep, ref, test, nullptr, a.worst);
-    note_driver_facts(rep, test.facts, ref.facts);
+  std::optional<IsolatedInputs> in;
+  if (!a.scene.empty()) in = load_isolated_inputs(test, a.scene, a.config, a.scene_load, &ref);
+  const std::unique_ptr<RunDir> run = open_out_run(a);
+  const cmp::JudgeInputs inputs = in ? cmp::JudgeInputs{&in->scene, &in->frame, &in->settings} : cmp::JudgeInputs{};
+  const cmp::Report rep = cmp::judge(ref, test, inputs, compare_options(a));
+  if (!in) {
     const int code = finish(rep, a, run.get(), title, {{"cone_stages", "end_to_end"}});
     if (has_cone_stage(rep, cmp::soft_shadows_of(ref) || cmp::soft_shadows_of(test)))
       std::printf("cone stages were judged end to end (an upstream voxel tie changes every cone through it); "
                   "--scene SCENE judges them on B's own inputs (docs/compare.md)\n");
     return code;
   }
-  const IsolatedInputs in = load_isolated_inputs(test, a.scene, a.config, a.scene_load, &ref);
-  const std::unique_ptr<RunDir> run = open_out_run(a);
-  cmp::Report rep = cmp::compare_stage_sets(ref, test, opt);
-  cmp::judge_conservative_mode(rep, ref, test, &in.scene, a.worst);
-  cmp::judge_cones_on_test_inputs(rep, in.scene, in.frame, in.settings, test, {a.worst, "", ""});
-  note_driver_facts(rep, test.facts, ref.facts);
-  const int code = finish(rep, a, run.get(), title, {{"cone_stages", "isolated"}, {"scene", in.scene.source}});
+  const int code = finish(rep, a, run.get(), title, {{"cone_stages", "isolated"}, {"scene", in->scene.source}});
   std::printf("cone stages were judged on B's own G-buffer, direct light and mips, re-traced in %s\n",
-              in.scene.source.c_str());
+              in->scene.source.c_str());
   return code;
 }
 

@@ -7,11 +7,9 @@
 #include <filesystem>
 
 #include "commands.h"
-#include "facts_notes.h"
 #include "attribution_outputs.h"
-#include "compare/conservative_occupancy.h"
+#include "compare/judge.h"
 #include "compare/bias.h"
-#include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
@@ -128,11 +126,7 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
         if (ref.ok()) {
           const cmp::StageSet gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct);
           const cmp::StageSet ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct);
-          cmp::Report rep = cmp::compare_stage_sets(ref_set, gl_set);
-          cmp::judge_conservative_mode(rep, ref_set, gl_set, &scene, 10);  // conservative_raster only
-          // Cone stages on GL's own voxels (compare/isolated_stages.h), as in run().
-          cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, gl_set);
-          note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
+          const cmp::Report rep = cmp::judge(ref_set, gl_set, {&scene, &*gl.frame, &s.vct});
           row["gl_verdict"] = cmp::to_string(rep.overall());
           row["gl_first_failing"] = rep.first_failing();
         }

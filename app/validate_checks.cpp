@@ -2,10 +2,8 @@
 
 #include <functional>
 
-#include "compare/conservative_occupancy.h"
-#include "compare/isolated_stages.h"
+#include "compare/judge.h"
 #include "core/parallel_tasks.h"
-#include "facts_notes.h"
 #include "io/image_io.h"
 
 namespace vct::app {
@@ -42,15 +40,10 @@ CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, cons
   // The longest chain first (one thread: its inner loops run serially inside a task).
   if (ref.ok() && gl.ok())
     tasks.push_back({"compare gl vs ref (stages, difference images; cones on gl's voxels)", [&] {
-                       cmp::Report rep =
-                           cmp::compare_stage_sets(r.ref_set, r.gl_set, {10, run.file("compare"), "compare/"});
-                       // A conservative GL mode (conservative_raster) is judged as a superset of the exact set.
-                       cmp::judge_conservative_mode(rep, r.ref_set, r.gl_set, &scene, 10);
-                       // Cone stages are judged on GL's own voxels (compare/isolated_stages.h): a
-                       // legitimate voxel tie upstream does not fail a correct marcher downstream.
-                       cmp::judge_cones_on_test_inputs(rep, scene, *gl.frame, s.vct, r.gl_set);
-                       note_driver_facts(rep, gl.frame->facts, ref.frame->facts);
-                       r.report = std::move(rep);
+                       // The one judge (compare/judge.h): cone and shading stages on GL's own inputs,
+                       // so a legitimate voxel tie upstream does not fail a correct marcher downstream.
+                       r.report = cmp::judge(r.ref_set, r.gl_set, {&scene, &*gl.frame, &s.vct},
+                                             {10, run.file("compare"), "compare/"});
                      }});
   if (ref.ok()) tasks.push_back({"write stage set ref", [&] { cmp::write_named_stage_set(r.ref_set); }});
   if (gl.ok()) tasks.push_back({"write stage set gl", [&] { cmp::write_named_stage_set(r.gl_set); }});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compare/tie_range.h"
 #include "compare/tolerance.h"
 #include "stages/coverage_ties.h"
 #include "stages/cube_map.h"
@@ -79,6 +80,10 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
   // emission. Replaces any raster range the test carried (its G-buffer stages are not judged here).
   r.gbuffer.tie_range = shading_tie_range(scene, r.gbuffer, maps, s, s.soft_shadows ? Image() : r.images.direct,
                                           r.images.emission);
+  // With soft shadows image.direct is cone-traced: no shadow map decides its visibility, so there
+  // is no PCF range to admit by (a range without its maps would admit anything from 0 to the
+  // unshadowed light); it is judged like the other cone stages (docs/compare.md, "Admission rules").
+  if (s.soft_shadows) r.gbuffer.tie_range = without_tie_range_group(r.gbuffer.tie_range, stage_names::kImageDirect);
   return r;
 }
 
@@ -119,19 +124,29 @@ const StageVerdict* find_stage(const Report& r, const std::string& stage) {
 
 // `v` (end to end) replaced by `iso`, the end-to-end verdict kept in the note and extra.
 void replace_with_isolated(StageVerdict& v, const StageVerdict& iso, const char* inputs) {
-  nlohmann::json e2e = {{"verdict", to_string(v.verdict)}, {"note", v.note}, {"rms", v.rms}, {"max_abs", v.max_abs}};
+  nlohmann::json e2e = {{"verdict", to_string(v.verdict)}, {"note", v.note}, {"rms", v.rms}, {"max_abs", v.max_abs},
+                        {"admitted_by", v.admitted.json()}};
   const std::string e2e_note = v.note;
   const Verdict e2e_verdict = v.verdict;
+  const size_t e2e_beyond = v.out_of_bound;
   std::string e2e_mask = v.mask;
   v = iso;
-  v.extra["end_to_end"] = e2e;
   // The isolated re-judgement writes no mask; a warn that only the end-to-end difference explains
   // is shown by the end-to-end mask (the report's first screen shows the warned stage's mask).
   if (v.mask.empty()) v.mask = std::move(e2e_mask);
   v.note = std::string("on ") + inputs + ": " + iso.note + " | end to end: " + to_string(e2e_verdict) + " (" +
            e2e_note + ")";
-  // Upstream ties explain an end-to-end difference only as far as the isolated stage passes.
-  if (v.verdict == Verdict::Pass && e2e_verdict != Verdict::Pass) v.verdict = Verdict::Warn;
+  // Upstream ties explain an end-to-end difference only as far as the isolated stage passes. Then
+  // every element beyond the end-to-end bound is within the isolated one: the re-judgement on the
+  // test's own inputs is what admitted it (compare/admission.h, own-inputs).
+  if (v.verdict == Verdict::Pass && e2e_verdict != Verdict::Pass) {
+    v.verdict = Verdict::Warn;
+    const Rule within = v.admitted[Rule::WithinBound] > 0 ? Rule::WithinBound : Rule::RadianceWithinBound;
+    const size_t moved = std::min(e2e_beyond, v.admitted[within]);
+    v.admitted.count[size_t(within)] -= moved;
+    v.admitted.add(Rule::OwnInputs, moved);
+  }
+  v.extra["end_to_end"] = e2e;
 }
 }  // namespace
 
@@ -253,11 +268,11 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
   const DisplayTransform* display = &test_set.conventions.display;
   const DirectInput direct = s.soft_shadows ? DirectInput::Linear : direct_input_of(display);
   const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s, display);
-  CompareOptions iso_opt = opt;
-  iso_opt.direct_decoded_from_display = direct == DirectInput::Decoded;
+  JudgeContext iso_ctx;
+  iso_ctx.direct_decoded_from_display = direct == DirectInput::Decoded;
   const bool soft = s.soft_shadows || soft_shadows_of(test_set);
   const StageSet test_judged = isolated_test_set(test_set, soft);
-  Report isolated = compare_stage_sets(isolated_reference_set(ref_on_test, s, soft), test_judged, iso_opt);
+  Report isolated = compare_stage_sets(isolated_reference_set(ref_on_test, s, soft), test_judged, opt, iso_ctx);
   // The march-end tie (docs/compare.md): only where the plain re-trace fails a cone stage, each
   // cone-image pixel is judged against the closest of the three admissible march ends.
   if (any_cone_stage_fails(isolated, s.soft_shadows)) {
@@ -266,7 +281,7 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
                                                   reference_on_test_inputs(scene, test, s, display, +1), test, &moved,
                                                   display);
     const Report plain = std::move(isolated);
-    isolated = compare_stage_sets(isolated_reference_set(closest, s, soft), test_judged, iso_opt);
+    isolated = compare_stage_sets(isolated_reference_set(closest, s, soft), test_judged, opt, iso_ctx);
     for (StageVerdict& v : isolated.stages)
       if (is_cone_traced(v.stage, s.soft_shadows)) {
         const StageVerdict* p = find_stage(plain, v.stage);
@@ -303,11 +318,11 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
     // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
     // by what its driver reports, which only the occupancy judge reads, so those modes keep the
     // share (docs/compare.md, "Voxel shading slack").
-    CompareOptions own_maps = opt;
+    JudgeContext own_maps;
     const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
                                        s.conservative_raster == ConservativeRaster::Intel;
     if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
-    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, own_maps);
+    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, own_maps);
     const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
     for (StageVerdict& e : end_to_end.stages)
       if (v && e.stage == stage_names::kVoxelRadiance && v->verdict != Verdict::Missing)

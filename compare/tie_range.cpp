@@ -51,6 +51,19 @@ TieRangeChannels tie_range_channels(const std::string& stage, const Image& range
   return out;
 }
 
+Image without_tie_range_group(const Image& range, const std::string& group) {
+  std::vector<int> kept;
+  for (int c = 0; c < range.channels && size_t(c) < range.channel_names.size(); ++c)
+    if (range.channel_names[size_t(c)].rfind(group + ".", 0) != 0) kept.push_back(c);
+  Image out(range.width, range.height, int(kept.size()));
+  out.channel_names.clear();
+  for (int k : kept) out.channel_names.push_back(range.channel_names[size_t(k)]);
+  for (int y = 0; y < range.height; ++y)
+    for (int x = 0; x < range.width; ++x)
+      for (size_t i = 0; i < kept.size(); ++i) out.at(x, y, int(i)) = range.at(x, y, kept[i]);
+  return out;
+}
+
 bool within_tie_range(const Image& range, const TieRangeChannels& ch, int x, int y, int c, double test,
                       double bound) {
   const double lo = range.at(x, y, ch.lo[size_t(c)]), hi = range.at(x, y, ch.hi[size_t(c)]);

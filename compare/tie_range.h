@@ -29,6 +29,10 @@ struct TieRangeChannels {
 };
 TieRangeChannels tie_range_channels(const std::string& stage, const Image& range, int channels);
 
+/// `range` without the channels of `group` (e.g. "image.direct"): a stage whose range the reference
+/// cannot derive on the inputs at hand then has no range rule, and admits nothing by it.
+Image without_tie_range_group(const Image& range, const std::string& group);
+
 /// True when channel c of the test pixel lies in [lo - bound, hi + bound] at (x, y).
 bool within_tie_range(const Image& range, const TieRangeChannels& ch, int x, int y, int c, double test,
                       double bound);

@@ -1,5 +1,7 @@
 #include "verdict.h"
 
+#include "compare/rule_masks.h"
+
 #include <algorithm>
 
 namespace vct::cmp {
@@ -58,7 +60,8 @@ nlohmann::json to_json(const StageVerdict& v) {
   }
   return {{"stage", v.stage},       {"verdict", to_string(v.verdict)}, {"model", v.model},
           {"bound", v.bound},       {"checked", v.checked},            {"out_of_bound", v.out_of_bound},
-          {"allowed", v.allowed},   {"max_abs", v.max_abs},            {"rms", v.rms},
+          {"allowed", v.allowed},   {"admitted_by", v.admitted.json()}, {"max_abs", v.max_abs},
+          {"rms", v.rms},
           {"worst", worst},         {"mask", v.mask},                  {"note", v.note},
           {"extra", v.extra}};
 }
@@ -66,7 +69,10 @@ nlohmann::json to_json(const StageVerdict& v) {
 nlohmann::json to_json(const Report& r) {
   nlohmann::json stages = nlohmann::json::array();
   for (const auto& s : r.stages) stages.push_back(to_json(s));
-  return {{"overall", to_string(r.overall())}, {"first_failing", r.first_failing()}, {"stages", stages}};
+  return {{"overall", to_string(r.overall())},
+          {"first_failing", r.first_failing()},
+          {"stages", stages},
+          {"mask_legend", mask_legend()}};
 }
 
 }  // namespace vct::cmp

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/admission.h"
+
 namespace vct::cmp {
 
 enum class Verdict { Pass, Warn, Fail, Missing };
@@ -29,6 +31,7 @@ struct StageVerdict {
   size_t checked = 0;      // pixels / voxels compared
   size_t out_of_bound = 0; // beyond the bound (some may be allowed, e.g. edge ties)
   size_t allowed = 0;      // of those, tolerated (edge ties, holes)
+  RuleTally admitted;      // per admission rule, the elements it admitted first (compare/admission.h)
   double max_abs = 0.0, rms = 0.0;
   std::vector<Offender> worst;  // worst N, largest error / bound first
   std::string mask;        // error-mask PNG, relative to the run directory (empty if none)

@@ -13,6 +13,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vct_report import attribution, flip_batch, registry, runio, svg  # noqa: E402
+from vct_report import glance as glance_mod  # noqa: E402
 from vct_report.glance import glance  # noqa: E402
 from vct_report.part_times import TIMES, cpu_ms  # noqa: E402
 from vct_report.walkthrough import STAGES  # noqa: E402
@@ -105,7 +106,7 @@ def verdict_table(p):
     out = ['<h3 id="verdicts">GPU vs CPU verdicts: <span class="v-%s">&nbsp;%s&nbsp;</span></h3>' % (E(v.get("overall", "")), E(v.get("overall", "")))]
     if first:
         out.append('<p class="firstfail">First failing stage: %s (later failures are usually its consequence).</p>' % E(first))
-    out.append("<table><tr><th>stage</th><th>verdict</th><th>model</th><th>bound</th><th>result</th><th>max |d|</th><th>worst offenders (reference / test)</th><th>mask</th></tr>")
+    out.append("<table><tr><th>stage</th><th>verdict</th><th>model</th><th>bound</th><th>result</th><th>admitted by</th><th>max |d|</th><th>worst offenders (reference / test)</th><th>mask</th></tr>")
     for st in v["stages"]:
         cls = ' class="first-fail"' if st["stage"] == first else ""
         worst = st.get("worst", [])[:5]
@@ -116,11 +117,21 @@ def verdict_table(p):
         mask = st.get("mask")
         mpath = os.path.join(p.run.path, mask) if mask else None
         mcell = '<a href="%s"><img src="%s" style="width:64px"></a>' % (E(p.rel(mpath)), E(p.rel(mpath))) if mpath and os.path.exists(mpath) else ""
-        out.append("<tr%s><td>%s</td>%s<td>%s</td><td>%s</td><td>%s</td><td class='num'>%s</td><td>%s</td><td>%s</td></tr>" % (
+        out.append("<tr%s><td>%s</td>%s<td>%s</td><td>%s</td><td>%s</td><td>%s</td><td class='num'>%s</td><td>%s</td><td>%s</td></tr>" % (
             cls, E(st["stage"]), verdict_cell(st["verdict"]), E(st.get("model", "")), E(st.get("bound", "")),
-            E(st.get("note", "")), fmt(st.get("max_abs")), wtxt, mcell))
+            E(st.get("note", "")), E(glance_mod.admitted_text(st, top=8)), fmt(st.get("max_abs")), wtxt, mcell))
     out.append("</table>")
+    out.append(mask_legend(v.get("mask_legend") or []))
     return "".join(out)
+
+
+def mask_legend(legend):
+    """One legend for every mask, images and volumes (compare/admission.h's colours)."""
+    if not legend:
+        return ""
+    items = "".join('<span class="legend-item"><span class="swatch" style="background:rgb(%d,%d,%d)"></span>%s</span> ' % (
+        int(l["colour"][0]), int(l["colour"][1]), int(l["colour"][2]), E(l["rule"])) for l in legend)
+    return '<p class="small" id="mask-legend"><b>Masks:</b> %s; dimmed reference or black: within the bound.</p>' % items
 
 
 def load_compare_json(run):

@@ -13,6 +13,12 @@ layout(location = 1) out vec4 o_soft_shadow;
 // directional light's direction until it leaves the volume (ref/stages/cone_sets.cpp).
 float cone_visibility(int i, vec3 p) {
   vec3 origin = to_volume(p);
+#ifdef VCT_FAULT_SOFT_SHADOW_DIRECTION
+  // The fault: the cone is traced away from the light (gl_faults.h).
+  vec3 away = u_light_kind[i] == LIGHT_KIND_DIRECTIONAL ? normalize(u_light_direction[i])
+                                                        : origin - to_volume(u_light_position[i]);
+  return 1.0f - trace_cone(origin, normalize(away), u_shadow_aperture, u_shadow_cone_start, u_cone_max_distance, 0.0f).a;
+#endif
   if (u_light_kind[i] == LIGHT_KIND_DIRECTIONAL) {
     return 1.0f - trace_cone(origin, -normalize(u_light_direction[i]), u_shadow_aperture, u_shadow_cone_start, u_cone_max_distance, 0.0f).a;
   }

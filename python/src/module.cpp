@@ -1,9 +1,10 @@
 // The native half of `import vct` (python/vct/__init__.py is the other): binds the libraries'
 // own API — load_scene, Settings through their JSON form (core/settings.h), the CLI's backend
-// runs (app/validate_run.h), stage sets (compare/stage_set.h), compare_stage_sets
-// (compare/stage_compare.h) and measure_bias (compare/bias.h). Nothing is re-implemented here.
+// runs (app/validate_run.h), stage sets (compare/stage_set.h), the judge (compare/judge.h) and
+// measure_bias (compare/bias.h). Nothing is re-implemented here.
 // Settings and verdicts cross as JSON text; __init__.py turns them into dicts. docs/python.md.
 #include <cstdlib>
+#include <optional>
 
 #include <nanobind/nanobind.h>
 #include <nanobind/stl/map.h>
@@ -14,7 +15,9 @@
 
 #include "arrays.h"
 #include "compare/bias.h"
+#include "compare/judge.h"
 #include "compare/stage_compare.h"
+#include "compare/stage_set_frame.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -22,6 +25,7 @@
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "scene/gltf_loader.h"
+#include "compare_scene.h"
 #include "validate_run.h"
 
 namespace nb = nanobind;
@@ -60,6 +64,9 @@ nb::object frame_to_python(const app::BackendRun& run, const Settings& s) {
   o.attr("timings_ms") = nb::cast(run.frame->timings_ms);
   o.attr("ms") = run.ms;
   o.attr("multibounce_energy") = nb::cast(run.frame->multibounce_energy);
+  // The frame itself, for vct.compare(..., scene=...): the judge re-traces the cone stages on it
+  // exactly as vct validate does on the live frame (a set read from disk is rebuilt instead).
+  o.attr("_frame") = nb::cast(std::move(*run.frame));
   return o;
 }
 
@@ -148,6 +155,7 @@ void bind_path_trace(nb::module_& m) {
 }
 
 void bind_functions(nb::module_& m) {
+  nb::class_<FrameResult>(m, "_Frame", "A rendered frame (stages/stage_types.h), kept for the judge.");
   nb::class_<Scene>(m, "Scene", "A loaded scene (flat, world space; scene/scene.h).")
       .def_ro("source", &Scene::source)
       .def_prop_ro("triangle_count", [](const Scene& s) { return s.triangle_count(); })
@@ -200,15 +208,27 @@ void bind_functions(nb::module_& m) {
     if (r.aovs.empty()) throw InputError(dir, "no pt_*.exr here");
     return r;
   });
-  m.def("_compare", [](const cmp::StageSet& reference, const cmp::StageSet& test, size_t worst_n,
-                       const std::string& mask_dir) {
+  m.def("_compare", [](nb::handle reference_h, nb::handle test_h, size_t worst_n, const std::string& mask_dir,
+                       const Scene* scene, const std::string& settings) {
+    const auto& reference = nb::cast<const cmp::StageSet&>(reference_h);
+    const auto& test = nb::cast<const cmp::StageSet&>(test_h);
+    std::optional<FrameResult> rebuilt;
+    const FrameResult* frame = nullptr;
+    VctSettings vs;
+    if (scene) {
+      // The settings the test ran with: given, else its own manifest's (as vct compare --scene).
+      vs = settings.empty() ? app::settings_of_test_set(test, "") : settings_from_text(settings).vct;
+      if (nb::hasattr(test_h, "_frame")) frame = &nb::cast<const FrameResult&>(test_h.attr("_frame"));
+      else frame = &rebuilt.emplace(cmp::frame_from_stage_set(test, *scene, vs, &reference));
+    }
     cmp::Report rep;
     {
       nb::gil_scoped_release unlocked;
-      rep = cmp::compare_stage_sets(reference, test, {worst_n, mask_dir, mask_dir.empty() ? "" : mask_dir + "/"});
+      const cmp::JudgeInputs in = scene ? cmp::JudgeInputs{scene, frame, &vs} : cmp::JudgeInputs{};
+      rep = cmp::judge(reference, test, in, {worst_n, mask_dir, mask_dir.empty() ? "" : mask_dir + "/"});
     }
     return cmp::to_json(rep).dump();
-  });
+  }, "reference"_a, "test"_a, "worst_n"_a, "mask_dir"_a, "scene"_a.none(), "settings"_a);
   m.def("_bias", [](const cmp::StageSet& vct, const PathTraceResult& pt, double k) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& b : cmp::measure_bias(vct, pt.aovs, {k, "", ""})) j.push_back(cmp::to_json(b));

@@ -76,11 +76,15 @@ def path_trace(scene, settings=None):
     return _vct._path_trace(scene, _text(settings))
 
 
-def compare(reference, test, worst_n=10, mask_dir=""):
-    """Stage-by-stage verdicts of `test` against `reference` (compare/stage_compare.h), as data:
-    {"overall", "first_failing", "stages": [{"stage", "verdict", "model", "bound", "max_abs",
-    "worst": [...], ...}]}. mask_dir: where error-mask PNGs go ("" = none)."""
-    return _json.loads(_vct._compare(reference, test, int(worst_n), str(mask_dir)))
+def compare(reference, test, worst_n=10, mask_dir="", scene=None, settings=None):
+    """Stage-by-stage verdicts of `test` against `reference` from the one judge (compare/judge.h),
+    as data: {"overall", "first_failing", "stages": [{"stage", "verdict", "model", "bound",
+    "admitted_by", "max_abs", "worst": [...], ...}]}. mask_dir: where error-mask PNGs go ("" = none).
+    scene: the Scene both were rendered from; then the cone-traced and shading stages are judged on
+    the test's own inputs, as `vct validate` does (the same report). settings: what the test ran
+    with (default: the test set's own settings)."""
+    text = "" if settings is None else _text(settings)
+    return _json.loads(_vct._compare(reference, test, int(worst_n), str(mask_dir), scene, text))
 
 
 def bias(vct_set, pt, k=3.0):

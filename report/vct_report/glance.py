@@ -60,6 +60,23 @@ def offenders_table(stage, n=3):
             % "".join(rows))
 
 
+WITHIN_BOUND = ("within-bound", "volume-within-bound", "radiance-within-bound")
+
+
+def admitted_text(stage, top=4):
+    """The rules that admitted this stage's elements beyond their bound, most first (run.json
+    admitted_by, compare/admission.h): "raster-alternative 12, edge-neighbour 3"."""
+    counts = [(n, r) for r, n in (stage.get("admitted_by") or {}).items() if r not in WITHIN_BOUND and r != "beyond"]
+    counts.sort(key=lambda c: (-c[0], c[1]))
+    text = ", ".join("%s %d" % (r, n) for n, r in counts[:top])
+    if len(counts) > top:
+        text += ", +%d more" % (len(counts) - top)
+    beyond = (stage.get("admitted_by") or {}).get("beyond", 0)
+    if beyond:
+        text = ("admitted by no rule %d" % beyond) + ("; " + text if text else "")
+    return text
+
+
 def focus_card(page, verdicts):
     st = focus_stage(verdicts)
     if st is None:
@@ -76,10 +93,12 @@ def focus_card(page, verdicts):
     doc = registry.from_run(page.run.json).doc(name)
     where = ("<div class='small'><b>computes</b> %s<br><b>docs</b> <code>%s</code><br><b>ref</b> <code>%s</code>"
              "<br><b>gl</b> <code>%s</code></div>" % tuple(E(x) for x in doc)) if doc else ""
+    admitted = admitted_text(st)
+    admitted = "<div class='small' id='glance-admitted'><b>admitted by</b> %s</div>" % E(admitted) if admitted else ""
     return ("<div class='card' id='glance-stage'><h3>%s: <code>%s</code> <span class='v-%s'>&nbsp;%s&nbsp;</span></h3>"
-            "<div class='small'>%s &middot; %s</div><div class='focus'>%s<div>%s%s</div></div></div>" % (
+            "<div class='small'>%s &middot; %s</div>%s<div class='focus'>%s<div>%s%s</div></div></div>" % (
                 title, E(name), E(st["verdict"]), E(st["verdict"]), E(st.get("model", "")),
-                E(st.get("note", "")), mimg, offenders_table(st), where))
+                E(st.get("note", "")), admitted, mimg, offenders_table(st), where))
 
 
 def final_strip(page):

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "compare/admission.h"
+#include "compare/counted_shares.h"
 #include "core/settings_table.h"
 #include "stages/stage_registry_text.h"
 
@@ -31,6 +33,15 @@ TEST(DocsTables, ExternalFormatHoldsTheStageRegistry) {
   ASSERT_FALSE(doc.empty());
   EXPECT_NE(doc.find(vct::stage_registry_markdown()), std::string::npos)
       << "docs/external_format.md is out of date: regenerate its registry table with `vct stages --markdown`";
+}
+
+TEST(DocsTables, CompareMdHoldsTheAdmissionTableAndCountedShares) {
+  const std::string doc = read_doc("compare.md");
+  ASSERT_FALSE(doc.empty());
+  EXPECT_NE(doc.find(vct::cmp::admission_table_markdown()), std::string::npos)
+      << "docs/compare.md is out of date: regenerate its admission table with `vct stages --rules`";
+  EXPECT_NE(doc.find(vct::cmp::counted_shares_markdown()), std::string::npos)
+      << "docs/compare.md is out of date: regenerate its counted shares with `vct stages --rules`";
 }
 
 TEST(DocsTables, EveryVctSettingHasARowAndRoundTrips) {

@@ -52,9 +52,9 @@ struct Case {
     FrameResult gl = ref;
     gl.voxels.radiance.set_rgba(kVoxel.x, kVoxel.y, kVoxel.z, vec4(value, 1.0f));
     *gl.voxels.fragments.voxel(kVoxel.x, kVoxel.y, kVoxel.z) = fragments;
-    CompareOptions opt;
-    opt.shading_tie_fraction = 0.0;  // as on the test's own shadow maps: no share of shading ties
-    return find(compare_stage_sets(stage_set_from_frame(ref, s.vct), stage_set_from_frame(gl, s.vct), opt),
+    JudgeContext ctx;
+    ctx.shading_tie_fraction = 0.0;  // as on the test's own shadow maps: no share of shading ties
+    return find(compare_stage_sets(stage_set_from_frame(ref, s.vct), stage_set_from_frame(gl, s.vct), {}, ctx),
                 "voxel.radiance");
   }
 };

@@ -2,10 +2,11 @@
 // shaders through the program builder, or leaves out a barrier; docs/compare.md "Faults"): for each, the stage comparison against the CPU reference must fail
 // the stage where the bug lives first, as `vct validate` judges it (cone stages judged on the GL
 // frame's own inputs). A correct run must fail no stage. Cornell box, 32^3, 64^2, 4x MSAA.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
-#include "compare/isolated_stages.h"
+#include "compare/judge.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
@@ -34,26 +35,26 @@ FaultRun fault_settings(const std::string& fault, Reduction reduction, bool anis
 // share one.
 const FrameResult& reference(const Settings& s) {
   static std::map<std::string, FrameResult> cache;
-  const std::string key = to_string(s.vct.reduction) + (s.vct.anisotropic ? "/aniso" : "/iso");
+  const std::string key =
+      to_string(s.vct.reduction) + (s.vct.anisotropic ? "/aniso" : "/iso") + (s.vct.soft_shadows ? "/soft" : "");
   auto it = cache.find(key);
   if (it == cache.end()) it = cache.emplace(key, render_ref_frame(cornell_box(), s)).first;
   return it->second;
 }
 
-// The report `vct validate` would print for the GL frame with the fault switched on.
+// The report `vct validate` would print for the GL frame with the fault switched on: the one judge
+// (compare/judge.h), with the cone and shading stages on GL's own inputs.
 cmp::Report judge(GlContext& ctx, const FaultRun& run) {
   const Settings& s = run.s;
   const FrameResult gl = render_gl_frame(ctx, cornell_box(), s, {"", run.fault});
   const cmp::StageSet gl_set = cmp::stage_set_from_frame(gl, s.vct);
-  cmp::Report rep = cmp::compare_stage_sets(cmp::stage_set_from_frame(reference(s), s.vct), gl_set);
-  const FrameResult ref_on_gl = cmp::reference_on_test_inputs(cornell_box(), gl, s.vct);
-  cmp::apply_isolated_verdicts(rep, cmp::compare_stage_sets(cmp::stage_set_from_frame(ref_on_gl, s.vct), gl_set),
-                               s.vct.soft_shadows);
-  std::printf("  gl_fault '%s' (%s%s): failing stages: %s\n", run.fault.c_str(), to_string(s.vct.reduction).c_str(),
-              s.vct.anisotropic ? ", anisotropic" : "", failing_stages(rep).c_str());
+  const cmp::Report rep =
+      cmp::judge(cmp::stage_set_from_frame(reference(s), s.vct), gl_set, {&cornell_box(), &gl, &s.vct});
+  std::printf("  gl_fault '%s' (%s%s%s): failing stages: %s\n", run.fault.c_str(), to_string(s.vct.reduction).c_str(),
+              s.vct.anisotropic ? ", anisotropic" : "", s.vct.soft_shadows ? ", soft shadows" : "",
+              failing_stages(rep).c_str());
   return rep;
 }
-
 
 #define EXPECT_FIRST_FAILING(rep, expected)                                              \
   EXPECT_EQ((rep).first_failing(), expected) << "failing stages: " << failing_stages(rep)
@@ -190,6 +191,23 @@ TEST(GlFaults, ConeStepFailsAnIndirectImage) {
   const cmp::Report rep = judge(*ctx, fault_settings("cone_step", Reduction::FixedPoint, false));
   EXPECT_EQ(rep.first_failing().rfind("image.indirect_", 0), 0u)
       << "first failing: " << rep.first_failing() << "; failing stages: " << failing_stages(rep);
+}
+
+// Issue 33: with soft shadows image.direct used to be judged with a PCF range computed without
+// shadow maps (any value from 0 to the unshadowed light), so this fault only warned.
+TEST(GlFaults, SoftShadowDirectionFailsImageDirect) {
+  VCT_REQUIRE_GL();
+  FaultRun run = fault_settings("soft_shadow_direction", Reduction::FixedPoint, false);
+  run.s.vct.soft_shadows = true;
+  const cmp::Report rep = judge(*ctx, run);
+  const auto direct = std::find_if(rep.stages.begin(), rep.stages.end(),
+                                   [](const cmp::StageVerdict& v) { return v.stage == stage_names::kImageDirect; });
+  ASSERT_NE(direct, rep.stages.end());
+  EXPECT_EQ(direct->verdict, cmp::Verdict::Fail) << direct->note;
+  EXPECT_EQ(direct->admitted[cmp::Rule::PcfTapRange], 0u) << "no shadow maps: no PCF range";
+  // The same settings without the fault: no FAIL anywhere (the correct GL needs no range there).
+  run.fault.clear();
+  EXPECT_FIRST_FAILING(judge(*ctx, run), "");
 }
 
 }  // namespace

@@ -7,10 +7,10 @@
 #include "compare/verdict.h"
 #include "stages/backend_facts.h"
 
-namespace vct::app {
+namespace vct::cmp {
 
 /// Appends one sentence per relevant fact to the notes of `rep`'s stages. `test` are the facts of
 /// the GPU side, `reference` those of the CPU side (what its emulation assumed).
-void note_driver_facts(cmp::Report& rep, const BackendFacts& test, const BackendFacts& reference);
+void note_driver_facts(Report& rep, const BackendFacts& test, const BackendFacts& reference);
 
-}  // namespace vct::app
+}  // namespace vct::cmp

@@ -1,10 +1,10 @@
-#include "facts_notes.h"
+#include "compare/driver_facts_notes.h"
 
 #include <string>
 
 #include "stages/stage_registry.h"
 
-namespace vct::app {
+namespace vct::cmp {
 namespace {
 
 bool starts(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
@@ -32,7 +32,7 @@ bool texture_stage(const std::string& stage) {
   return m == ToleranceModel::Texture || m == ToleranceModel::NormalMap;
 }
 
-void append(cmp::StageVerdict& v, const std::string& sentence) {
+void append(StageVerdict& v, const std::string& sentence) {
   v.note += (v.note.empty() ? "" : " ") + sentence;
 }
 
@@ -44,12 +44,12 @@ std::string positions_text(const std::vector<vec2>& p) {
 
 }  // namespace
 
-void note_driver_facts(cmp::Report& rep, const BackendFacts& test, const BackendFacts& reference) {
+void note_driver_facts(Report& rep, const BackendFacts& test, const BackendFacts& reference) {
   if (test.empty()) return;  // an external set without facts: nothing known, nothing claimed
   const bool mirrored = !test.sample_positions.empty() && test.sample_positions == reference.sample_positions;
   const bool positions_unknown = test.sample_positions.empty();
   const bool subpixel_differs = test.subpixel_bits > 0 && test.subpixel_bits != cpu_subpixel_bits();
-  for (cmp::StageVerdict& v : rep.stages) {
+  for (StageVerdict& v : rep.stages) {
     if (voxel_raster_stage(v.stage)) {
       if (positions_unknown)
         append(v, "Driver fact not reported: GL_SAMPLE_POSITION (the CPU assumed the standard pattern).");
@@ -68,4 +68,4 @@ void note_driver_facts(cmp::Report& rep, const BackendFacts& test, const Backend
   }
 }
 
-}  // namespace vct::app
+}  // namespace vct::cmp
