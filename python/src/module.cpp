@@ -70,13 +70,15 @@ nb::object frame_to_python(const app::BackendRun& run, const Settings& s) {
   return o;
 }
 
-nb::object render(const Scene& scene, const std::string& settings, bool gl) {
+// `positions`: the GPU-rule voxelizer's sample positions (a GL set's facts, as vct validate takes
+// them from its GL run); empty = the standard pattern.
+nb::object render(const Scene& scene, const std::string& settings, bool gl, const std::vector<vec2>& positions = {}) {
   const Settings s = settings_from_text(settings);
   app::BackendRun run;
   {
     nb::gil_scoped_release unlocked;
     set_thread_count(s.threads);
-    run = gl ? app::run_gl_backend(scene, s) : app::run_ref_backend(scene, s);
+    run = gl ? app::run_gl_backend(scene, s) : app::run_ref_backend(scene, s, positions);
   }
   if (!run.ok()) {
     if (run.status.rfind("unavailable", 0) == 0) throw EnvironmentError("gl " + run.status);
@@ -178,7 +180,9 @@ void bind_functions(nb::module_& m) {
   m.def("_apply_sweep_value", [](const std::string& t, const std::string& key, const std::string& value) {
     return settings_text(app::apply_sweep_value(settings_from_text(t), key, value));
   });
-  m.def("_render_ref", [](const Scene& sc, const std::string& t) { return render(sc, t, false); });
+  m.def("_render_ref", [](const Scene& sc, const std::string& t, const cmp::StageSet* facts_from) {
+    return render(sc, t, false, facts_from ? facts_from->facts.sample_positions : std::vector<vec2>{});
+  }, "scene"_a, "settings"_a, "facts_from"_a.none());
   m.def("_render_gl", [](const Scene& sc, const std::string& t) { return render(sc, t, true); });
   m.def("_path_trace", [](const Scene& sc, const std::string& t) {
     const Settings s = settings_from_text(t);

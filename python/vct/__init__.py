@@ -55,9 +55,11 @@ def sweep_settings(settings, key, value):
     return _json.loads(_vct._apply_sweep_value(_text(settings), str(key), str(value)))
 
 
-def render_ref(scene, settings=None):
-    """One CPU reference frame; every stage in a StageSet (also .timings_ms, .ms)."""
-    return _vct._render_ref(scene, _text(settings))
+def render_ref(scene, settings=None, facts_from=None):
+    """One CPU reference frame; every stage in a StageSet (also .timings_ms, .ms). facts_from: a GL
+    set whose driver's MSAA sample positions the voxelizer emulates (as `vct validate` and
+    `vct render --facts-from` do); None = the standard pattern."""
+    return _vct._render_ref(scene, _text(settings), facts_from)
 
 
 def render_gl(scene, settings=None):
