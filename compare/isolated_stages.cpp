@@ -263,6 +263,45 @@ StageSet isolated_test_set(const StageSet& test, bool soft_shadows) {
 }
 }  // namespace
 
+namespace {
+// voxel.radiance re-judged on the test's own shadow maps (and, multibounce, its own bounce input).
+void judge_radiance_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test,
+                                   const VctSettings& s, const StageSet& test_set, const CompareOptions& opt) {
+  // The voxels on the test's own shadow maps (and, multibounce, its own bounce input): a texel
+  // that differs on GL's own map then moves no voxel (docs/compare.md, "Voxel radiance on the
+  // test's own shadow maps"), with no share of shading ties: what the shadow maps do not explain,
+  // the reference's slack does (snap, LOD, coverage ties; docs/compare.md, "Voxel shading slack").
+  // The re-injection costs what the reference's injection and slack
+  // cost (atrium, 256^2, grid 128: +7 s), so one frame re-injects only where the end-to-end
+  // verdict has shading ties to explain; with a bounce input always (its bounce light differs
+  // everywhere).
+  const bool bounce_input = s.bounces >= 2 && test.bounce_input.voxel_count() > 0;
+  const StageVerdict* e2e_radiance = find_stage(end_to_end, stage_names::kVoxelRadiance);
+  const bool shading_ties = e2e_radiance && e2e_radiance->extra.value("shading_ties", 0) > 0;
+  std::optional<VoxelGrid> grid;
+  if (bounce_input || shading_ties) grid = reference_voxels_on_test_inputs(scene, test, s);
+  if (grid) {
+    FrameResult r = test;
+    r.backend = "ref-on-" + test.backend + "-voxel-inputs";
+    r.voxels = std::move(*grid);
+    // On the test's own maps no shadow-map tie is left to share. The coverage ties cover the
+    // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
+    // by what its driver reports, which only the occupancy judge reads, so those modes keep the
+    // share (docs/compare.md, "Voxel shading slack").
+    JudgeContext own_maps;
+    const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
+                                       s.conservative_raster == ConservativeRaster::Intel;
+    if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
+    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, own_maps);
+    const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
+    for (StageVerdict& e : end_to_end.stages)
+      if (v && e.stage == stage_names::kVoxelRadiance && v->verdict != Verdict::Missing)
+        replace_with_isolated(e, *v,
+                              bounce_input ? "the test's own shadow maps and bounce input" : "the test's own shadow maps");
+  }
+}
+}  // namespace
+
 void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                                 const StageSet& test_set, const CompareOptions& opt) {
   const DisplayTransform* display = &test_set.conventions.display;
@@ -297,38 +336,7 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
     for (StageVerdict& v : isolated.stages)
       if (v.stage == stage_names::kImageFinal) v.verdict = Verdict::Missing;  // end-to-end verdict stays
   apply_isolated_verdicts(end_to_end, isolated, s.soft_shadows);
-  // The voxels on the test's own shadow maps (and, multibounce, its own bounce input): a texel
-  // that differs on GL's own map then moves no voxel (docs/compare.md, "Voxel radiance on the
-  // test's own shadow maps"), with no share of shading ties: what the shadow maps do not explain,
-  // the reference's slack does (snap, LOD, coverage ties; docs/compare.md, "Voxel shading slack").
-  // The re-injection costs what the reference's injection and slack
-  // cost (atrium, 256^2, grid 128: +7 s), so one frame re-injects only where the end-to-end
-  // verdict has shading ties to explain; with a bounce input always (its bounce light differs
-  // everywhere).
-  const bool bounce_input = s.bounces >= 2 && test.bounce_input.voxel_count() > 0;
-  const StageVerdict* e2e_radiance = find_stage(end_to_end, stage_names::kVoxelRadiance);
-  const bool shading_ties = e2e_radiance && e2e_radiance->extra.value("shading_ties", 0) > 0;
-  std::optional<VoxelGrid> grid;
-  if (bounce_input || shading_ties) grid = reference_voxels_on_test_inputs(scene, test, s);
-  if (grid) {
-    FrameResult r = test;
-    r.backend = "ref-on-" + test.backend + "-voxel-inputs";
-    r.voxels = std::move(*grid);
-    // On the test's own maps no shadow-map tie is left to share. The coverage ties cover the
-    // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
-    // by what its driver reports, which only the occupancy judge reads, so those modes keep the
-    // share (docs/compare.md, "Voxel shading slack").
-    JudgeContext own_maps;
-    const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
-                                       s.conservative_raster == ConservativeRaster::Intel;
-    if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
-    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, own_maps);
-    const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
-    for (StageVerdict& e : end_to_end.stages)
-      if (v && e.stage == stage_names::kVoxelRadiance && v->verdict != Verdict::Missing)
-        replace_with_isolated(e, *v,
-                              bounce_input ? "the test's own shadow maps and bounce input" : "the test's own shadow maps");
-  }
+  judge_radiance_on_test_inputs(end_to_end, scene, test, s, test_set, opt);
 }
 
 }  // namespace vct::cmp

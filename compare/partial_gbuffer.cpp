@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/raster.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {
@@ -45,7 +46,7 @@ Image position_margin_from_depth(const Scene& scene, const GBuffer& g) {
   const int w = g.depth.width, h = g.depth.height;
   const WindowUnprojection window{
       glm::inverse(glm::dmat4(scene.camera.projection(float(w) / float(h))) * glm::dmat4(scene.camera.view())), w, h};
-  constexpr double kDepth = 4.0 / 16777216.0, kSnap = 1.0 / 256.0, kRounding = 4.0 / 16777216.0;
+  constexpr double kDepth = 4.0 / 16777216.0, kSnap = kVertexSnapStep, kRounding = 4.0 / 16777216.0;
   Image margin(w, h, 3, 0.0f);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

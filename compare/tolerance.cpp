@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "compare/counted_shares.h"
+#include "stages/raster.h"
 #include "stages/texture_slack.h"
 
 namespace vct::cmp {
@@ -21,13 +23,8 @@ bool is_cone_traced(const std::string& stage, bool soft_shadows) {
 
 namespace {
 
-// Edge ties, as a share of the pixels the edge map flags (image_edges.h). Measured with GL
-// (llvmpipe) against the reference on the built-in scene at 32^2..512^2 and demo_room from 64^2:
-// legitimate ties reach 1.2% of the flagged pixels (image.direct, shadow-test ties); a one-pixel
-// shift that shows only at edges puts >= 15% of them beyond the bound, half the edge pixels wrong
-// 50%. 2.5% is what the former shares of all pixels (0.5% raster, 1% shading) amounted to at 64^2
-// on the built-in scene (docs/compare.md, "Edges").
-constexpr double kEdgeTieFraction = 0.025;
+// The edge and interior shares are counted allowances: compare/counted_shares.h holds them with
+// their denominators (docs/compare.md, "Edges", "Counted shares").
 
 // "2^-14" for powers of two (how the bounds are derived), else three significant digits.
 std::string number_text(double v) {
@@ -55,17 +52,17 @@ using T = ToleranceModel;
 // One row per image model: the numbers and the freedom they stand for (docs/compare.md derives
 // each one).
 std::vector<ImageModel> make_image_models() {
-  const double e = kEdgeTieFraction;
+  const double e = kEdgeTieShare.fraction, i = kInteriorShare.fraction;
   // id, name, abs, rel, abs_of_mean, edge ties, interior, slope, source
   return {
       // D32F: both sides interpolate window z in float; the spec does not fix the barycentric
       // arithmetic (plane equations evaluated far from the vertices lose bits), so allow 2^-14
       // (6.1e-5), 1/8 of the default constant shadow bias (5e-4): a difference inside the bound
       // cannot flip a shadow test except at exact ties.
-      {T::Depth, "d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, e, 0.0, std::ldexp(1.0, -8),
+      {T::Depth, "d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, e, 0.0, kVertexSnapStep,
        "float depth interpolation, subpixel snapping; coverage and fill-rule ties at edges"},
       {T::Coverage, "coverage-exact", 0.0, 0.0, 0.0, e, 0.0, 0.0, "same fill rule; ties at edges"},
-      {T::Position, "interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, e, 0.001, std::ldexp(1.0, -8),
+      {T::Position, "interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, e, i, kVertexSnapStep,
        "float interpolation, subpixel snapping"},
       // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice
       // the error) and renormalising a filtered (shortened) tangent-space normal scales it further.
@@ -77,15 +74,15 @@ std::vector<ImageModel> make_image_models() {
        "8-bit sub-texel + LOD weights"},
       // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
       // ties flip at shadow edges.
-      {T::Shading, "shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), e, 0.001, 0.0,
+      {T::Shading, "shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), e, i, 0.0,
        "G-buffer bound through the BRDF; shadow and silhouette ties at edges"},
-      {T::ConeVisibility, "cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, e, 0.001, 0.0,
+      {T::ConeVisibility, "cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, e, i, 0.0,
        "8-bit weights over the cone's samples"},
       // Cone-traced images: each fetch has weights with 8 sub-texel bits per axis plus an 8-bit
       // LOD fraction: per fetch error <= 4 * 2^-9 = 2^-7 of the local texel maximum; the front-
       // to-back sum weights fetches by (1-a) <= 1, so with a local max/mean contrast up to 4 the
       // image bound is 2^-5 |ref|, plus 2^-8 of the image mean for near-black pixels.
-      {T::Filtered, "filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), e, 0.001, 0.0,
+      {T::Filtered, "filtered-8bit", 1e-6, std::ldexp(1.0, -5), std::ldexp(1.0, -8), e, i, 0.0,
        "8-bit sub-texel and LOD weights, GL 4.5 8.14 / D3D11 7.18.16.1"},
   };
 }

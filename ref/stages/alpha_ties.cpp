@@ -15,7 +15,7 @@ float alpha_freedom(const Scene& scene, const WindowBarycentrics& wb, int x, int
   glm::dvec2 bc;
   float shift = 0.0f;
   if (wb.at(scene, triangle, cx, cy, bc)) {
-    constexpr double s = kTextureSlackShift;
+    constexpr double s = kVertexSnapStep;
     static constexpr int kShifts[4][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
     for (const auto& k : kShifts) {
       glm::dvec2 bs;

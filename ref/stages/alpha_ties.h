@@ -19,7 +19,7 @@ constexpr float kAlphaWeightSlack = 3.0f / 512.0f;
 
 /// The alpha's freedom at image pixel (x, row) (row 0 = top) of `triangle` at barycentrics `bary`
 /// (b0, b1, b2): kAlphaWeightSlack plus the largest change of the reference's own alpha when the
-/// sample moves by (+-2^-8, +-2^-8) pixels (kTextureSlackShift, vertex snapping).
+/// sample moves by (+-2^-8, +-2^-8) pixels (kVertexSnapStep, vertex snapping).
 float alpha_freedom(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
                     uint32_t triangle, const vec3& bary);
 

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "stages/fragment_slack.h"
-#include "stages/raster_alternatives.h"  // kRasterTieShift
+#include "stages/raster_alternatives.h"  // kVertexSnapStep
 
 namespace vct {
 
@@ -136,7 +136,7 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox) {
   }
   for (const vec2 shift : {vec2(-1, -1), vec2(-1, 1), vec2(1, -1), vec2(1, 1)}) {
     std::vector<vec2> moved = vox.samples;
-    for (vec2& p : moved) p += shift * float(kRasterTieShift);
+    for (vec2& p : moved) p += shift * float(kVertexSnapStep);
     merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, moved), vox.may_drop, added);
   }
   add_depth_ties(scene, vox, added);

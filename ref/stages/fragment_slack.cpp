@@ -31,7 +31,7 @@ float largest_channel(const vec3& d) { return std::max(d.x, std::max(d.y, d.z));
 struct SnapWindow {
   glm::dvec3 w0, e1, e2;     // world vertex 0 and edges
   double a, b, c, d, det;    // the projected edges (P1 - P0, P2 - P0) along the window's u and v
-  double reach = kVoxelSnapShift;  // |e| per window axis, voxels
+  double reach = kVertexSnapStep;  // |e| per window axis, voxels
   bool bounded = true;             // false where s G >= 1/2 (a sliver): no bound on the shift
   int axis = 0;                    // the dominant axis (the window's depth)
   double depth0 = 0.0, depth_e1 = 0.0, depth_e2 = 0.0;  // voxel-space depth of vertex 0 and the edges'
@@ -54,9 +54,9 @@ bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& 
   const double g = (std::abs(w.a) + std::abs(w.b) + std::abs(w.c) + std::abs(w.d) + std::abs(w.d - w.c) +
                     std::abs(w.a - w.b)) / std::abs(w.det);
   const double sum_l = std::abs(1.0 - double(f.b1) - double(f.b2)) + std::abs(double(f.b1)) + std::abs(double(f.b2));
-  const double sg = kVoxelSnapShift * g;
+  const double sg = kVertexSnapStep * g;
   w.bounded = sg < 0.5;
-  w.reach = kVoxelSnapShift * sum_l / (1.0 - std::min(sg, 0.5));
+  w.reach = kVertexSnapStep * sum_l / (1.0 - std::min(sg, 0.5));
   return true;
 }
 

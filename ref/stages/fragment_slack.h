@@ -16,6 +16,7 @@
 
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "stages/raster.h"
 #include "stages/inject.h"
 #include "stages/stage_types.h"
 #include "stages/voxelize.h"
@@ -24,13 +25,12 @@ namespace vct {
 
 /// Largest pixel-centre shift of the voxel raster the slack covers, in voxels per in-plane axis:
 /// one sub-pixel step of the snapping grid (as the raster stages' 2^-8 pixel, compare/tolerance.h).
-constexpr double kVoxelSnapShift = 1.0 / 256.0;
 
 /// How far, in voxels per in-plane axis, the snap may move the point whose attributes GL
-/// interpolates for fragment f: kVoxelSnapShift x sum |l_i| / (1 - kVoxelSnapShift G), l the
+/// interpolates for fragment f: kVertexSnapStep x sum |l_i| / (1 - kVertexSnapStep G), l the
 /// fragment's barycentrics at its pixel centre (extrapolated when the centre is outside) and G the
 /// sum of their window-space gradients' magnitudes (docs/compare.md, "Voxel shading slack").
-/// +infinity for a sliver (kVoxelSnapShift G >= 1/2) or a triangle seen edge-on in its window.
+/// +infinity for a sliver (kVertexSnapStep G >= 1/2) or a triangle seen edge-on in its window.
 double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f);
 
 /// Where GL may write fragment f along its dominant axis (stages/coverage_ties.h): the axis, the

@@ -120,7 +120,7 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
   // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
   const Scene* alpha_scene = &scene;
   for (int k = 0; k < 4; ++k) {
-    const float s = float(kRasterTieShift);
+    const float s = float(kVertexSnapStep);
     const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
     widen_by(scene, view_proj, vb,
              render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample), g);

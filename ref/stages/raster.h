@@ -26,6 +26,12 @@ struct Scene;  // scene/scene.h: only the alpha test reads it
 
 constexpr int kSubpixelBits = 8;
 constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
+/// One step of the sub-pixel grid window coordinates snap to (GL_SUBPIXEL_BITS, GL 4.5 §14.6):
+/// the most a correct GL's snapped vertex may differ from ours on each axis, in pixels (voxels in
+/// the voxel raster, texels in the light-space raster). The one snap constant every freedom and
+/// bound derived from vertex snapping uses (raster alternatives, texture and fragment slacks, the
+/// rasterised models' slope term).
+constexpr double kVertexSnapStep = 1.0 / double(kSubpixelScale);
 
 /// A triangle after clipping, projection and snapping, ready to be scanned. The vertex order is
 /// made counter-clockwise in window space (area > 0); `front_facing` remembers the original

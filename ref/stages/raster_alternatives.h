@@ -17,7 +17,6 @@
 namespace vct {
 
 /// The four sample shifts (pixels, window axes) whose coverage the alternatives follow.
-constexpr double kRasterTieShift = 1.0 / 256.0;
 
 /// Sample offset k (0..3) of the four (+-2^-8, +-2^-8) shifts from the pixel centre, in
 /// sub-pixel steps from the pixel's lower-left corner (x, y): (127 or 129, 127 or 129).

@@ -68,7 +68,7 @@ int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int
   const double cx = double(x) + 0.5, cy = double(wb.height()) - double(row) - 0.5;
   glm::dvec2 bc;
   if (!wb.at(scene, triangle, cx, cy, bc)) return 0;
-  constexpr double s = kTextureSlackShift;
+  constexpr double s = kVertexSnapStep;
   // The centre and the corners: the change of a (locally) linear value peaks there, as in the
   // position model's 2^-8 (|d/dx| + |d/dy|); edge midpoints doubled the G-buffer's cost for
   // nothing.

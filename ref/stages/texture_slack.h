@@ -10,6 +10,7 @@
 
 #include "core/math.h"
 #include "scene/scene.h"
+#include "stages/raster.h"
 #include "scene/surface.h"
 #include "scene/texture_lod.h"
 #include "stages/uv_derivatives.h"
@@ -18,7 +19,6 @@ namespace vct {
 
 /// Largest sample shift (pixels, per axis) the slack covers: one sub-pixel step of the snapping
 /// grid on each axis (kSubpixelBits = 8), as the position model's 2^-8 (|d/dx| + |d/dy|).
-constexpr double kTextureSlackShift = 1.0 / 256.0;
 
 /// Channels of GBuffer::texture_slack, one per textured attribute: the largest |change| over the
 /// attribute's channels; kSlackDirect: the direct light shaded from those attributes
@@ -82,7 +82,7 @@ inline vec3 unorm8_corner(int k) {
 bool is_textured(const Material& m);
 
 /// The surface points of `triangle` at image pixel (x, row)'s centre (raster barycentrics `bary`,
-/// so the first is exactly the G-buffer's) and at its (+-s, +-s) shifts, s = kTextureSlackShift;
+/// so the first is exactly the G-buffer's) and at its (+-s, +-s) shifts, s = kVertexSnapStep;
 /// returns how many (shifts whose view ray misses the plane are left out).
 int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
                            uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]);
@@ -98,7 +98,7 @@ int lod_candidates(const LodRange& range, double out[kMaxLodCandidates]);
 /// Slack of the textured values at image pixel (x, row) (row 0 = top) whose closest surface is
 /// `triangle` at barycentrics `bary` (b0, b1, b2) and whose reference value `centre` was looked
 /// up at lods.exact: for each TextureSlackChannel, the largest |value - centre| over the centre
-/// and the 4 shifts (+-s, +-s), s = kTextureSlackShift, each at every lod candidate of the
+/// and the 4 shifts (+-s, +-s), s = kVertexSnapStep, each at every lod candidate of the
 /// channel's texture slot. Without textures only the interpolated attributes (the vertex normal,
 /// COLOR_0) move.
 vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int row,

@@ -139,7 +139,7 @@ TEST(TextureSlack, SmoothUntexturedNormalsMoveWithTheSamplePoint) {
     const double t = (2.0 * u - 1.0) * double(k);
     return glm::dvec3(t, 0.0, 1.0) / std::sqrt(1.0 + t * t);
   };
-  const double du = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * double(kTextureSlackShift);
+  const double du = 2.0 * std::tan(0.5) * 2.0 / 16.0 / 4.0 * double(kVertexSnapStep);
   for (int x = 0; x < 16; ++x) {
     const double u = (double(g.position.at(x, 8, 0)) + 2.0) / 4.0;
     double want = 0.0;
