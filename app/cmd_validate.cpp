@@ -53,6 +53,7 @@ struct ValidateOptions {
   // and GL availability of an earlier validate run of the same scene and settings.
   std::string pt_from;     // --pt-from RUN_DIR
   std::string sweep_rows;  // --sweep-rows FILE.json
+  bool check_input = false;  // --check-input: scene, settings and sweep values only
 };
 
 // True when a --set names `key` (with or without its "vct." prefix).
@@ -179,16 +180,30 @@ PtRun load_base_pt(const std::string& base_dir, bool& gl_available) {
   return pt;
 }
 
+// Bad specs and values (GL's refusals too) fail before any rendering.
+void check_sweeps(const Scene& scene, const Settings& s, const ValidateOptions& o) {
+  for (const auto& sw : o.sweeps) {
+    const auto [key, values] = parse_sweep(sw);
+    for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
+  }
+  check_gl_backend_accepts(scene, s, o.gl);
+}
+
+// --check-input: what validate would refuse, refused without rendering (a cluster client asks
+// this before it sends any task).
+int check_input_only(const ValidateOptions& o) {
+  const Settings s = resolve(o.common);
+  check_sweeps(load_scene_and_warn(o.scene, o.common.scene_load), s, o);
+  return kExitOk;
+}
+
 // --sweep-rows: the rows of every --sweep, written as validate's run.json "sweeps" array.
 int run_sweep_rows(const ValidateOptions& o) {
   if (o.pt_from.empty()) throw InputError("--sweep-rows", "needs --pt-from RUN_DIR (the base validate run)");
   if (o.sweeps.empty()) throw InputError("--sweep-rows", "needs at least one --sweep KEY=V1,...");
   const Settings s = resolve(o.common);
   const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);
-  for (const auto& sw : o.sweeps) {
-    const auto [key, values] = parse_sweep(sw);
-    for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
-  }
+  check_sweeps(scene, s, o);
   bool gl_available = false;
   const PtRun pt = load_base_pt(o.pt_from, gl_available);
   PhaseProgress progress(false, "validate", 0);
@@ -228,6 +243,7 @@ void write_validate_attribution(RunDir& run, const Scene& scene, const Settings&
 }
 
 int run(const ValidateOptions& o) {
+  if (o.check_input) return check_input_only(o);
   if (!o.sweep_rows.empty()) return run_sweep_rows(o);
   PhaseTimes phases;
   const Settings s = resolve(o.common);
@@ -368,6 +384,7 @@ void register_validate(CLI::App& app, int& exit_code) {
   cmd->add_option("--pt-from", o->pt_from, "With --sweep-rows: the validate run whose path tracer the rows use");
   cmd->add_option("--sweep-rows", o->sweep_rows,
                   "Compute only the --sweep rows into FILE.json (a cluster task, docs/cluster.md)");
+  cmd->add_flag("--check-input", o->check_input, "Only check the scene, settings and --sweep values (exit 0 or 2)");
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
 
