@@ -86,4 +86,8 @@ def _positive_int(text, spec):
 
 
 def make_executor(spec):
-    return SerialExecutor() if spec == "none" else DaskExecutor(spec)
+    if spec == "none":
+        return SerialExecutor()
+    if not spec.startswith(("local:", "tcp://", "tls://")):
+        raise VctInputError(f"--scheduler: expected none, local:N or tcp://HOST:PORT, got '{spec}'")
+    return DaskExecutor(spec)
