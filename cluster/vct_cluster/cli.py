@@ -4,6 +4,7 @@ import argparse
 import os
 import sys
 import time
+from pathlib import Path
 
 from .errors import VctInputError, VctTaskError
 from .executors import make_executor
@@ -37,6 +38,8 @@ def _common(p):
 def _parser():
     top = _Parser(prog="vct-cluster", description=__doc__)
     sub = top.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    sub.add_parser("scheduler", help="a Dask scheduler (dask scheduler's options) that knows vct-cluster's tasks")
+    sub.add_parser("worker", help="a Dask worker (dask worker SCHEDULER and its options) that runs them")
     pt = sub.add_parser("pathtrace", help="a path-traced reference split into sample ranges")
     pt.add_argument("scene", nargs="?", default="", help="glTF scene (default: the built-in Cornell box)")
     _common(pt)
@@ -89,7 +92,19 @@ def _sweep(a, vct, executor):
     return code
 
 
+def _serve(role, argv):
+    """`vct-cluster scheduler|worker ...`: Dask's own scheduler or worker, with this package on
+    the Python path of it and of its worker processes (they unpickle the tasks' functions)."""
+    here = str(Path(__file__).resolve().parents[1])
+    os.environ["PYTHONPATH"] = here + (os.pathsep + os.environ["PYTHONPATH"] if os.environ.get("PYTHONPATH") else "")
+    module = {"scheduler": "distributed.cli.dask_scheduler", "worker": "distributed.cli.dask_worker"}[role]
+    os.execv(sys.executable, [sys.executable, "-m", module] + list(argv))
+
+
 def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv and argv[0] in ("scheduler", "worker"):
+        _serve(argv[0], argv[1:])
     a = _parser().parse_args(argv)
     executor = None
     try:
@@ -104,6 +119,10 @@ def main(argv=None):
         return 1
     except KeyboardInterrupt:
         sys.stderr.write("vct-cluster: interrupted; finished tasks are kept, rerun the command to go on\n")
+        return 1
+    except Exception as e:  # a Dask or environment failure: one line, no traceback
+        first = (str(e).strip().splitlines() or [""])[0]
+        sys.stderr.write(f"vct-cluster: {type(e).__name__}: {first}; finished tasks are kept, rerun to go on\n")
         return 1
     finally:
         if executor is not None:

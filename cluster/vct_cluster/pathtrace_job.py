@@ -8,6 +8,7 @@ import os
 import struct
 import tempfile
 import time
+import uuid
 
 from .errors import VctInputError
 from .files import read_json, write_bytes_atomically, write_json_atomically
@@ -100,7 +101,9 @@ class PathtraceJob:
         for a, b in self.ranges:
             if (a, b) not in todo:
                 bar.task_done((b - a) * pixels, reused=True)
-        tag = f"{self.key['scene_hash']:x}-{self.key['settings_hash']:x}"
+        # Keys unique to this run: a scheduler must not hand back a result it still holds from an
+        # earlier job (another --out may want the task rendered again).
+        tag = f"{self.key['scene_hash']:x}-{self.key['settings_hash']:x}-{uuid.uuid4().hex[:8]}"
         tasks = [(f"vct-pt-{tag}-{a}-{b}", render_range, (self.vct, self.args, a, b, executor.threads_per_task))
                  for a, b in todo]
         by_key = {t[0]: t[2][2:4] for t in tasks}

@@ -11,6 +11,7 @@ import subprocess
 import sys
 import tarfile
 import tempfile
+import uuid
 from pathlib import Path
 
 from .errors import VctInputError
@@ -143,6 +144,7 @@ def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progres
     for j in jobs:  # bad scenes, settings and sweep values fail here, before any task
         run_vct(vct, ["validate"] + j.scene_args + args + [a for s in sweeps for a in ("--sweep", s)]
                 + ["--check-input"])
+    run_id = uuid.uuid4().hex[:8]  # task keys unique to this run (see pathtrace_job.py)
     total = sum(1 + len(j.rows()) for j in jobs)
     bar = Progress("vct-cluster sweep", total, total, progress_enabled)
     tasks = []
@@ -155,8 +157,8 @@ def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progres
             if os.path.exists(j.row_file(i, r)):
                 bar.task_done(1, reused=True)
                 continue
-            k = f"vct-row-{idx}-{i}-{r}-{os.getpid()}"
-            by_key[k] = (j, i, r)
+            k = f"vct-row-{idx}-{i}-{r}-{run_id}"
+            by_key[k] = ("row", j, (i, r))
             out_tasks.append((k, sweep_row, (vct, j.scene_args, args, key, value, blob, executor.threads_per_task)))
         return out_tasks
 
@@ -167,18 +169,17 @@ def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progres
             tasks += row_tasks(j, idx)
         else:
             j.reset()
-            k = f"vct-base-{idx}-{os.getpid()}"
-            by_key[k] = (j, idx)
+            k = f"vct-base-{idx}-{run_id}"
+            by_key[k] = ("base", j, idx)
             tasks.append((k, validate_base, (vct, j.scene_args, args, executor.threads_per_task)))
 
     def done(key, result):
-        entry = by_key[key]
+        kind, j, where = by_key[key]
         bar.task_done(1)
-        if len(entry) == 2:
-            entry[0].store_base(result)
-            return row_tasks(entry[0], entry[1])
-        j, i, r = entry
-        write_json_atomically(j.row_file(i, r), result)
+        if kind == "base":  # its rows can start now
+            j.store_base(result)
+            return row_tasks(j, where)
+        write_json_atomically(j.row_file(*where), result)
         return []
 
     executor.run(tasks, done)
