@@ -251,12 +251,8 @@ int run(const ValidateOptions& o) {
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets + comparison + bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 4 + (o.no_report ? 0 : 1));
-  for (const auto& sw : o.sweeps) {  // bad specs and values (GL's refusals too) fail before any rendering
-    const auto [key, values] = parse_sweep(sw);
-    for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
-    progress.add_phases(int(values.size()));
-  }
-  check_gl_backend_accepts(scene, s, o.gl);  // a refused GL frame leaves no run directory
+  check_sweeps(scene, s, o);  // a refused GL frame or sweep value leaves no run directory
+  for (const auto& sw : o.sweeps) progress.add_phases(int(parse_sweep(sw).second.size()));
   RunDir run(out, RunRole::Run);  // locked; INCOMPLETE until finish()
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source},

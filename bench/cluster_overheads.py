@@ -11,6 +11,7 @@ ratios; run it on an otherwise idle machine (it prints the load average it saw).
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -23,6 +24,13 @@ sys.path.insert(0, str(ROOT / "cluster"))
 from vct_cluster.executors import DaskExecutor, SerialExecutor  # noqa: E402
 from vct_cluster.pathtrace_job import PathtraceJob  # noqa: E402
 from vct_cluster.vct_process import find_vct  # noqa: E402
+
+
+def cpu_seconds():
+    """CPU time of this process and of every child waited for (vct runs, LocalCluster workers
+    and their vct runs once the cluster is closed): robust where wall time is not on a busy machine."""
+    s, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return s.ru_utime + s.ru_stime + c.ru_utime + c.ru_stime
 
 
 def timed(fn):
@@ -58,21 +66,31 @@ def main():
     size = ["--width", str(a.size), "--height", str(a.size)]
     load0 = os.getloadavg()[0]
     with tempfile.TemporaryDirectory(prefix="vct-cluster-bench-") as tmp:
+        cpu0 = cpu_seconds()
         one, _ = timed(lambda: subprocess.run([vct, "pathtrace", *size, "--spp", str(a.spp), "--quiet", "--out",
                                                f"{tmp}/one"], check=True, capture_output=True))
+        cpu1 = cpu_seconds()
         # A task's fixed cost: process start, scene load, BVH, writing its file (an 8x8 image, 1 spp).
         fixed, _ = timed(lambda: subprocess.run([vct, "pathtrace", "--width", "8", "--height", "8", "--spp", "1",
                                                  "--sample-range", "0:1",
                                                  "--partial", f"{tmp}/fixed.ptpart", "--quiet"],
                                                 check=True, capture_output=True))
         args = size + ["--spp", str(a.spp)]
+        cpu_s0 = cpu_seconds()
         serial, r_serial = timed(lambda: PathtraceJob(vct, args, a.spp, a.task_spp, f"{tmp}/none").run(
             SerialExecutor(), progress_enabled=False))
+        cpu2 = cpu_seconds()
         start_cluster, ex = timed(lambda: DaskExecutor(f"local:{a.workers}"))
         try:
             dask_t, r_dask = timed(lambda: PathtraceJob(vct, args, a.spp, a.task_spp, f"{tmp}/dask").run(
                 ex, progress_enabled=False))
-            part_bytes = r_dask["bytes"] // r_dask["tasks"]
+        finally:
+            ex.close()
+        time.sleep(1.0)  # the workers' exit is waited for asynchronously
+        cpu3 = cpu_seconds()
+        part_bytes = r_dask["bytes"] // r_dask["tasks"]
+        ex = DaskExecutor(f"local:{a.workers}")  # the micro costs on a cluster of their own
+        try:
             empty_task, fetch = dask_costs(ex, part_bytes)
         finally:
             ex.close()
@@ -87,6 +105,9 @@ def main():
         "ratio_serial_tasks_vs_one_process": round(serial / one, 3),
         "ratio_dask_vs_one_process": round(dask_t / one, 3),
         "ratio_dask_with_cluster_start_vs_one_process": round((dask_t + start_cluster) / one, 3),
+        "cpu_one_process_s": round(cpu1 - cpu0, 2),
+        "cpu_ratio_serial_tasks_vs_one_process": round((cpu2 - cpu_s0) / (cpu1 - cpu0), 3),
+        "cpu_ratio_dask_vs_one_process": round((cpu3 - cpu2) / (cpu1 - cpu0), 3),
         "fixed_cost_per_task_s": round(fixed, 3), "merge_s": round(r_dask["merge_s"], 3),
         "dask_empty_task_round_trip_s": round(empty_task, 4), "partial_bytes": part_bytes,
         "dask_fetch_one_partial_s": round(fetch, 4), "dask_equals_serial_bytes": same}, indent=1))
