@@ -101,6 +101,7 @@ class PathtraceJob:
         for a, b in self.ranges:
             if (a, b) not in todo:
                 bar.task_done((b - a) * pixels, reused=True)
+        bar.show()
         # Keys unique to this run: a scheduler must not hand back a result it still holds from an
         # earlier job (another --out may want the task rendered again).
         tag = f"{self.key['scene_hash']:x}-{self.key['settings_hash']:x}-{uuid.uuid4().hex[:8]}"

@@ -4,8 +4,9 @@ import time
 
 
 class Progress:
-    def __init__(self, label, total_tasks, total_samples, enabled=None):
+    def __init__(self, label, total_tasks, total_samples, enabled=None, unit="samples"):
         self.label = label
+        self.unit = unit
         self.total_tasks = total_tasks
         self.total_samples = total_samples
         self.done_tasks = 0
@@ -28,7 +29,7 @@ class Progress:
         left = self.total_samples - self.done_samples
         eta = f"{left / rate:.0f} s" if rate > 0 else "?"
         return (f"{self.label}: tasks {self.done_tasks}/{self.total_tasks}, "
-                f"{rate:.3g} samples/s, ETA {eta}")
+                f"{rate:.3g} {self.unit}/s, ETA {eta}")
 
     def show(self):
         if self.enabled:

@@ -146,7 +146,7 @@ def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progres
                 + ["--check-input"])
     run_id = uuid.uuid4().hex[:8]  # task keys unique to this run (see pathtrace_job.py)
     total = sum(1 + len(j.rows()) for j in jobs)
-    bar = Progress("vct-cluster sweep", total, total, progress_enabled)
+    bar = Progress("vct-cluster sweep", total, total, progress_enabled, unit="tasks")
     tasks = []
     by_key = {}
 

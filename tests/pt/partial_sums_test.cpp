@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "pt/pathtrace_run.h"
+#include "run_dir_fixture.h"
 #include "test_scenes.h"
 
 namespace vct::pt {
@@ -19,25 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("vct_partial_test_" + name)) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& f) const { return (path / f).string(); }
-};
-
-Settings settings_with(int spp, uint32_t seed = 1) {
-  Settings s;
-  s.pt.width = 20;
-  s.pt.height = 16;
-  s.pt.spp = spp;
-  s.pt.seed = seed;
-  s.pt.max_depth = 5;
-  return s;
-}
+using test::settings_with;
+using test::TempDir;
 
 PartialSums range(const Scene& scene, const Settings& s, uint32_t a, uint32_t b, const TempDir& d) {
   return run_sample_range(scene, s, a, b, d.file(std::to_string(a) + "_" + std::to_string(b) + ".ptpart"), false);
