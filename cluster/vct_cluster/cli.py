@@ -101,6 +101,13 @@ def _serve(role, argv):
     os.execv(sys.executable, [sys.executable, "-m", module] + list(argv))
 
 
+def _one_line(e):
+    first = (str(e).strip().splitlines() or [""])[0].split(". ")[0].rstrip(".")
+    if "deserializ" in first:  # a scheduler or worker that cannot import this package
+        first += " (start them with `vct-cluster scheduler` / `vct-cluster worker`, docs/cluster.md)"
+    return f"{type(e).__name__}: {first}"
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv and argv[0] in ("scheduler", "worker"):
@@ -121,8 +128,7 @@ def main(argv=None):
         sys.stderr.write("vct-cluster: interrupted; finished tasks are kept, rerun the command to go on\n")
         return 1
     except Exception as e:  # a Dask or environment failure: one line, no traceback
-        first = (str(e).strip().splitlines() or [""])[0]
-        sys.stderr.write(f"vct-cluster: {type(e).__name__}: {first}; finished tasks are kept, rerun to go on\n")
+        sys.stderr.write(f"vct-cluster: {_one_line(e)}; finished tasks are kept, rerun to go on\n")
         return 1
     finally:
         if executor is not None:
