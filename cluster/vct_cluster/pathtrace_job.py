@@ -98,9 +98,8 @@ class PathtraceJob:
         todo = [(a, b) for a, b in self.ranges if not self._reusable(a, b)]
         reused = len(self.ranges) - len(todo)
         bar = Progress("vct-cluster pathtrace", len(self.ranges), self.spp * pixels, progress_enabled)
-        for a, b in self.ranges:
-            if (a, b) not in todo:
-                bar.task_done((b - a) * pixels, reused=True)
+        for a, b in set(self.ranges) - set(todo):
+            bar.task_done((b - a) * pixels, reused=True)
         bar.show()
         # Keys unique to this run: a scheduler must not hand back a result it still holds from an
         # earlier job (another --out may want the task rendered again).

@@ -1,8 +1,8 @@
 """vct-cluster on a LocalCluster of 2 worker processes (docs/cluster.md): the distributed path
 tracer's bytes equal the one-machine run's, also with a worker killed mid-task or the client
 killed and rerun; bad input fails with its one line; a sweep of 2 scenes x 2 grids gathers the
-table of the single-machine sweeps. 32x32 images, few spp: the whole file runs in well under 60 s
-on 2 busy cores."""
+table of the single-machine sweeps. 32x32 images, few spp: ~25 CPU-seconds in all (63-109 s wall
+measured at load average 11-17 on 2 cores; a LocalCluster start is ~3-7 s of it)."""
 import json
 import os
 import signal
