@@ -7,10 +7,10 @@ import time
 from pathlib import Path
 
 from .errors import VctInputError, VctTaskError
-from .executors import make_executor
+from .executors import check_scheduler_spec, make_executor
 from .files import write_json_atomically
 from .pathtrace_job import PathtraceJob
-from .sweep_job import run_sweep_job
+from .sweep_job import check_sweep_inputs, run_sweep_job
 from .vct_process import find_vct
 
 
@@ -69,11 +69,12 @@ def _vct_args(a):
     return args
 
 
-def _pathtrace(a, vct, executor):
+def _pathtrace(a, vct, start_executor):
     if a.spp is None or a.spp < 1 or a.task_spp < 1:
         raise VctInputError("pathtrace: --spp N and --task-spp K must be at least 1")
     scene = [os.path.abspath(a.scene)] if a.scene else []
-    job = PathtraceJob(vct, scene + _vct_args(a), a.spp, a.task_spp, a.out)
+    job = PathtraceJob(vct, scene + _vct_args(a), a.spp, a.task_spp, a.out)  # checks the input
+    executor = start_executor()
     start = time.monotonic()
     r = job.run(executor, False if a.quiet else None)
     r.update(wall_s=time.monotonic() - start, scheduler=a.scheduler, workers=executor.workers,
@@ -85,7 +86,9 @@ def _pathtrace(a, vct, executor):
     return 0
 
 
-def _sweep(a, vct, executor):
+def _sweep(a, vct, start_executor):
+    check_sweep_inputs(vct, a.scenes, _vct_args(a), a.sweep)
+    executor = start_executor()
     code = run_sweep_job(vct, a.scenes, _vct_args(a), a.sweep, a.out, executor, report=not a.no_report,
                          progress_enabled=False if a.quiet else None)
     print(f"vct-cluster sweep: {len(a.scenes)} scene(s) x {', '.join(a.sweep)} -> {a.out}")
@@ -113,11 +116,16 @@ def main(argv=None):
     if argv and argv[0] in ("scheduler", "worker"):
         _serve(argv[0], argv[1:])
     a = _parser().parse_args(argv)
-    executor = None
+    started = []
+
+    def start_executor():  # after the input is checked: a LocalCluster takes seconds to start
+        started.append(make_executor(a.scheduler))
+        return started[-1]
+
     try:
+        check_scheduler_spec(a.scheduler)
         vct = find_vct(a.vct)
-        executor = make_executor(a.scheduler)
-        return (_pathtrace if a.command == "pathtrace" else _sweep)(a, vct, executor)
+        return (_pathtrace if a.command == "pathtrace" else _sweep)(a, vct, start_executor)
     except VctInputError as e:
         sys.stderr.write(f"vct-cluster: {e}\n")
         return 2
@@ -131,5 +139,5 @@ def main(argv=None):
         sys.stderr.write(f"vct-cluster: {_one_line(e)}; finished tasks are kept, rerun to go on\n")
         return 1
     finally:
-        if executor is not None:
+        for executor in started:
             executor.close()

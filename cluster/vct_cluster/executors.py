@@ -85,9 +85,13 @@ def _positive_int(text, spec):
     return int(text)
 
 
-def make_executor(spec):
-    if spec == "none":
-        return SerialExecutor()
-    if not spec.startswith(("local:", "tcp://", "tls://")):
+def check_scheduler_spec(spec):
+    if spec != "none" and not spec.startswith(("local:", "tcp://", "tls://")):
         raise VctInputError(f"--scheduler: expected none, local:N or tcp://HOST:PORT, got '{spec}'")
-    return DaskExecutor(spec)
+    if spec.startswith("local:"):
+        _positive_int(spec[len("local:"):], spec)
+
+
+def make_executor(spec):
+    check_scheduler_spec(spec)
+    return SerialExecutor() if spec == "none" else DaskExecutor(spec)

@@ -137,13 +137,18 @@ def make_report(run_dir):
         subprocess.run([sys.executable, str(script), run_dir], env=env, stdout=log, stderr=log, check=False)
 
 
-def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progress_enabled=None):
-    jobs = [SceneSweep(s, out, args, sweeps) for s in scenes]
+def check_sweep_inputs(vct, scenes, args, sweeps):
+    """Bad scenes, settings and sweep values fail here, on the client, before any task."""
+    jobs = [SceneSweep(s, "", args, sweeps) for s in scenes]
     if len({j.dir for j in jobs}) != len(jobs):
         raise VctInputError("sweep: two scenes share a file name (their run directories would collide)")
-    for j in jobs:  # bad scenes, settings and sweep values fail here, before any task
+    for j in jobs:
         run_vct(vct, ["validate"] + j.scene_args + args + [a for s in sweeps for a in ("--sweep", s)]
                 + ["--check-input"])
+
+
+def run_sweep_job(vct, scenes, args, sweeps, out, executor, report=True, progress_enabled=None):
+    jobs = [SceneSweep(s, out, args, sweeps) for s in scenes]
     run_id = uuid.uuid4().hex[:8]  # task keys unique to this run (see pathtrace_job.py)
     total = sum(1 + len(j.rows()) for j in jobs)
     bar = Progress("vct-cluster sweep", total, total, progress_enabled, unit="tasks")
