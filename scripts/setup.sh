@@ -76,6 +76,6 @@ fi
 # vct-cluster (docs/cluster.md): a launcher in .venv/bin for the package in cluster/, run by the
 # venv's Python (Dask is in its requirements) with this build's vct.
 printf '#!/bin/sh\nexport VCT_BIN="${VCT_BIN:-%s}"\nexport PYTHONPATH="%s${PYTHONPATH:+:$PYTHONPATH}"\nexec "%s" -m vct_cluster "$@"\n' \
-  "$PWD/$BUILD_DIR/bin/vct" "$PWD/cluster" "$PWD/.venv/bin/python" > .venv/bin/vct-cluster
+  "$(cd "$BUILD_DIR" && pwd)/bin/vct" "$PWD/cluster" "$PWD/.venv/bin/python" > .venv/bin/vct-cluster
 chmod +x .venv/bin/vct-cluster
 echo "setup: .venv/bin/vct-cluster"
