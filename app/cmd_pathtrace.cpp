@@ -2,6 +2,9 @@
 // pt_indirect_diffuse, pt_indirect_specular (+ _var) as EXR/PNG and run.json. Resumes from the
 // checkpoint in --out when it matches the scene and settings; a higher --spp refines it.
 // Ctrl-C stops after the current pass with a checkpoint (exit 1); rerun the command to resume.
+// Cluster tasks (docs/cluster.md): --sample-range A:B --partial FILE renders samples A..B-1 into a
+// partial-sums file; --merge DIR adds DIR's partials in sample order into the run directory;
+// --job-key prints the hashes those files carry (the client checks reused and returned files).
 #include <csignal>
 #include <cstdio>
 #include <optional>
@@ -27,7 +30,46 @@ struct PtFlags {
   std::optional<int> max_depth;
   std::optional<std::string> light_model;
   bool quiet = false;
+  std::string sample_range;  // "A:B": one cluster task
+  std::string partial;       // its partial-sums file
+  std::string merge;         // directory of partial-sums files to merge
+  bool job_key = false;
 };
+
+std::pair<uint32_t, uint32_t> parse_sample_range(const std::string& text) {
+  const size_t colon = text.find(':');
+  try {
+    if (colon != std::string::npos && text.find_first_not_of("0123456789:") == std::string::npos) {
+      const unsigned long a = std::stoul(text.substr(0, colon)), b = std::stoul(text.substr(colon + 1));
+      if (a < b && b <= 0x7fffffffUL) return {uint32_t(a), uint32_t(b)};
+    }
+  } catch (const std::exception&) {
+  }
+  throw InputError("--sample-range", "expected A:B with 0 <= A < B (sample indices), got '" + text + "'");
+}
+
+int run_cluster_part(const Scene& scene, const Settings& s, const CommonOptions& common, const PtFlags& f) {
+  if (f.job_key) {
+    const pt::CheckpointKey k = pt::checkpoint_key(scene, s);
+    std::printf("{\"scene_hash\": %llu, \"settings_hash\": %llu, \"width\": %d, \"height\": %d}\n",
+                (unsigned long long)k.scene_hash, (unsigned long long)k.settings_hash, s.pt.width, s.pt.height);
+    return kExitOk;
+  }
+  if (!f.sample_range.empty()) {
+    if (f.partial.empty()) throw InputError("--sample-range", "needs --partial FILE for the partial sums");
+    const auto [first, end] = parse_sample_range(f.sample_range);
+    const pt::PartialSums p = pt::run_sample_range(scene, s, first, end, f.partial,
+                                                   !f.quiet && pt::ProgressBar::stderr_is_terminal());
+    std::printf("pathtrace: samples %u..%u, %llu rays -> %s\n", first, end, (unsigned long long)p.rays.total(),
+                f.partial.c_str());
+    return kExitOk;
+  }
+  pt::PathtraceRunOptions o;
+  o.out_dir = common.out.empty() ? default_out_dir("pathtrace", f.scene) : common.out;
+  const pt::PathtraceRunResult r = pt::merge_sample_ranges(scene, s, f.merge, o);
+  std::printf("pathtrace: merged %u spp from %s -> %s\n", r.spp, f.merge.c_str(), o.out_dir.c_str());
+  return kExitOk;
+}
 
 int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
   Settings s = resolve_settings(common);
@@ -35,6 +77,7 @@ int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
   if (f.light_model) s.pt.light_model = *f.light_model == "seed" ? LightModel::Seed : LightModel::Gltf;
   validate_settings(s);
   const Scene scene = load_scene_and_warn(f.scene, common.scene_load);
+  if (f.job_key || !f.sample_range.empty() || !f.merge.empty()) return run_cluster_part(scene, s, common, f);
 
   pt::PathtraceRunOptions o;
   o.out_dir = common.out.empty() ? default_out_dir("pathtrace", f.scene) : common.out;
@@ -85,6 +128,15 @@ void register_pathtrace(CLI::App& app, int& exit_code) {
   cmd->add_option("--light-model", flags->light_model, "Spot falloff: gltf (KHR_lights_punctual) or seed")
       ->check(CLI::IsMember({"gltf", "seed"}));
   cmd->add_flag("--quiet", flags->quiet, "No progress bar even on a terminal");
+  auto* range = cmd->add_option("--sample-range", flags->sample_range,
+                                "A:B: render samples A..B-1 only into --partial FILE (a cluster task, docs/cluster.md)");
+  cmd->add_option("--partial", flags->partial, "Partial-sums file that --sample-range writes")->needs(range);
+  auto* merge = cmd->add_option("--merge", flags->merge,
+                                "Merge DIR/*.ptpart (samples 0..spp-1) in sample order into --out, as one run writes it")
+                    ->excludes(range);
+  cmd->add_flag("--job-key", flags->job_key, "Print the scene and settings hashes of partial-sums files (JSON)")
+      ->excludes(range)
+      ->excludes(merge);
   cmd->callback([common, flags, &exit_code]() { exit_code = run_pathtrace_command(*common, *flags); });
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "commands.h"
 #include "attribution_outputs.h"
@@ -46,6 +47,11 @@ struct ValidateOptions {
   // (docs/performance.md, "Where validate's time goes").
   std::string flip = "none";
   GlFlags gl;
+  // Sweep rows as cluster tasks (docs/cluster.md): the --sweep rows only, against the path tracer
+  // and GL availability of an earlier validate run of the same scene and settings.
+  std::string pt_from;     // --pt-from RUN_DIR
+  std::string sweep_rows;  // --sweep-rows FILE.json
+  bool check_input = false;  // --check-input: scene, settings and sweep values only
 };
 
 // True when a --set names `key` (with or without its "vct." prefix).
@@ -138,6 +144,69 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
   return {{"key", key}, {"values", values}, {"rows", rows}};
 }
 
+// The base run's path tracer AOVs (pt/<aov>.exr, float32: the same floats run_sweep reads in
+// memory) and whether its GL frame ran, so a sweep row computed later is the row validate makes.
+PtRun load_base_pt(const std::string& base_dir, bool& gl_available) {
+  namespace fs = std::filesystem;
+  const std::string json_path = (fs::path(base_dir) / "run.json").string();
+  std::ifstream in(json_path);
+  if (!in) throw InputError(json_path, "cannot open: --pt-from needs a validate run directory");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(json_path, std::string("not a validate run.json: ") + e.what());
+  }
+  if (j.value("command", "") != "validate" || !j.contains("backends"))
+    throw InputError(json_path, "not the run.json of a finished vct validate");
+  gl_available = j["backends"].value("gl", nlohmann::json::object()).value("status", "") == "ok";
+  PtRun pt;
+  pt.status = j["backends"].value("pt", nlohmann::json::object()).value("status", "missing");
+  pt.spp = j["backends"].value("pt", nlohmann::json::object()).value("spp", 0);
+  if (pt.status != "ok") return pt;
+  for (int a = 0; a < pt::kAovCount; ++a)
+    for (const std::string suffix : {"", "_var"}) {
+      const std::string name = pt::kAovNames[a] + suffix;
+      const std::string f = (fs::path(base_dir) / "pt" / (name + ".exr")).string();
+      if (!fs::exists(f)) throw InputError(f, "missing: --pt-from needs the path tracer images of a validate run");
+      pt.aovs[name] = read_image(f);
+    }
+  return pt;
+}
+
+// Bad specs and values (GL's refusals too) fail before any rendering.
+void check_sweeps(const Scene& scene, const Settings& s, const ValidateOptions& o) {
+  for (const auto& sw : o.sweeps) {
+    const auto [key, values] = parse_sweep(sw);
+    for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
+  }
+  check_gl_backend_accepts(scene, s, o.gl);
+}
+
+// --check-input: what validate would refuse, refused without rendering (a cluster client asks
+// this before it sends any task).
+int check_input_only(const ValidateOptions& o) {
+  const Settings s = resolve(o.common);
+  check_sweeps(load_scene_and_warn(o.scene, o.common.scene_load), s, o);
+  return kExitOk;
+}
+
+// --sweep-rows: the rows of every --sweep, written as validate's run.json "sweeps" array.
+int run_sweep_rows(const ValidateOptions& o) {
+  if (o.pt_from.empty()) throw InputError("--sweep-rows", "needs --pt-from RUN_DIR (the base validate run)");
+  if (o.sweeps.empty()) throw InputError("--sweep-rows", "needs at least one --sweep KEY=V1,...");
+  const Settings s = resolve(o.common);
+  const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);
+  check_sweeps(scene, s, o);
+  bool gl_available = false;
+  const PtRun pt = load_base_pt(o.pt_from, gl_available);
+  PhaseProgress progress(false, "validate", 0);
+  nlohmann::json sweeps = nlohmann::json::array();
+  for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl_available, o.gl, progress));
+  write_text_atomically(o.sweep_rows, sweeps.dump(1) + "\n");
+  return kExitOk;
+}
+
 // The error budget on the reference's own frame (docs/attribution.md): attribution.json and its
 // pictures in the run directory, named in run.json for the report. Informational: a budget that
 // does not add up is printed, it does not change validate's exit code.
@@ -168,18 +237,16 @@ void write_validate_attribution(RunDir& run, const Scene& scene, const Settings&
 }
 
 int run(const ValidateOptions& o) {
+  if (o.check_input) return check_input_only(o);
+  if (!o.sweep_rows.empty()) return run_sweep_rows(o);
   PhaseTimes phases;
   const Settings s = resolve(o.common);
   const Scene scene = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load); });
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets + comparison + bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 4 + (o.no_report ? 0 : 1));
-  for (const auto& sw : o.sweeps) {  // bad specs and values (GL's refusals too) fail before any rendering
-    const auto [key, values] = parse_sweep(sw);
-    for (const auto& v : values) check_gl_backend_accepts(scene, apply_sweep_value(s, key, v), o.gl);
-    progress.add_phases(int(values.size()));
-  }
-  check_gl_backend_accepts(scene, s, o.gl);  // a refused GL frame leaves no run directory
+  check_sweeps(scene, s, o);  // a refused GL frame or sweep value leaves no run directory
+  for (const auto& sw : o.sweeps) progress.add_phases(int(parse_sweep(sw).second.size()));
   RunDir run(out, RunRole::Run);  // locked; INCOMPLETE until finish()
   run.json()["command"] = "validate";
   run.json()["scene"] = {{"source", scene.source},
@@ -304,6 +371,10 @@ void register_validate(CLI::App& app, int& exit_code) {
                   "FLIP maps in the report (opt-in; no verdict uses FLIP): none (default), full (the full image of "
                   "each backend) or all (every component; HDR-FLIP costs seconds per map)")
       ->check(CLI::IsMember({"full", "all", "none"}));
+  cmd->add_option("--pt-from", o->pt_from, "With --sweep-rows: the validate run whose path tracer the rows use");
+  cmd->add_option("--sweep-rows", o->sweep_rows,
+                  "Compute only the --sweep rows into FILE.json (a cluster task, docs/cluster.md)");
+  cmd->add_flag("--check-input", o->check_input, "Only check the scene, settings and --sweep values (exit 0 or 2)");
   cmd->callback([o, &exit_code]() { exit_code = run(*o); });
 }
 

@@ -72,3 +72,13 @@ if [ -d "$BUILD_DIR/python/vct" ]; then
   echo "$PWD/$BUILD_DIR/python" > "$site/vct_oracle.pth"
   echo "setup: import vct -> $BUILD_DIR/python/vct"
 fi
+
+# vct-cluster (docs/cluster.md): a launcher in .venv/bin for the package in cluster/, run by the
+# venv's Python (Dask is in its requirements) with this build's vct; like `import vct`, only for
+# the build that has the Python module (not a sanitizer build).
+if [ -d "$BUILD_DIR/python/vct" ]; then
+  printf '#!/bin/sh\nexport VCT_BIN="${VCT_BIN:-%s}"\nexport PYTHONPATH="%s${PYTHONPATH:+:$PYTHONPATH}"\nexec "%s" -m vct_cluster "$@"\n' \
+    "$(cd "$BUILD_DIR" && pwd)/bin/vct" "$PWD/cluster" "$PWD/.venv/bin/python" > .venv/bin/vct-cluster
+  chmod +x .venv/bin/vct-cluster
+  echo "setup: .venv/bin/vct-cluster"
+fi

@@ -8,7 +8,9 @@
 #include <string>
 
 #include "core/settings.h"
+#include "pt/checkpoint.h"
 #include "pt/integrator.h"
+#include "pt/partial_sums.h"
 #include "scene/scene.h"
 
 namespace vct::pt {
@@ -31,6 +33,20 @@ struct PathtraceRunResult {
   double render_seconds = 0.0;
 };
 
+/// The hashes a checkpoint or partial-sums file of this scene and these settings carries.
+CheckpointKey checkpoint_key(const Scene& scene, const Settings& settings);
+
 PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, const PathtraceRunOptions& opt);
+
+/// One cluster task: samples [first, end) from zero, written to `partial_path` (docs/cluster.md).
+/// The per-pixel sums are bit for bit those samples' share of a one-machine render.
+PartialSums run_sample_range(const Scene& scene, const Settings& settings, uint32_t first, uint32_t end,
+                             const std::string& partial_path, bool progress);
+
+/// Merges every `*.ptpart` file of `partials_dir` in sample order into opt.out_dir as
+/// run_pathtrace writes it (AOVs, variances, checkpoint, run.json); `partials_dir`/tasks.json,
+/// when present, becomes run.json's pathtrace.tasks (the per-task hosts and times).
+PathtraceRunResult merge_sample_ranges(const Scene& scene, const Settings& settings, const std::string& partials_dir,
+                                       const PathtraceRunOptions& opt);
 
 }  // namespace vct::pt

@@ -10,6 +10,7 @@
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "pt/pathtrace_run.h"
+#include "run_dir_fixture.h"
 #include "test_scenes.h"
 
 namespace vct::pt {
@@ -17,24 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("vct_pt_test_" + name)) {
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string str() const { return path.string(); }
-};
-
-Settings settings_with(int spp, uint32_t seed = 1) {
-  Settings s;
-  s.pt.width = 20;
-  s.pt.height = 16;
-  s.pt.spp = spp;
-  s.pt.seed = seed;
-  s.pt.max_depth = 5;
-  return s;
-}
+using test::settings_with;
+using test::TempDir;
 
 PathtraceRunResult run(const Scene& scene, const Settings& s, const std::string& dir,
                        std::function<bool()> stop = nullptr) {
