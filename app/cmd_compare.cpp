@@ -36,6 +36,7 @@ struct CompareArgs {
   std::string scene, config;  // --scene, --config: isolated judgement of cone stages
   double abs = 0.0, rel = 0.0;
   size_t worst = 10;
+  std::vector<int> explain;  // --explain X,Y[,Z]
   SceneLoadOptions scene_load;  // --allow-outside-scene-dir, with --scene
 };
 
@@ -64,9 +65,22 @@ std::unique_ptr<RunDir> open_out_run(const CompareArgs& a) {
   return run;
 }
 
+// --explain: per stage holding that element, the rule that admitted it and its numbers.
+void print_explained(const cmp::Report& rep) {
+  for (const cmp::StageVerdict& v : rep.stages) {
+    const auto e = v.extra.find("explain");
+    if (e == v.extra.end()) continue;
+    std::printf("  %-26s at %s: %s (%s), reference %s, test %s, |d| %.4g, bound %.4g (docs/compare.md \"%s\")\n",
+                v.stage.c_str(), (*e)["at"].dump().c_str(), (*e)["rule"].get<std::string>().c_str(),
+                (*e)["kind"].get<std::string>().c_str(), (*e)["reference"].dump().c_str(), (*e)["test"].dump().c_str(),
+                (*e)["error"].get<double>(), (*e)["bound"].get<double>(), (*e)["derived_in"].get<std::string>().c_str());
+  }
+}
+
 int finish(const cmp::Report& rep, const CompareArgs& a, RunDir* run, const std::string& title,
            const nlohmann::json& fields = nlohmann::json::object()) {
   print_verdicts(rep, title);
+  if (!a.explain.empty()) print_explained(rep);
   if (run) {
     nlohmann::json j = {{"reference", a.a}, {"test", a.b}, {"verdicts", cmp::to_json(rep)}};
     j.update(fields);
@@ -79,8 +93,9 @@ int finish(const cmp::Report& rep, const CompareArgs& a, RunDir* run, const std:
 }
 
 cmp::CompareOptions compare_options(const CompareArgs& a) {
-  return {a.worst, a.out.empty() ? "" : a.out + "/masks", "masks/"};
+  return {a.worst, a.out.empty() ? "" : a.out + "/masks", "masks/", a.explain};
 }
+
 
 bool has_cone_stage(const cmp::Report& rep, bool soft_shadows) {
   for (const cmp::StageVerdict& v : rep.stages)
@@ -160,6 +175,11 @@ void register_compare(CLI::App& app, int& exit_code) {
   cmd->add_option("--abs", a->abs, "Two volumes: absolute bound (default 0 = exact)");
   cmd->add_option("--rel", a->rel, "Two volumes: relative bound");
   cmd->add_option("--worst", a->worst, "Offenders listed per stage")->check(CLI::Range(1, 1000));
+  cmd->add_option("--explain", a->explain,
+                  "X,Y (images) or X,Y,Z (volumes): print, per stage, the rule that admitted that element and its numbers")
+      ->delimiter(',')
+      ->expected(2, 3)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--scene", a->scene,
                   "Stage sets: judge B's cone stages on B's own inputs, re-traced in this glTF scene "
                   "(or builtin:cornell_box), as vct validate does");

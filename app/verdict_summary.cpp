@@ -1,5 +1,6 @@
 #include "verdict_summary.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -23,6 +24,18 @@ std::string family(const std::string& stage) {
   if (!ref || ref->row->index != StageIndex::MipLevel) return stage;
   return std::string(ref->row->name) + ".*";
 }
+
+// The rules that admitted elements beyond their bound (and how many none admitted), most first.
+void print_admitted(const cmp::StageVerdict& s) {
+  std::vector<std::pair<size_t, cmp::Rule>> counts;
+  for (const cmp::AdmissionRow& row : cmp::admission_table())
+    if (!cmp::within_bound_rule(row.rule) && s.admitted[row.rule] > 0) counts.push_back({s.admitted[row.rule], row.rule});
+  if (counts.empty()) return;
+  std::stable_sort(counts.begin(), counts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string text;
+  for (const auto& [n, rule] : counts) text += (text.empty() ? "" : ", ") + cmp::rule_name(rule) + " " + std::to_string(n);
+  std::printf("       admitted by: %s\n", text.c_str());
+}
 }  // namespace
 
 void print_verdicts(const cmp::Report& report, const std::string& title) {
@@ -45,6 +58,7 @@ void print_verdicts(const cmp::Report& report, const std::string& title) {
                        : s.verdict == cmp::Verdict::Pass ? "pass" : "  - ";
     std::printf("  %-4s %-26s %s\n", mark, (f == s.stage ? f : f + " (" + s.stage.substr(s.stage.rfind('.') + 1) + ")").c_str(),
                 s.note.substr(0, 90).c_str());
+    if (s.verdict == cmp::Verdict::Warn || s.verdict == cmp::Verdict::Fail) print_admitted(s);
     if (s.verdict == cmp::Verdict::Fail && !s.worst.empty()) {
       const cmp::Offender& o = s.worst.front();
       std::printf("       worst at (%d,%d%s): ref", o.at[0], o.at[1], o.at[2] >= 0 ? (", " + std::to_string(o.at[2])).c_str() : "");

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "compare/element_loop.h"
+#include "compare/explain_element.h"
 #include "compare/image_edges.h"
 #include "compare/rule_masks.h"
 #include "compare/stage_compare.h"
@@ -193,7 +194,9 @@ Offender pixel_offender(const Image& ref, const Image& test, int x, int y, const
 }
 
 // Every pixel: its rule, the statistics, the offenders.
-std::vector<Rule> admit_pixels(const ImageJudge& j, StageVerdict& v, std::vector<Offender>& offenders) {
+// `explained`: options naming a pixel whose worst channel goes to `explained_worst`.
+std::vector<Rule> admit_pixels(const ImageJudge& j, StageVerdict& v, std::vector<Offender>& offenders,
+                               const CompareOptions* explained, WorstChannel& explained_worst) {
   std::vector<Rule> rules(size_t(j.ref.width) * size_t(j.ref.height), Rule::WithinBound);
   const Image& r = j.judged();
   double se = 0;
@@ -206,6 +209,7 @@ std::vector<Rule> admit_pixels(const ImageJudge& j, StageVerdict& v, std::vector
         return ChannelDistance{d, j.pixel_bound(x, y, c), d};
       });
       ++v.checked;
+      if (explained && explains(*explained, x, y)) explained_worst = w;
       if (w.within()) continue;
       ++v.out_of_bound;
       rules[size_t(y) * size_t(j.ref.width) + size_t(x)] = admit_beyond_bound(j, x, y);
@@ -318,13 +322,20 @@ StageVerdict judge_image_stage(const std::string& stage, const Image& ref, const
   v.model = j.model.name;
   v.bound = bound_words(j);
   std::vector<Offender> offenders;
-  std::vector<Rule> rules = admit_pixels(j, v, offenders);
+  WorstChannel explained;
+  std::vector<Rule> rules = admit_pixels(j, v, offenders, &opt, explained);
   size_t inadmissible = 0;
   for (Rule r : rules) inadmissible += r == Rule::Beyond;
   ShareOutcome shares = apply_shares(j, rules);
   if (shares.upstream) inadmissible = 0;
   decide(v, rules, shares);
   write_note(j, v, shares, inadmissible);
+  if (opt.explain.size() == 2 && opt.explain[0] >= 0 && opt.explain[1] >= 0 && opt.explain[0] < ref.width &&
+      opt.explain[1] < ref.height) {
+    const Offender o = pixel_offender(j.judged(), test, opt.explain[0], opt.explain[1], explained);
+    record_explained(v, rules[size_t(opt.explain[1]) * size_t(ref.width) + size_t(opt.explain[0])], o.at, o.reference,
+                     o.test, explained);
+  }
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   write_image_rule_mask(opt, v, ref, rules);

@@ -147,6 +147,7 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
              {"fill_differences", fill_differences}};
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
+  explain_voxel(v, ref, test, explained_voxel(opt, ref), rules, WorstChannel{});
   write_volume_rule_mask(opt, v, ref.nx, ref.ny, ref.nz, rules);
   return v;
 }

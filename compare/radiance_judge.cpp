@@ -152,6 +152,8 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   taint.assign(ro.size(), 0);
   std::vector<Rule> rules(ro.size(), Rule::RadianceWithinBound);
   std::vector<Offender> offenders;
+  const size_t explained_index = explained_voxel(opt, in.ref);
+  WorstChannel explained;
   double se = 0;
   for (size_t i = 0; i < ro.size(); ++i) {
     if (ro[i] != to[i]) continue;  // occupied on one side only: the occupancy stage judges it
@@ -166,6 +168,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     const bool exact_voxel = in.exact && !count_tie && channel0(in.exact, i) > 0.0f;
     n.exact_checked += exact_voxel;
     const WorstChannel w = radiance_worst(in, i, exact_voxel, se, v.max_abs);
+    if (i == explained_index) explained = w;
     ++v.checked;
     if (count_tie) ++n.count_ties, taint[i] = 1;
     if (w.within()) continue;
@@ -180,6 +183,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   radiance_note(v, in, n, ctx.shading_tie_fraction);
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
+  explain_voxel(v, in.ref, in.test, explained_index, rules, explained);
   write_volume_rule_mask(opt, v, in.ref.nx, in.ref.ny, in.ref.nz, rules);
   return v;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "compare/judge_context.h"
 #include "compare/stage_set.h"
@@ -16,6 +17,9 @@ struct CompareOptions {
   size_t worst_n = 10;
   std::string mask_dir;     // absolute/relative directory for mask PNGs ("" = no masks)
   std::string mask_prefix;  // how masks are named in the verdicts (relative to the run dir)
+  // x, y (images) or x, y, z (volumes): the element whose admission each verdict explains in
+  // extra["explain"] (compare/explain_element.h); empty = none.
+  std::vector<int> explain;
 };
 
 /// The images an image stage's rules read besides its two values (each may be null).

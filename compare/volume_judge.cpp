@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "compare/element_loop.h"
+#include "compare/explain_element.h"
 #include "compare/rule_masks.h"
 #include "compare/volume_judges.h"
 
@@ -36,6 +37,18 @@ Offender voxel_offender(const Volume& ref, const Volume& test, size_t i, float e
   return o;
 }
 
+size_t explained_voxel(const CompareOptions& opt, const Volume& v) {
+  if (opt.explain.size() != 3 || !v.contains(opt.explain[0], opt.explain[1], opt.explain[2])) return size_t(-1);
+  return (size_t(opt.explain[2]) * size_t(v.ny) + size_t(opt.explain[1])) * size_t(v.nx) + size_t(opt.explain[0]);
+}
+
+void explain_voxel(StageVerdict& v, const Volume& ref, const Volume& test, size_t i, const std::vector<Rule>& rules,
+                   const WorstChannel& worst) {
+  if (i >= rules.size()) return;
+  const Offender o = voxel_offender(ref, test, i, worst.error, worst.bound);
+  record_explained(v, rules[i], o.at, o.reference, o.test, worst);
+}
+
 StageVerdict compare_volume_plain(const std::string& stage, const Volume& ref, const Volume& test, double abs, double rel,
                                   const CompareOptions& opt) {
   return compare_volume_masked(stage, ref, test, abs, rel, opt, nullptr);
@@ -57,6 +70,8 @@ StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, 
   }
   std::vector<Rule> rules(ref.voxel_count(), Rule::VolumeWithinBound);
   std::vector<Offender> offenders;
+  const size_t explained_index = explained_voxel(opt, ref);
+  WorstChannel explained;
   const int ch = std::min(ref.channels, test.channels);
   double se = 0;
   for (size_t i = 0; i < ref.voxel_count(); ++i) {
@@ -69,6 +84,7 @@ StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, 
       return ChannelDistance{d, abs + rel * std::abs(r) + slack, d};
     });
     ++v.checked;
+    if (explained_index == i) explained = w;
     if (w.within()) continue;
     ++v.out_of_bound;
     const bool tied = tolerated && i < tolerated->size() && (*tolerated)[i];
@@ -84,6 +100,7 @@ StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, 
   if (v.allowed) v.note += " (" + std::to_string(v.allowed) + " above voxels that tie upstream)";
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
+  explain_voxel(v, ref, test, explained_index, rules, explained);
   write_volume_rule_mask(opt, v, ref.nx, ref.ny, ref.nz, rules);
   return v;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/element_loop.h"
 #include "compare/judge_context.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
@@ -26,6 +27,11 @@ bool same_size(const Volume& a, const Volume& b);
 std::vector<uint8_t> occupancy(const Volume& v);
 void xyz_of(const Volume& v, size_t i, int& x, int& y, int& z);
 Offender voxel_offender(const Volume& ref, const Volume& test, size_t i, float err, float bound);
+/// The linear index of the voxel opt.explain names, or size_t(-1) (none, or not in `v`).
+size_t explained_voxel(const CompareOptions& opt, const Volume& v);
+/// extra["explain"] for voxel i (nothing when i is size_t(-1)).
+void explain_voxel(StageVerdict& v, const Volume& ref, const Volume& test, size_t i, const std::vector<Rule>& rules,
+                   const WorstChannel& worst);
 
 /// Element-wise abs + rel (+ per-voxel `extra_abs`) bound; voxels in `tolerated` (upstream ties)
 /// are admitted at any value.

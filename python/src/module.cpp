@@ -213,7 +213,7 @@ void bind_functions(nb::module_& m) {
     return r;
   });
   m.def("_compare", [](nb::handle reference_h, nb::handle test_h, size_t worst_n, const std::string& mask_dir,
-                       const Scene* scene, const std::string& settings) {
+                       const Scene* scene, const std::string& settings, const std::vector<int>& explain) {
     const auto& reference = nb::cast<const cmp::StageSet&>(reference_h);
     const auto& test = nb::cast<const cmp::StageSet&>(test_h);
     std::optional<FrameResult> rebuilt;
@@ -229,10 +229,10 @@ void bind_functions(nb::module_& m) {
     {
       nb::gil_scoped_release unlocked;
       const cmp::JudgeInputs in = scene ? cmp::JudgeInputs{scene, frame, &vs} : cmp::JudgeInputs{};
-      rep = cmp::judge(reference, test, in, {worst_n, mask_dir, mask_dir.empty() ? "" : mask_dir + "/"});
+      rep = cmp::judge(reference, test, in, {worst_n, mask_dir, mask_dir.empty() ? "" : mask_dir + "/", explain});
     }
     return cmp::to_json(rep).dump();
-  }, "reference"_a, "test"_a, "worst_n"_a, "mask_dir"_a, "scene"_a.none(), "settings"_a);
+  }, "reference"_a, "test"_a, "worst_n"_a, "mask_dir"_a, "scene"_a.none(), "settings"_a, "explain"_a);
   m.def("_bias", [](const cmp::StageSet& vct, const PathTraceResult& pt, double k) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& b : cmp::measure_bias(vct, pt.aovs, {k, "", ""})) j.push_back(cmp::to_json(b));

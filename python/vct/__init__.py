@@ -78,15 +78,17 @@ def path_trace(scene, settings=None):
     return _vct._path_trace(scene, _text(settings))
 
 
-def compare(reference, test, worst_n=10, mask_dir="", scene=None, settings=None):
+def compare(reference, test, worst_n=10, mask_dir="", scene=None, settings=None, explain=None):
     """Stage-by-stage verdicts of `test` against `reference` from the one judge (compare/judge.h),
     as data: {"overall", "first_failing", "stages": [{"stage", "verdict", "model", "bound",
     "admitted_by", "max_abs", "worst": [...], ...}]}. mask_dir: where error-mask PNGs go ("" = none).
     scene: the Scene both were rendered from; then the cone-traced and shading stages are judged on
     the test's own inputs, as `vct validate` does (the same report). settings: what the test ran
-    with (default: the test set's own settings)."""
+    with (default: the test set's own settings). explain: (x, y) or (x, y, z): each stage holding that
+    element says in extra["explain"] which rule admitted it, with both values and the bound."""
     text = "" if settings is None else _text(settings)
-    return _json.loads(_vct._compare(reference, test, int(worst_n), str(mask_dir), scene, text))
+    where = [int(c) for c in explain] if explain is not None else []
+    return _json.loads(_vct._compare(reference, test, int(worst_n), str(mask_dir), scene, text, where))
 
 
 def bias(vct_set, pt, k=3.0):
