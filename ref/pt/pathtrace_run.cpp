@@ -12,6 +12,7 @@
 #include "pt/checkpoint.h"
 #include "pt/path_tracer.h"
 #include "pt/progress.h"
+#include "scene/exposure.h"
 
 namespace vct::pt {
 
@@ -80,6 +81,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
   j["environment"] = environment_info();
   j["scene"] = scene.source;
   j["scene_warnings"] = scene.stats.warnings;
+  j["exposure"] = exposure_json(scene.exposure);
   const double rays = double(result.rays.total());
   j["pathtrace"] = {{"spp", result.spp},
                     {"requested_spp", ps.spp},
