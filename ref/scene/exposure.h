@@ -1,5 +1,5 @@
-// Camera exposure as a pre-exposure of the scene's sources (docs/scenes.md, "Exposure"): every
-// punctual light's intensity, every material's emission and every particle colour is multiplied by
+// Camera exposure as a pre-exposure of the scene's sources (docs/scenes.md, "Light units and
+// exposure"): every punctual light's intensity, every material's emission and every particle colour is multiplied by
 // one scale before any engine sees the scene. Light transport is linear in its sources, so each
 // stage of ref, gl and pt is the unexposed stage times the scale: the GL/ref judge and the path
 // tracer's bias compare like with like, and HDR formats (RGBA16F voxels, half images) hold a
