@@ -68,7 +68,7 @@ int run_attribute(const AttributeOptions& o) {
     const auto [key, values] = parse_sweep(spec);
     for (const std::string& v : values) attr::check_attributable(apply_sweep_value(s, key, v).vct);
   }
-  const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);
+  const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load, s.vct);
   RunDir run(o.common.out.empty() ? default_out_dir("attribute", o.scene) : o.common.out, RunRole::Run);
   Stopwatch sw;
   attr::AttributionOptions opt;

@@ -34,7 +34,7 @@ struct BenchFlags {
 void run(const BenchFlags& f) {
   const Settings settings = resolve_settings(f.common);
   check_memory_budget(settings);
-  const Scene scene = load_scene_and_warn(f.scene, f.common.scene_load);
+  const Scene scene = load_scene_and_warn(f.scene, f.common.scene_load, settings.vct);
   BenchOptions o = f.bench;
   o.gl = !f.no_gl;
   o.pt = !f.no_pt;

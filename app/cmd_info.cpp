@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/settings.h"
 #include "options.h"
+#include "scene/exposure.h"
 #include "scene/gltf_loader.h"
 #include "stages/backend_facts.h"
 
@@ -113,6 +114,8 @@ json summary(const Scene& s) {
                  {"type", c.orthographic ? "orthographic" : "perspective"}};
   if (c.orthographic) j["camera"]["ymag"] = c.ymag;
   else j["camera"]["yfov"] = c.yfov;
+  if (c.aspect_ratio > 0.0f) j["camera"]["aspect_ratio"] = c.aspect_ratio;
+  j["exposure_auto"] = exposure_json(resolve_exposure(s, ExposureMode::Auto, 0.0f));
   j["lights"] = json::array();
   for (const Light& l : s.lights) {
     json lj = {{"name", l.name},
@@ -220,12 +223,18 @@ void print_text(const Scene& s) {
   }
   const Camera& c = s.camera;
   const std::string lens = c.orthographic ? fmt::format("orthographic ymag {:.4g}", c.ymag)
-                                         : fmt::format("yfov {:.4g} deg", deg(c.yfov));
+                                         : fmt::format("yfov {:.4g} deg", deg(c.yfov)) +
+                                               (c.aspect_ratio > 0.0f ? fmt::format(" aspect {:.4g}", c.aspect_ratio) : "");
   fmt::print("camera ({}): position {} forward {} up {} {} near {:.4g} far {:.4g}\n",
              c.from_file ? "from file" : "default framing", v3(c.position), v3(c.forward), v3(c.up), lens, c.znear,
              c.zfar);
   fmt::print("lights: {}\n", s.lights.size());
   for (const Light& l : s.lights) fmt::print("  {}\n", light_line(l));
+  const ExposureApplied auto_exposure = resolve_exposure(s, ExposureMode::Auto, 0.0f);  // docs/scenes.md
+  fmt::print("exposure (auto): meter at the scene's centre {:.4g} lux, {} (scale {:.6g})\n",
+             auto_exposure.key_illuminance,
+             auto_exposure.stops == 0 ? std::string("kept at 1") : fmt::format("{:+d} stops", auto_exposure.stops),
+             auto_exposure.scale);
   fmt::print("particle emitters: {}\n", s.emitters.size());
   for (const ParticleEmitter& e : s.emitters) {
     fmt::print("  '{}': origin {} count {} lifetime {:.3g} s, spawn half-extent {}, velocity {}..{}, "

@@ -16,6 +16,7 @@
 #include "pt/pathtrace_run.h"
 #include "pt/progress.h"
 #include "scene/gltf_loader.h"
+#include "camera_aspect.h"
 #include "scene_warnings.h"
 
 namespace vct::app {
@@ -76,7 +77,9 @@ int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
   if (f.max_depth) s.pt.max_depth = *f.max_depth;
   if (f.light_model) s.pt.light_model = *f.light_model == "seed" ? LightModel::Seed : LightModel::Gltf;
   validate_settings(s);
-  const Scene scene = load_scene_and_warn(f.scene, common.scene_load);
+  Scene loaded = load_scene_and_warn(f.scene, common.scene_load, s.vct);
+  s = fit_image_to_camera_and_warn(s, loaded, common);
+  const Scene scene = std::move(loaded);
   if (f.job_key || !f.sample_range.empty() || !f.merge.empty()) return run_cluster_part(scene, s, common, f);
 
   pt::PathtraceRunOptions o;

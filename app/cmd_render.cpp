@@ -22,6 +22,8 @@
 #include "io/run_dir.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
+#include "scene/exposure.h"
+#include "camera_aspect.h"
 #include "scene_warnings.h"
 #include "stages/dumps.h"
 #include "stages/explain.h"
@@ -202,7 +204,10 @@ void write_ref_extras(RunDir& run, const FrameResult& frame, const Scene& scene,
 }
 
 void run_render(const std::string& scene_path, const CommonOptions& common, const VctFlags& flags) {
-  const Settings settings = apply_vct_flags(resolve_settings(common), flags);
+  const Settings flagged = apply_vct_flags(resolve_settings(common), flags);
+  Scene loaded = load_scene_and_warn(scene_path, common.scene_load, flagged.vct);
+  const Settings settings = fit_image_to_camera_and_warn(flagged, loaded, common);
+  const Scene scene = std::move(loaded);
   std::optional<ivec2> explain;
   if (!flags.explain.empty()) {
     explain = parse_pixel(flags.explain);
@@ -212,7 +217,6 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
                                         "x" + std::to_string(settings.vct.height) + " image");
     }
   }
-  const Scene scene = load_scene_and_warn(scene_path, common.scene_load);
   if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
   const std::function<FrameResult()> render_frame = prepare_frame(scene, settings, flags);
   // Locked before rendering, so a second process writing the same --out is refused at once.
@@ -224,6 +228,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   run.json()["settings"] = settings;
   run.json()["environment"] = environment_info();
   run.json()["scene"] = scene_summary(scene);
+  run.json()["exposure"] = exposure_json(scene.exposure);
   // Keyed by backend, the shape the dump writer uses too.
   run.json()["multibounce_energy"][frame.backend] = frame.multibounce_energy;
   for (const auto& [key, value] : frame.info) run.json()["info"][frame.backend][key] = value;

@@ -26,6 +26,8 @@
 #include "stages/explain.h"
 #include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
+#include "scene/exposure.h"
+#include "camera_aspect.h"
 #include "scene_warnings.h"
 #include "validate_checks.h"
 #include "validate_run.h"
@@ -240,8 +242,10 @@ int run(const ValidateOptions& o) {
   if (o.check_input) return check_input_only(o);
   if (!o.sweep_rows.empty()) return run_sweep_rows(o);
   PhaseTimes phases;
-  const Settings s = resolve(o.common);
-  const Scene scene = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load); });
+  const Settings resolved = resolve(o.common);
+  Scene loaded = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load, resolved.vct); });
+  const Settings s = fit_image_to_camera_and_warn(resolved, loaded, o.common);
+  const Scene scene = std::move(loaded);
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
   // Phases: gl, ref, pt, stage sets + comparison + bias, each sweep value, report.
   PhaseProgress progress(pt::ProgressBar::stderr_is_terminal(), "validate", 4 + (o.no_report ? 0 : 1));
@@ -253,6 +257,7 @@ int run(const ValidateOptions& o) {
                          {"triangles", scene.triangle_count()},
                          {"lights", scene.lights.size()},
                          {"warnings", scene.stats.warnings}};
+  run.json()["exposure"] = exposure_json(scene.exposure);
   run.json()["settings"] = s;
   run.json()["report_options"] = {{"flip", o.flip}};  // a rebuilt report computes the same FLIP maps
   run.json()["environment"] = environment_info();

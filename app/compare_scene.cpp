@@ -98,6 +98,7 @@ IsolatedInputs load_isolated_inputs(const cmp::StageSet& test, const std::string
   IsolatedInputs in;
   in.scene = load_scene_and_warn(scene_arg == kBuiltinSceneName ? std::string() : scene_arg, scene_load);
   in.settings = settings_of_test_set(test, config);
+  expose_scene(in.scene, in.settings);  // the reference renders the scene as the settings expose it
   in.frame = cmp::frame_from_stage_set(test, in.scene, in.settings, reference);
   return in;
 }

@@ -153,6 +153,9 @@ def final_images(p):
     for name, png, _ in cands:
         out.append(p.img(png, labels.get(name, name), "wide" if False else "thumb"))
     out.append("</div>")
+    out.append('<p class="note" id="display-transform">Display transform: <b>Khronos PBR Neutral</b> tone mapper, '
+               'then the sRGB curve (previews and the viewer below); the EXR and NRRD data stay linear '
+               '(luminance in cd/m&sup2; times run.json&rsquo;s exposure scale, docs/scenes.md).</p>')
     floats = {}
     for name, _, exr in cands:
         arr = runio.read_exr(exr) if exr else None

@@ -24,6 +24,7 @@
 #include "core/settings.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
+#include "scene/exposure.h"
 #include "scene/gltf_loader.h"
 #include "compare_scene.h"
 #include "validate_run.h"
@@ -70,10 +71,23 @@ nb::object frame_to_python(const app::BackendRun& run, const Settings& s) {
   return o;
 }
 
+// The scene as the settings expose it, as the CLI renders it (docs/scenes.md, "Light units and
+// exposure"): load_scene returns it unexposed; a copy is made only when the scale is not 1.
+const Scene& exposed(const Scene& scene, const Settings& s, Scene& storage) {
+  const ExposureApplied e = resolve_exposure(scene, s.vct.exposure, s.vct.exposure_ev100);
+  if (e.scale == 1.0f || scene.exposure.scale != 1.0f) return scene;
+  storage = scene;
+  pre_expose(storage, e);
+  return storage;
+}
+
 // `positions`: the GPU-rule voxelizer's sample positions (a GL set's facts, as vct validate takes
 // them from its GL run); empty = the standard pattern.
-nb::object render(const Scene& scene, const std::string& settings, bool gl, const std::vector<vec2>& positions = {}) {
+nb::object render(const Scene& unexposed, const std::string& settings, bool gl,
+                  const std::vector<vec2>& positions = {}) {
   const Settings s = settings_from_text(settings);
+  Scene storage;
+  const Scene& scene = exposed(unexposed, s, storage);
   app::BackendRun run;
   {
     nb::gil_scoped_release unlocked;
@@ -184,8 +198,10 @@ void bind_functions(nb::module_& m) {
     return render(sc, t, false, facts_from ? facts_from->facts.sample_positions : std::vector<vec2>{});
   }, "scene"_a, "settings"_a, "facts_from"_a.none());
   m.def("_render_gl", [](const Scene& sc, const std::string& t) { return render(sc, t, true); });
-  m.def("_path_trace", [](const Scene& sc, const std::string& t) {
+  m.def("_path_trace", [](const Scene& unexposed, const std::string& t) {
     const Settings s = settings_from_text(t);
+    Scene storage;
+    const Scene& sc = exposed(unexposed, s, storage);
     PathTraceResult r;
     {
       nb::gil_scoped_release unlocked;

@@ -10,6 +10,10 @@
 namespace vct {
 
 enum class LightModel { Gltf, Seed };                  // KHR_lights_punctual vs seed falloff
+// Camera exposure (docs/scenes.md, "Exposure"): a light meter's whole stops from the scene's
+// lights (auto), a photographic EV100, or none (scale 1). Applied to the scene's sources before
+// any engine sees them (scene/exposure.h), so every stage of ref, gl and pt is pre-exposed alike.
+enum class ExposureMode { Auto, Ev100, None };
 enum class PtSampler { Sobol, Independent };           // path tracer: scrambled Sobol or PCG32 (pt/path_sampler.h)
 enum class Voxelizer { Conservative, GpuEmulation };   // exact triangle-box vs dominant axis+MSAA
 // The GL voxelization pass's conservative mode (issue 15; docs/gl_backend.md, "Conservative
@@ -85,6 +89,8 @@ struct VctSettings {
   std::string shadow_view_proj;
   std::string shadow_ortho_box;
   LightModel light_model = LightModel::Gltf;
+  ExposureMode exposure = ExposureMode::Auto;
+  float exposure_ev100 = 0.0f;  // with exposure = ev100: scale 1 / (1.2 * 2^EV100)
 
   // Voxelization.
   int grid = 128;
@@ -189,6 +195,7 @@ Settings load_settings_file(const std::string& path, const Settings& base);
 void validate_settings(const Settings& s);
 
 std::string to_string(LightModel m);
+std::string to_string(ExposureMode m);
 std::string to_string(PtSampler s);
 std::string to_string(Voxelizer v);
 std::string to_string(ConservativeRaster c);

@@ -23,6 +23,12 @@ const std::vector<std::pair<LightModel, const char*>>& enum_names() {
   return m;
 }
 template <>
+const std::vector<std::pair<ExposureMode, const char*>>& enum_names() {
+  static const std::vector<std::pair<ExposureMode, const char*>> m{
+      {ExposureMode::Auto, "auto"}, {ExposureMode::Ev100, "ev100"}, {ExposureMode::None, "none"}};
+  return m;
+}
+template <>
 const std::vector<std::pair<PtSampler, const char*>>& enum_names() {
   static const std::vector<std::pair<PtSampler, const char*>> m{{PtSampler::Sobol, "sobol"},
                                                                 {PtSampler::Independent, "independent"}};
@@ -228,6 +234,7 @@ using P = PtSettings;
 }  // namespace
 
 std::string to_string(LightModel m) { return enum_name(m); }
+std::string to_string(ExposureMode m) { return enum_name(m); }
 std::string to_string(PtSampler s) { return enum_name(s); }
 std::string to_string(Voxelizer v) { return enum_name(v); }
 std::string to_string(ConservativeRaster c) { return enum_name(c); }
@@ -259,6 +266,8 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_view_proj", &V::shadow_view_proj, any(), "per light world->clip matrix \"LIGHT:m0,...,m15; ...\" (GL column-major; empty = the oracle's)"),
     field("shadow_ortho_box", &V::shadow_ortho_box, any(), "directional lights' ortho boxes \"LIGHT:l,r,b,t,near,far; ...\" in the oracle's light view"),
     choice("light_model", &V::light_model, "KHR_lights_punctual (gltf) or the seed's falloff (docs/scenes.md)"),
+    choice("exposure", &V::exposure, "pre-exposure of every light and emission for ref, gl and pt alike: whole stops from a light meter of the scene's lights when outside +-4 stops of 1 (auto), exposure_ev100, or none (docs/scenes.md, \"Light units and exposure\")"),
+    field("exposure_ev100", &V::exposure_ev100, closed(-20, 30), "with exposure = ev100: camera EV at ISO 100, scale 1/(1.2 x 2^EV100)"),
     field("grid", &V::grid, powers_of_two(16, 512), "voxel grid resolution N (N^3 voxels)", "u_grid"),
     choice("voxelizer", &V::voxelizer, "exact triangle-box overlap, or the GPU's dominant axis + MSAA rule"),
     field("msaa_samples", &V::msaa_samples, one_of({1, 4, 8}), "MSAA samples of the voxelization pass"),

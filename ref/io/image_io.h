@@ -13,8 +13,12 @@ void write_exr(const std::string& path, const Image& img);
 
 /// 8-bit sRGB PNG preview: exposure scale, then the chosen tone map, then the sRGB curve.
 /// One-channel images are written grey; alpha (4th channel) is dropped.
-enum class ToneMap { Clamp, Reinhard, Aces };
-void write_png(const std::string& path, const Image& img, float exposure = 1.0f, ToneMap tm = ToneMap::Aces);
+// PNG previews' display transform (docs/report.md, "Display transform"): Khronos PBR Neutral by
+// default (what the glTF Sample Viewer shows); the others for comparison with older runs.
+enum class ToneMap { Clamp, Reinhard, Aces, KhronosPbrNeutral };
+/// The display transform's name as the report shows it ("Khronos PBR Neutral").
+const char* tone_map_name(ToneMap tm);
+void write_png(const std::string& path, const Image& img, float exposure = 1.0f, ToneMap tm = ToneMap::KhronosPbrNeutral);
 
 /// Writes a data image as PNG with values mapped linearly from [lo, hi] to [0, 255], no sRGB
 /// (depth maps, masks, normals remapped by the caller).

@@ -14,6 +14,8 @@
 #include "pt/checkpoint.h"
 #include "pt/path_tracer.h"
 #include "pt/progress.h"
+#include "scene/exposure.h"
+#include "scene/exposure.h"
 
 namespace vct::pt {
 
@@ -37,6 +39,7 @@ void write_run_json(RunDir& dir, const Scene& scene, const Settings& settings, c
   j["environment"] = environment_info();
   j["scene"] = scene.source;
   j["scene_warnings"] = scene.stats.warnings;
+  j["exposure"] = exposure_json(scene.exposure);
   const double rays = double(result.rays.total());
   j["pathtrace"] = {{"spp", result.spp},
                     {"requested_spp", ps.spp},

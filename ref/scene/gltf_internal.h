@@ -63,6 +63,13 @@ Light make_light(const Context& ctx, int light, const mat4& world);
 /// Checks every light: a KHR_lights_punctual type (spot, point, directional), spot cone angles,
 /// finite non-negative intensity, range and colour.
 void validate_lights(const Context& ctx);
+/// One warning per spot light with innerConeAngle == outerConeAngle (rendered as a step).
+void warn_hard_spots(const Context& ctx, std::vector<std::string>& warnings);
+/// "material N 'Name': KHR_materials_X ignored, <what is rendered instead>", one per extension the
+/// material carries that no engine applies (gltf_material_extensions.cpp).
+void warn_material_extensions(const tinygltf::Material& g, const std::string& owner, std::vector<std::string>& warnings);
+/// What is rendered instead of a KHR_materials_* extension ("rendered opaque with its base colour").
+std::string material_extension_instead(const std::string& extension);
 /// extras.vct_particles of node `node`, if present.
 bool read_particles(const Context& ctx, int node, const mat4& world, ParticleEmitter& out);
 

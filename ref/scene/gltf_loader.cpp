@@ -111,7 +111,9 @@ nlohmann::json precheck_json(const std::string& text, const std::string& name, s
   }
   if (j.contains("extensionsUsed") && j["extensionsUsed"].is_array()) {
     for (const auto& e : j["extensionsUsed"]) {
-      if (e.is_string() && !supported(e.get<std::string>())) warnings.push_back("extension " + e.get<std::string>() + " is ignored");
+      // KHR_materials_* are said per material, with what is rendered instead (gltf_material_extensions.cpp).
+      if (e.is_string() && !supported(e.get<std::string>()) && e.get<std::string>().rfind("KHR_materials_", 0) != 0)
+        warnings.push_back("extension " + e.get<std::string>() + " is ignored");
     }
   }
   return j;
@@ -175,6 +177,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
   Scene scene;
   scene.source = name;
   scene.stats.warnings = std::move(warnings);
+  gltf::warn_hard_spots(ctx, scene.stats.warnings);
   gltf::convert_textures(ctx, scene);
   gltf::convert_materials(ctx, scene);
   build_texture_mips(scene);  // once, for the encodings the materials read

@@ -197,6 +197,7 @@ void convert_materials(const Context& ctx, Scene& scene) {
       }
     }
     if (g.occlusionTexture.index >= 0) scene.stats.warnings.push_back(owner + ": occlusionTexture is ignored");
+    warn_material_extensions(g, owner, scene.stats.warnings);
     read_alpha_mode(ctx, g, owner, mat, scene.stats.warnings);
     mat.double_sided = g.doubleSided;
     const vec4 b = mat.base_color_factor;

@@ -281,8 +281,23 @@ class Flattener {
     m.tris = std::move(kept);
     if (m.tris.empty()) return;
     if (!have_normals) unweld_with_flat_normals(m);
-    if (m.tan.empty()) m.tan = generate_tangents(m.pos, m.nrm, tangent_uv_set(prim, m), m.tris);
+    if (m.tan.empty()) {
+      m.tan = generate_tangents(m.pos, m.nrm, tangent_uv_set(prim, m), m.tris);
+      warn_generated_tangents(mesh_index, prim);
+    }
     append(m, material_of(prim));
+  }
+
+  // The Khronos validator warns when a normal-mapped primitive has no TANGENT; we generate them
+  // (docs/scenes.md, "Tangents": not MikkTSpace), said once per mesh.
+  void warn_generated_tangents(int mesh_index, const tinygltf::Primitive& prim) {
+    if (prim.material < 0 || !scene_.materials[size_t(prim.material)].normal_texture.present()) return;
+    if (std::find(tangent_warned_.begin(), tangent_warned_.end(), mesh_index) != tangent_warned_.end()) return;
+    tangent_warned_.push_back(mesh_index);
+    const std::string& name = ctx_.model.meshes[size_t(mesh_index)].name;
+    warn("mesh " + std::to_string(mesh_index) + (name.empty() ? "" : " '" + name + "'") + ": no TANGENT for material '" +
+         scene_.materials[size_t(prim.material)].name +
+         "' (normal-mapped); tangents generated from its UVs (not MikkTSpace: baked normal maps may differ at UV seams)");
   }
 
   bool uses_uv1(const tinygltf::Primitive& prim) const {
@@ -336,6 +351,7 @@ class Flattener {
 
   const Context& ctx_;
   Scene& scene_;
+  std::vector<int> tangent_warned_;  // meshes already warned about generated tangents
   bool camera_found_ = false;
   bool any_uv1_ = false;
   bool any_color_ = false;

@@ -70,7 +70,9 @@ Camera make_camera(const Context& ctx, int camera, const mat4& world) {
         (p.zfar != 0.0 && p.zfar <= p.znear)) {
       fail(ctx, owner + " has an invalid yfov/znear/zfar");
     }
+    if (!(p.aspectRatio >= 0.0) || !std::isfinite(p.aspectRatio)) fail(ctx, owner + " has an invalid aspectRatio");
     out.yfov = float(p.yfov);
+    out.aspect_ratio = float(p.aspectRatio);  // 0: absent (tinygltf's default)
     out.znear = float(p.znear);
     out.zfar = float(p.zfar);  // 0 (infinite) is replaced by the loader once bounds are known
   } else {
@@ -91,8 +93,9 @@ void validate_lights(const Context& ctx) {
       fail(ctx, owner + " has type '" + l.type + "'; KHR_lights_punctual defines spot, point and directional");
     }
     const double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;
-    if (l.type == "spot" && (!(outer > 0.0 && outer <= 0.5 * 3.14159265358979 + 1e-6) || !(inner >= 0.0 && inner < outer))) {
-      fail(ctx, owner + " needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
+    // inner == outer (a hard spot, Blender's Blend 0) is accepted and rendered as a step (warn_hard_spots).
+    if (l.type == "spot" && (!(outer > 0.0 && outer <= 0.5 * 3.14159265358979 + 1e-6) || !(inner >= 0.0 && inner <= outer))) {
+      fail(ctx, owner + " needs 0 <= innerConeAngle <= outerConeAngle <= pi/2");
     }
     if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity) || !(l.range >= 0.0) || !std::isfinite(l.range)) {
       fail(ctx, owner + " has an invalid intensity or range");
@@ -101,6 +104,16 @@ void validate_lights(const Context& ctx) {
     for (double c : l.color) {
       if (!(c >= 0.0) || !std::isfinite(c)) fail(ctx, owner + " has an invalid color");
     }
+  }
+}
+
+void warn_hard_spots(const Context& ctx, std::vector<std::string>& warnings) {
+  for (size_t i = 0; i < ctx.model.lights.size(); ++i) {
+    const auto& l = ctx.model.lights[i];
+    if (l.type != "spot" || l.spot.innerConeAngle < l.spot.outerConeAngle) continue;
+    warnings.push_back("light " + std::to_string(i) + (l.name.empty() ? "" : " '" + l.name + "'") +
+                       ": innerConeAngle == outerConeAngle (a hard spot; the Khronos validator flags it): rendered "
+                       "as a step, lit strictly inside the outer cone, in every engine");
   }
 }
 

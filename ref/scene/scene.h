@@ -126,6 +126,7 @@ struct Camera {
   float yfov = 0.8f;  // radians
   bool orthographic = false;
   float ymag = 1.0f;  // orthographic only
+  float aspect_ratio = 0.0f;  // glTF perspective aspectRatio (width / height); 0 = the file has none
   float znear = 0.01f;
   float zfar = 100.0f;
   bool from_file = false;
@@ -164,6 +165,15 @@ struct LoadStats {
   std::vector<std::string> warnings;
 };
 
+/// The exposure the scene's sources were multiplied by (scene/exposure.h); "none" and 1 as loaded.
+struct ExposureApplied {
+  std::string mode = "none";   // auto | ev100 | none
+  double key_illuminance = 0;  // lux, the auto meter's reading (scene/exposure.h)
+  double ev100 = 0;            // the camera's EV100 (auto: the meter's, before rounding and dead band)
+  int stops = 0;               // auto: the whole stops applied (scale = 2^stops)
+  float scale = 1.0f;          // what every light, emission and particle colour was multiplied by
+};
+
 struct Scene {
   std::string source;  // file path or "builtin:default"
 
@@ -185,6 +195,7 @@ struct Scene {
   VoxelVolume volume;
   Bounds3 bounds;
   LoadStats stats;
+  ExposureApplied exposure;
 
   size_t triangle_count() const { return triangles.size(); }
 };

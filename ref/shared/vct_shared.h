@@ -135,7 +135,16 @@ VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
 //   recommended range window when range > 0.
 //  seed: smoothstep(cos outer, cos inner, cos) / (1 + d), intensity unitless.
 
+// A hard spot (innerConeAngle == outerConeAngle: Blender's Blend 0) is the ramp's limit, a step:
+// lit strictly inside the outer cone (cos_axis > cos_outer), dark on and outside its edge. Tested
+// before any division, so no 0/0 (and no GLSL smoothstep with edge0 >= edge1, which is undefined).
+// Tie freedom (docs/compare.md, "Hard spots"): a pixel whose cos_axis lies within float rounding of
+// cos_outer may be lit on one backend and dark on the other.
+VCT_FN bool spot_is_hard(float cos_inner, float cos_outer) { return cos_inner <= cos_outer; }
+VCT_FN float spot_step(float cos_axis, float cos_outer) { return cos_axis > cos_outer ? 1.0f : 0.0f; }
+
 VCT_FN float spot_cone_gltf(float cos_axis, float cos_inner, float cos_outer) {
+  if (spot_is_hard(cos_inner, cos_outer)) return spot_step(cos_axis, cos_outer);
   float scale = 1.0f / max(0.001f, cos_inner - cos_outer);
   float t = clamp((cos_axis - cos_outer) * scale, 0.0f, 1.0f);
   return t * t;
@@ -150,7 +159,9 @@ VCT_FN float range_window(float dist, float range) {
 VCT_FN vec3 spot_irradiance(int model, vec3 color, float intensity, float dist, float cos_axis,
                             float cos_inner, float cos_outer, float range) {
   if (model == LIGHT_MODEL_SEED) {
-    return color * intensity * smoothstep(cos_outer, cos_inner, cos_axis) / (1.0f + dist);
+    float cone = spot_is_hard(cos_inner, cos_outer) ? spot_step(cos_axis, cos_outer)
+                                                    : smoothstep(cos_outer, cos_inner, cos_axis);
+    return color * intensity * cone / (1.0f + dist);
   }
   return color * intensity * spot_cone_gltf(cos_axis, cos_inner, cos_outer) * range_window(dist, range) /
          max(dist * dist, 1e-8f);

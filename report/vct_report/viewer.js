@@ -14,8 +14,18 @@
     return out;
   }
   const srgb = (c) => (c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055);
-  // ACES fit (Narkowicz), as the PNG previews use.
-  const aces = (x) => Math.min(1, Math.max(0, (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14)));
+  // Khronos PBR Neutral, as the PNG previews use (ref/io/image_preview.cpp; docs/report.md,
+  // "Display transform"): on the whole colour, hue kept, highlights compressed toward white.
+  function pbrNeutral(r, g, b) {
+    const start = 0.76, desat = 0.15, d = 1 - start;
+    const x = Math.min(r, g, b), off = x < 0.08 ? x - 6.25 * x * x : 0.04;
+    let c = [r - off, g - off, b - off];
+    const peak = Math.max(c[0], c[1], c[2]);
+    if (peak < start) return c;
+    const np = 1 - (d * d) / (peak + d - start);
+    const w = 1 - 1 / (desat * (peak - np) + 1);
+    return c.map((v) => Math.min(1, Math.max(0, (v * np) / peak * (1 - w) + np * w)));
+  }
   function magma(t) {  // short magma-like ramp
     const k = [[0, 0, 4], [80, 18, 123], [183, 55, 121], [252, 137, 97], [252, 253, 191]];
     t = Math.min(1, Math.max(0, t)) * (k.length - 1);
@@ -67,7 +77,8 @@
           rgb = magma(d * scale);
         } else {
           const src = (m === "b" || (m === "flip" && flipShowB)) && sameSize ? B : A;
-          rgb = [0, 1, 2].map((c) => 255 * srgb(aces(src[3 * p + c] * scale)));
+          const lin = [0, 1, 2].map((c) => (Number.isFinite(src[3 * p + c]) ? Math.max(0, src[3 * p + c] * scale) : 0));
+          rgb = pbrNeutral(lin[0], lin[1], lin[2]).map((v) => 255 * srgb(Math.max(0, v)));
         }
         im.data[4 * p] = rgb[0]; im.data[4 * p + 1] = rgb[1]; im.data[4 * p + 2] = rgb[2]; im.data[4 * p + 3] = 255;
       }

@@ -46,6 +46,6 @@ STAGES = [
      "traced in frame n-1's mips; the total voxel energy per frame should converge.",
      ["bounces", "restitution", "convergence_tolerance"], None),
     ("final", "Final composite", "final = direct + kd albedo indirect diffuse + F indirect specular + emission (+ additive particles), "
-     "linear HDR; the PNGs are ACES tone-mapped.",
+     "linear HDR; the PNGs show it through the Khronos PBR Neutral tone mapper and the sRGB curve.",
      ["particles", "time"], "composite"),
 ]

@@ -10,6 +10,7 @@
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "gl_test_util.h"
+#include "scene/exposure.h"
 #include "stages/pipeline.h"
 
 namespace vct::gl::test {
@@ -144,6 +145,76 @@ TEST(GlLightKinds, SunOnATiltedPlaneIsLuxTimesCosine) {
       }
     EXPECT_GT(checked, 1000);
   }
+}
+
+}  // namespace
+}  // namespace vct::gl::test
+
+namespace vct::gl::test {
+namespace {
+
+// A hard spot (innerConeAngle == outerConeAngle; docs/scenes.md, "Hard spots") straight down from
+// 1 m: lit strictly inside the outer cone with E = I cos / d^2, dark outside, in both light models
+// (the seed's smoothstep with equal edges would be undefined in GLSL). Pixels whose cos angle lies
+// within 1e-5 of the edge may go either way (docs/compare.md, "Hard spots"), and are skipped.
+TEST(GlLightKinds, HardSpotIsAStepAtTheOuterCone) {
+  VCT_REQUIRE_GL();
+  Light l;
+  l.kind = LightKind::Spot;
+  l.position = vec3(0.0f, 1.0f, 0.0f);
+  l.direction = vec3(0.0f, -1.0f, 0.0f);
+  l.intensity = 3.0f;
+  l.inner_cone_angle = l.outer_cone_angle = 0.5f;
+  const Scene scene = plane_scene(l, 0.0f);
+  for (LightModel model : {LightModel::Gltf, LightModel::Seed}) {
+    Settings s = small_settings();
+    s.vct.light_model = model;
+    const FrameResult f = render_gl_frame(*ctx, scene, s);
+    int lit = 0, dark = 0;
+    for (int y = 0; y < f.gbuffer.coverage.height; ++y)
+      for (int x = 0; x < f.gbuffer.coverage.width; ++x) {
+        if (f.gbuffer.coverage.at(x, y, 0) == 0.0f) continue;
+        const vec3 p = f.gbuffer.position.rgb(x, y);
+        const float d = glm::length(l.position - p), cos_t = (l.position.y - p.y) / d;
+        if (std::abs(cos_t - std::cos(l.outer_cone_angle)) < 1e-5f) continue;
+        const bool inside = cos_t > std::cos(l.outer_cone_angle);
+        const float falloff = model == LightModel::Seed ? 1.0f / (1.0f + d) : 1.0f / (d * d);
+        const float expected = inside ? 0.5f / kPi * l.intensity * cos_t * falloff : 0.0f;
+        const float got = f.images.direct.at(x, y, 0);
+        ASSERT_FALSE(std::isnan(got)) << x << "," << y;
+        EXPECT_NEAR(got, expected, 1e-4f * expected + 1e-6f) << x << "," << y;
+        (inside ? lit : dark) += 1;
+      }
+    EXPECT_GT(lit, 100);
+    EXPECT_GT(dark, 100);
+  }
+}
+
+// A Blender "Standard" lamp (1000 W = 54351 cd) 1 m above the floor, auto-exposed (scene/exposure.h):
+// GL's image.direct is the closed form albedo / pi x N cos / d^2 x 2^stops, as the reference's is
+// (tests/ref/exposure_test.cpp) and the path tracer's (tests/pt/light_kinds_plane_test.cpp).
+TEST(GlLightKinds, PreExposedPhotometricLampIsTheClosedForm) {
+  VCT_REQUIRE_GL();
+  Light l;
+  l.kind = LightKind::Point;
+  l.position = vec3(0.0f, 1.0f, 0.0f);
+  l.intensity = 54351.4f;
+  Scene scene = plane_scene(l, 0.0f);
+  pre_expose(scene, resolve_exposure(scene, ExposureMode::Auto, 0.0f));
+  ASSERT_LT(scene.exposure.stops, -4);
+  const FrameResult f = render_gl_frame(*ctx, scene, small_settings());
+  int checked = 0;
+  for (int y = 0; y < f.gbuffer.coverage.height; ++y)
+    for (int x = 0; x < f.gbuffer.coverage.width; ++x) {
+      if (f.gbuffer.coverage.at(x, y, 0) == 0.0f) continue;
+      const vec3 p = f.gbuffer.position.rgb(x, y);
+      if (std::abs(p.x) > 0.9f || std::abs(p.z) > 0.9f) continue;  // PCF taps stay on the -y face
+      const float d = glm::length(l.position - p), cos_t = (l.position.y - p.y) / d;
+      const float expected = 0.5f / kPi * l.intensity * cos_t / (d * d) * scene.exposure.scale;
+      EXPECT_NEAR(f.images.direct.at(x, y, 0), expected, 1e-4f * expected) << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 1000);
 }
 
 }  // namespace

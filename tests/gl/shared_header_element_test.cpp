@@ -458,6 +458,20 @@ ElementCase spot_cone_case() {
   return c;
 }
 
+// Hard spots (docs/compare.md, "Hard spots"): spot_is_hard and spot_step are comparisons of the
+// same floats on both sides, so exact; the grid's cone (0.7, 0.7) and cos 0.7 hit the edge itself.
+ElementCase hard_spot_case() {
+  ElementCase c{"spot_is_hard", "f", 1, "", nullptr, {}};
+  for (const vec4& cone : spot_cones())
+    for (float ca : kCosAxis) c.inputs.push_back(words(vec4(ca, cone.x, cone.y, 0)));
+  c.glsl = "vec4 a = fin(0u);\nput(0u, vec4(spot_is_hard(a.y, a.z) ? 1.0f : 0.0f, spot_step(a.x, a.z), 0.0f, 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]);
+    return std::vector<ExpectedSlot>{exact(vec4(sh::spot_is_hard(a.y, a.z) ? 1.0f : 0.0f, sh::spot_step(a.x, a.z), 0, 0))};
+  };
+  return c;
+}
+
 // range_window: r = d/range (division), r^4 = 4 x r's + 3 u, then 1 - r^4 (1 u of the result).
 double range_window_bound(float dist, float range) {
   if (range <= 0.0f) return 0.0;
@@ -979,6 +993,7 @@ std::vector<ElementCase> all_cases() {
           lobes_case(),
           cook_torrance_case(),
           spot_cone_case(),
+          hard_spot_case(),
           range_window_case(),
           step_correction_case(),
           spot_irradiance_case(),

@@ -12,6 +12,7 @@
 
 #include "pt/accumulator.h"
 #include "pt/path_tracer.h"
+#include "scene/exposure.h"
 #include "test_scenes.h"
 
 namespace vct::pt {
@@ -119,6 +120,43 @@ TEST(LightKindsPlane, SunOnATiltedPlaneIsLuxTimesCosine) {
           ASSERT_EQ(var.at(x, y, c), 0.0f);
         }
   }
+}
+
+// A hard spot (innerConeAngle == outerConeAngle) 1.5 m above the floor, its lamp Blender-photometric
+// (21740 cd: a 400 W "Standard" export) and auto-exposed: lit strictly inside the outer cone with
+// E = I cos / d^2 x 2^stops, dark outside (docs/scenes.md, "Hard spots" and "Light units and exposure").
+TEST(LightKindsPlane, PreExposedHardSpotIsAStepWithTheClosedFormInside) {
+  Scene scene;
+  const uint32_t m = test::add_material(scene, test::lambertian(kAlbedo));
+  test::add_quad(scene, vec3(-10, 0, -10), vec3(0, 0, 20), vec3(20, 0, 0), m);
+  Light l;
+  l.kind = LightKind::Spot;
+  l.position = vec3(0.0f, 1.5f, 0.0f);
+  l.direction = vec3(0.0f, -1.0f, 0.0f);
+  l.intensity = 21740.6f;
+  l.inner_cone_angle = l.outer_cone_angle = 0.35f;
+  scene.lights.push_back(l);
+  scene.camera = test::look_at(vec3(0.0f, 4.0f, 0.0f), vec3(0.0f), vec3(0, 0, -1), 0.6f);
+  test::finish(scene);
+  pre_expose(scene, resolve_exposure(scene, ExposureMode::Auto, 0.0f));
+  ASSERT_LT(scene.exposure.stops, -4);
+  Image var;
+  const Image direct = render_direct(scene, &var);
+  const float cos_outer = std::cos(l.outer_cone_angle);
+  int lit = 0, dark = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const vec3 d = pixel_ray(scene.camera, x, y);
+      const vec3 p = scene.camera.position + d * (-scene.camera.position.y / d.y);
+      const float dist = glm::length(l.position - p), cos_t = (l.position.y - p.y) / dist;
+      if (std::abs(cos_t - cos_outer) < 1e-5f) continue;  // the tie band (docs/compare.md, "Hard spots")
+      const bool inside = cos_t > cos_outer;
+      const vec3 expected = inside ? kAlbedo / kPi * l.intensity * scene.exposure.scale * cos_t / (dist * dist) : vec3(0.0f);
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(direct.at(x, y, c), expected[c], 2e-4f * expected[c] + 1e-6f) << x << "," << y;
+      (inside ? lit : dark) += 1;
+    }
+  EXPECT_GT(lit, 100);
+  EXPECT_GT(dark, 100);
 }
 
 }  // namespace

@@ -205,7 +205,7 @@ const std::vector<BadCase>& bad_cases() {
        [] { return doc_file("no_triangles", [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["mode"] = 1; }); }},
       {"zero_quaternion", "zero rotation quaternion",
        [] { return doc_file("zero_quaternion", [](GltfDoc& d) { d.j["nodes"][0]["rotation"] = {0, 0, 0, 0}; }); }},
-      {"bad_spot_cone", "innerConeAngle < outerConeAngle",
+      {"bad_spot_cone", "innerConeAngle <= outerConeAngle",
        [] {
          return doc_file("bad_spot_cone", [](GltfDoc& d) {
            d.j["extensions"] = {{"KHR_lights_punctual",
