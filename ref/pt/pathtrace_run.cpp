@@ -15,7 +15,6 @@
 #include "pt/path_tracer.h"
 #include "pt/progress.h"
 #include "scene/exposure.h"
-#include "scene/exposure.h"
 
 namespace vct::pt {
 
