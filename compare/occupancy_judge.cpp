@@ -148,7 +148,7 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   explain_voxel(v, ref, test, explained_voxel(opt, ref), rules, WorstChannel{});
-  write_volume_rule_mask(opt, v, ref.nx, ref.ny, ref.nz, rules);
+  write_volume_rule_mask(opt, v, ref, rules);
   return v;
 }
 
@@ -180,7 +180,7 @@ StageVerdict compare_holes(const StageSet& rs, const StageSet& ts, const Compare
                 cons_n ? 100.0 * double(holes) / double(cons_n) : 0.0, cons_n, ts.backend.c_str());
   v.note = b;
   v.extra = {{"holes", holes}, {"conservative_voxels", cons_n}};
-  write_volume_rule_mask(opt, v, test.nx, test.ny, test.nz, rules);
+  write_volume_rule_mask(opt, v, *cons, rules);
   return v;
 }
 

@@ -184,7 +184,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   explain_voxel(v, in.ref, in.test, explained_index, rules, explained);
-  write_volume_rule_mask(opt, v, in.ref.nx, in.ref.ny, in.ref.nz, rules);
+  write_volume_rule_mask(opt, v, in.ref, rules);
   return v;
 }
 

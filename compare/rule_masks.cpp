@@ -46,9 +46,10 @@ void write_image_rule_mask(const CompareOptions& opt, StageVerdict& v, const Ima
   write_mask_png(opt, v, m);
 }
 
-void write_volume_rule_mask(const CompareOptions& opt, StageVerdict& v, int nx, int ny, int nz,
+void write_volume_rule_mask(const CompareOptions& opt, StageVerdict& v, const Volume& context,
                             const std::vector<Rule>& rules) {
   if (opt.mask_dir.empty() || v.out_of_bound == 0) return;
+  const int nx = context.nx, ny = context.ny, nz = context.nz;
   // As write_volume_montage lays slices out: every step-th z slice, a 1-voxel gap, +y up.
   const int step = std::max(1, (nz + 63) / 64), slices = (nz + step - 1) / step;
   const int cols = int(std::ceil(std::sqrt(double(slices)))), rows_n = (slices + cols - 1) / cols;
@@ -58,7 +59,8 @@ void write_volume_rule_mask(const CompareOptions& opt, StageVerdict& v, int nx, 
     for (int y = 0; y < ny; ++y)
       for (int x = 0; x < nx; ++x) {
         const Rule r = rules[(size_t(z) * size_t(ny) + size_t(y)) * size_t(nx) + size_t(x)];
-        if (paints(r)) m.set_rgb(ox + x, oy + (ny - 1 - y), rule_colour(r));
+        const float occupied = context.voxel(x, y, z)[context.channels >= 4 ? 3 : 0] > 0.0f ? 0.2f : 0.0f;
+        m.set_rgb(ox + x, oy + (ny - 1 - y), paints(r) ? rule_colour(r) : vec3(occupied));
       }
   }
   write_mask_png(opt, v, m);

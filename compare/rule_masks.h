@@ -1,6 +1,6 @@
 // Error masks painted by admission rule (compare/admission.h): one legend for images and volumes.
 // Red = beyond every rule (a failure); each other rule its table colour; elements within their
-// bound show the reference dimmed (images) or black (volumes), as context.
+// bound show the reference dimmed (images) or its occupied voxels dim grey (volumes), as context.
 #pragma once
 
 #include <string>
@@ -20,8 +20,8 @@ std::string mask_stem(const std::string& stage);
 void write_image_rule_mask(const CompareOptions& opt, StageVerdict& v, const Image& ref, const std::vector<Rule>& rules);
 
 /// Writes a volume stage's mask as a slice montage (at most 64 z slices, +y up), only when an
-/// element is beyond its bound.
-void write_volume_rule_mask(const CompareOptions& opt, StageVerdict& v, int nx, int ny, int nz,
+/// element is beyond its bound; the reference's occupied voxels (`context`) dim grey, as context.
+void write_volume_rule_mask(const CompareOptions& opt, StageVerdict& v, const Volume& context,
                             const std::vector<Rule>& rules);
 
 /// The legend, for the report: [{rule, colour: [r, g, b]}] of every rule that paints a colour.

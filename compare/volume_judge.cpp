@@ -101,7 +101,7 @@ StageVerdict compare_volume_masked(const std::string& stage, const Volume& ref, 
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   explain_voxel(v, ref, test, explained_index, rules, explained);
-  write_volume_rule_mask(opt, v, ref.nx, ref.ny, ref.nz, rules);
+  write_volume_rule_mask(opt, v, ref, rules);
   return v;
 }
 

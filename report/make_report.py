@@ -131,7 +131,7 @@ def mask_legend(legend):
         return ""
     items = "".join('<span class="legend-item"><span class="swatch" style="background:rgb(%d,%d,%d)"></span>%s</span> ' % (
         int(l["colour"][0]), int(l["colour"][1]), int(l["colour"][2]), E(l["rule"])) for l in legend)
-    return '<p class="small" id="mask-legend"><b>Masks:</b> %s; dimmed reference or black: within the bound.</p>' % items
+    return '<p class="small" id="mask-legend"><b>Masks:</b> %s; dimmed reference (images) or dim grey occupied voxels (volumes): within the bound.</p>' % items
 
 
 def load_compare_json(run):
