@@ -28,7 +28,7 @@ WorstChannel worst_channel(int channels, Measure measure) {
     const double ratio = !std::isfinite(d.distance) ? 1e30
                          : d.bound > 0          ? d.distance / d.bound
                                                 : (d.distance > 0 ? 1e30 : 0.0);
-    if (ratio > w.ratio) w.ratio = ratio, w.error = float(d.shown), w.bound = float(d.bound);
+    if (c == 0 || ratio > w.ratio) w.ratio = ratio, w.error = float(d.shown), w.bound = float(d.bound);
   }
   return w;
 }
