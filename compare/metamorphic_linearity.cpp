@@ -165,14 +165,6 @@ StageVerdict compare_scaled(const std::string& stage, const Elements& e, int sca
   return v;
 }
 
-StageVerdict missing_stage(const std::string& stage, const std::string& why) {
-  StageVerdict v;
-  v.stage = stage;
-  v.verdict = Verdict::Missing;
-  v.note = why;
-  return v;
-}
-
 }  // namespace
 
 RelationResult check_linearity(const MetamorphicContext& c) {

@@ -98,14 +98,6 @@ StageVerdict judge_image(const std::string& stage, const std::optional<StageRef>
 
 }  // namespace
 
-StageVerdict missing_stage(const std::string& stage, const std::string& why) {
-  StageVerdict v;
-  v.stage = stage;
-  v.verdict = Verdict::Missing;
-  v.note = why;
-  return v;
-}
-
 Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareOptions& opt,
                           const JudgeContext& ctx_in) {
   Report rep;

@@ -16,6 +16,14 @@ std::string to_string(Verdict v) {
   return "missing";
 }
 
+StageVerdict missing_stage(const std::string& stage, const std::string& why) {
+  StageVerdict v;
+  v.stage = stage;
+  v.verdict = Verdict::Missing;
+  v.note = why;
+  return v;
+}
+
 std::string Report::first_failing() const {
   for (const auto& s : stages)
     if (s.verdict == Verdict::Fail) return s.stage;

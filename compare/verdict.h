@@ -39,6 +39,9 @@ struct StageVerdict {
   nlohmann::json extra = nlohmann::json::object();
 };
 
+/// A stage judged missing (one side lacks it, or its inputs), with why.
+StageVerdict missing_stage(const std::string& stage, const std::string& why);
+
 struct Report {
   std::vector<StageVerdict> stages;  // pipeline order
   /// First stage that failed (later failures are usually its consequence); empty if none.

@@ -19,9 +19,6 @@ namespace vct::cmp {
 // Voxels where the two sides may legitimately differ (ties); mips above them inherit the freedom.
 using Taint = std::vector<uint8_t>;
 
-/// A stage judged missing, with why.
-StageVerdict missing_stage(const std::string& stage, const std::string& why);
-
 bool same_size(const Volume& a, const Volume& b);
 /// Occupancy = alpha > 0 (or the single channel > 0).
 std::vector<uint8_t> occupancy(const Volume& v);
