@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""The false-alarm hunt (issue 34, item 2): random valid scenes through `vct validate`, failures
+shrunk to minimal regression cases.
+
+    .venv/bin/python tools/scenegen/hunt.py --seeds 0-299 [--size-class small] [--vct build/bin/vct]
+        [--out runs/hunt] [--save scenes/regressions] [--threads 2] [--no-shrink] [--budget 120]
+    .venv/bin/python tools/scenegen/hunt.py --write-only --seeds 5 --out DIR   # just the scene files
+
+Per seed: writes OUT/seed-N/scene.gltf and settings.json (everything validate needs: image size,
+grid, pt.spp 4 and the drawn settings), runs `vct validate --config settings.json --no-report`, and
+prints one line: seed, verdict (pass, warn, fail, refused = exit 2, no-gl = exit 3, crash = any
+other exit), first failing stage. A FAIL is shrunk while it still FAILs with the same first failing
+stage (digits in the stage name ignored: a light's index changes when lights are dropped) and saved
+as SAVE/seed-N-CLASS/ {scene.gltf, settings.json, case.json (seed, verdict line, first failing
+stage, its note, sizes before and after, "cause": to fill)}. Results: OUT/results.jsonl.
+Exit 1 when any seed FAILed or crashed (--expect-no-fail is the quick slice's use of it).
+docs/compare.md, "False-alarm hunt", has the campaign command and results.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import generate  # noqa: E402
+import gltf_writer  # noqa: E402
+import shrink  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def settings_document(spec):
+    vct = dict(spec["settings"], width=spec["width"], height=spec["height"], grid=spec["grid"])
+    return {"vct": vct, "pt": {"spp": 4}}
+
+
+def write_case(spec, folder):
+    """scene.gltf + settings.json of a spec, each written to a temporary name, then renamed."""
+    os.makedirs(folder, exist_ok=True)
+    files = {"scene.gltf": gltf_writer.gltf_bytes(spec),
+             "settings.json": (json.dumps(settings_document(spec), indent=1, sort_keys=True) + "\n").encode()}
+    for name, data in files.items():
+        with open(os.path.join(folder, name + ".tmp"), "wb") as f:
+            f.write(data)
+        os.replace(os.path.join(folder, name + ".tmp"), os.path.join(folder, name))
+
+
+def run_validate(args, folder):
+    """Runs validate on folder/scene.gltf; returns {verdict, first_failing, line, note, rc, seconds}."""
+    run = os.path.join(folder, "run")
+    shutil.rmtree(run, ignore_errors=True)
+    cmd = [args.vct, "validate", os.path.join(folder, "scene.gltf"), "--config", os.path.join(folder, "settings.json"),
+           "--threads", str(args.threads), "--no-report", "--flip", "none", "--out", run]
+    start = time.time()
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
+    result = {"rc": proc.returncode, "seconds": round(time.time() - start, 2), "first_failing": "", "note": "",
+              "line": ""}
+    m = re.search(r"GPU \(gl\) vs CPU reference: .*", proc.stdout)
+    result["line"] = m.group(0).strip() if m else proc.stdout.strip().splitlines()[-1:][0] if proc.stdout.strip() else ""
+    kinds = {0: None, 1: "fail", 2: "refused", 3: "no-gl"}
+    result["verdict"] = kinds.get(proc.returncode, "crash")
+    try:
+        verdicts = json.load(open(os.path.join(run, "run.json")))["verdicts"]
+        result["first_failing"] = verdicts.get("first_failing", "")
+        result["verdict"] = result["verdict"] or verdicts.get("overall", "pass")
+        for stage in verdicts.get("stages", []):
+            if stage["stage"] == result["first_failing"]:
+                result["note"] = stage.get("note", "")
+    except (OSError, ValueError, KeyError):
+        result["verdict"] = result["verdict"] or "pass"
+    if not args.keep_runs:
+        shutil.rmtree(run, ignore_errors=True)
+    return result
+
+
+def stage_family(name):
+    return re.sub(r"\d+", "N", name)
+
+
+def spec_size(spec):
+    return {"meshes": len(spec["meshes"]), "triangles": int(sum(len(m["indices"]) for m in spec["meshes"])),
+            "lights": len(spec["lights"]), "textures": len(spec["textures"]), "settings": len(spec["settings"]),
+            "width": spec["width"], "height": spec["height"], "grid": spec["grid"]}
+
+
+def shrink_failure(args, spec, first):
+    work = os.path.join(args.out, "shrink-%d" % spec["seed"])
+
+    def still_fails(candidate):
+        write_case(candidate, work)
+        r = run_validate(args, work)
+        return r["verdict"] == "fail" and stage_family(r["first_failing"]) == stage_family(first["first_failing"])
+
+    small, calls = shrink.shrink(spec, still_fails, budget=args.budget, log=print)
+    write_case(small, work)
+    final = run_validate(args, work)  # the minimal case's own verdict line and note
+    if final["verdict"] != "fail":  # cannot happen for a deterministic validate; keep the original
+        small, final = spec, first
+    folder = os.path.join(args.save, "seed-%d-%s" % (spec["seed"], spec["size_class"]))
+    write_case(small, folder)
+    case = {"seed": spec["seed"], "size_class": spec["size_class"], "generator": "tools/scenegen/hunt.py",
+            "reproduce": "tools/scenegen/hunt.py --write-only --seeds %d --size-class %s" % (spec["seed"], spec["size_class"]),
+            "command": "vct validate scene.gltf --config settings.json --no-report",
+            "verdict_line": final["line"], "first_failing_stage": final["first_failing"], "note": final["note"],
+            "original": spec_size(spec), "minimal": spec_size(small), "shrink_calls": calls, "cause": ""}
+    with open(os.path.join(folder, "case.json"), "w") as f:
+        f.write(json.dumps(case, indent=1) + "\n")
+    shutil.rmtree(work, ignore_errors=True)
+    return folder
+
+
+def parse_seeds(text):
+    seeds = []
+    for part in text.split(","):
+        lo, _, hi = part.partition("-")
+        seeds += list(range(int(lo), int(hi or lo) + 1))
+    return seeds
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", required=True, help="e.g. 0-299 or 1,5,9")
+    ap.add_argument("--size-class", default="small", choices=generate.SIZE_CLASSES)
+    ap.add_argument("--vct", default=os.path.join(ROOT, "build", "bin", "vct"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "runs", "hunt"))
+    ap.add_argument("--save", default=os.path.join(ROOT, "scenes", "regressions"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--budget", type=int, default=120, help="validate runs per shrink")
+    ap.add_argument("--no-shrink", action="store_true")
+    ap.add_argument("--keep-runs", action="store_true")
+    ap.add_argument("--write-only", action="store_true", help="write the scenes, run nothing")
+    ap.add_argument("--expect-no-fail", action="store_true", help="(the exit status says it anyway)")
+    args = ap.parse_args()
+    try:
+        seeds = parse_seeds(args.seeds)
+    except ValueError:
+        print("hunt.py: --seeds %r: expected N, A-B or a comma list of them" % args.seeds, file=sys.stderr)
+        return 2
+    bad = 0
+    counts = {}
+    for seed in seeds:
+        spec = generate.generate(seed, args.size_class)
+        folder = os.path.join(args.out, "seed-%d-%s" % (seed, args.size_class))
+        write_case(spec, folder)
+        if args.write_only:
+            print(folder)
+            continue
+        r = run_validate(args, folder)
+        counts[r["verdict"]] = counts.get(r["verdict"], 0) + 1
+        print("seed %-6d %-8s %6.1f s  %s" % (seed, r["verdict"], r["seconds"], r["first_failing"] or r["line"][:100]),
+              flush=True)
+        record = dict(r, seed=seed, size_class=args.size_class, size=spec_size(spec), settings=spec["settings"])
+        with open(os.path.join(args.out, "results.jsonl"), "a") as f:
+            f.write(json.dumps(record) + "\n")
+        if r["verdict"] in ("fail", "crash"):
+            bad += 1
+        if r["verdict"] == "fail" and not args.no_shrink:
+            print("  saved %s" % shrink_failure(args, spec, r), flush=True)
+        if r["verdict"] in ("pass", "warn"):
+            shutil.rmtree(folder, ignore_errors=True)
+    if not args.write_only:
+        print("verdicts: " + ", ".join("%s %d" % kv for kv in sorted(counts.items())))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
