@@ -74,7 +74,7 @@ def test_every_drawn_setting_is_in_the_settings_table():
     if not os.path.exists(vct):
         pytest.skip("no vct binary at " + vct)
     table = subprocess.run([vct, "settings", "--markdown"], capture_output=True, text=True, check=True).stdout
-    for key in settings_draw.CHOICES:
+    for key in list(settings_draw.CHOICES) + ["shadow_map_size", "width", "height", "grid"]:
         assert "`vct.%s`" % key in table, key
 
 
@@ -104,4 +104,5 @@ def test_settings_file_carries_sizes_and_spp():
     doc = hunt.settings_document(spec)
     assert doc["pt"] == {"spp": 4}
     assert (doc["vct"]["width"], doc["vct"]["height"], doc["vct"]["grid"]) == (spec["width"], spec["height"], spec["grid"])
+    assert doc["vct"]["shadow_map_size"] == spec["shadow_map_size"]
     json.dumps(doc)

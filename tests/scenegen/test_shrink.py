@@ -46,6 +46,7 @@ def test_shrinks_to_the_culprit():
     assert small["settings"] == {"bounces": 2}
     assert (small["width"], small["height"], small["grid"]) == (spec["width"] // 2 ** int(np.log2(spec["width"] // 8)),
                                                                 spec["height"] // 2 ** int(np.log2(spec["height"] // 8)), 16)
+    assert small["shadow_map_size"] == 64
     assert small["textures"] == [] and len(small["materials"]) == 1
     assert make_predicate(name, corners, [])(small)
 

@@ -16,6 +16,7 @@ import textures
 SIZE_CLASSES = ["small", "medium", "large"]
 IMAGE_SIDE = {"small": (8, 64), "medium": (32, 128), "large": (64, 256)}
 GRIDS = {"small": [16, 32], "medium": [32, 64], "large": [64, 128]}
+SHADOW_MAP_SIZES = {"small": [64, 128, 256, 512], "medium": [256, 512, 1024], "large": [1024, 2048]}
 MESH_COUNT = {"small": (1, 4), "medium": (2, 6), "large": (1, 3)}
 LIGHT_COUNT = {"small": (1, 3), "medium": (1, 5), "large": (1, 4)}
 
@@ -247,6 +248,7 @@ def generate(seed, size_class="small"):
     lo, hi = IMAGE_SIDE[size_class]
     spec["width"], spec["height"] = int(rng.integers(lo, hi + 1)), int(rng.integers(lo, hi + 1))
     spec["grid"] = int(rng.choice(GRIDS[size_class]))
+    spec["shadow_map_size"] = int(rng.choice(SHADOW_MAP_SIZES[size_class]))
     extent = float(rng.uniform(1.5, 6.0))
     inside = rng.random() < 0.6
     if inside:

@@ -102,7 +102,7 @@ def _set_triangles(mesh, tris):
 
 
 def halve_sizes(spec):
-    for key, floor in (("width", 8), ("height", 8), ("grid", 16)):
+    for key, floor in (("width", 8), ("height", 8), ("grid", 16), ("shadow_map_size", 64)):
         if spec[key] // 2 >= floor:
             s = copy.deepcopy(spec)
             s[key] = spec[key] // 2
