@@ -5,6 +5,7 @@ shrunk to minimal regression cases.
     .venv/bin/python tools/scenegen/hunt.py --seeds 0-299 [--size-class small] [--vct build/bin/vct]
         [--out runs/hunt] [--save scenes/regressions] [--threads 2] [--no-shrink] [--budget 120]
     .venv/bin/python tools/scenegen/hunt.py --write-only --seeds 5 --out DIR   # just the scene files
+    .venv/bin/python tools/scenegen/hunt.py --summarize --out runs/hunt         # counts per verdict, stage
 
 Per seed: writes OUT/seed-N/scene.gltf and settings.json (everything validate needs: image size,
 grid, shadow map size, pt.spp 4 and the drawn settings), runs `vct validate --config settings.json --no-report`, and
@@ -116,6 +117,21 @@ def shrink_failure(args, spec, first):
     return folder
 
 
+def summarize(out):
+    """Counts per verdict, then per first failing stage with its seeds, from OUT/results.jsonl."""
+    rows = [json.loads(line) for line in open(os.path.join(out, "results.jsonl")) if line.strip()]
+    verdicts, stages = {}, {}
+    for r in rows:
+        verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
+        if r["verdict"] not in ("pass", "warn"):
+            stages.setdefault(r["first_failing"] or r["verdict"], []).append(r["seed"])
+    seconds = sum(r["seconds"] for r in rows)
+    print("%d scenes, %.0f s of validate runs; %s" % (len(rows), seconds,
+                                                        ", ".join("%s %d" % kv for kv in sorted(verdicts.items()))))
+    for stage, seeds in sorted(stages.items(), key=lambda kv: -len(kv[1])):
+        print("  %-24s %3d  seeds %s" % (stage, len(seeds), ",".join(map(str, seeds))))
+
+
 def parse_seeds(text):
     seeds = []
     for part in text.split(","):
@@ -126,7 +142,8 @@ def parse_seeds(text):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--seeds", required=True, help="e.g. 0-299 or 1,5,9")
+    ap.add_argument("--seeds", help="e.g. 0-299 or 1,5,9")
+    ap.add_argument("--summarize", action="store_true", help="print OUT/results.jsonl's counts, run nothing")
     ap.add_argument("--size-class", default="small", choices=generate.SIZE_CLASSES)
     ap.add_argument("--vct", default=os.path.join(ROOT, "build", "bin", "vct"))
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "hunt"))
@@ -137,6 +154,12 @@ def main():
     ap.add_argument("--keep-runs", action="store_true")
     ap.add_argument("--write-only", action="store_true", help="write the scenes, run nothing")
     args = ap.parse_args()
+    if args.summarize:
+        summarize(args.out)
+        return 0
+    if not args.seeds:
+        print("hunt.py: --seeds is required (or --summarize)", file=sys.stderr)
+        return 2
     try:
         seeds = parse_seeds(args.seeds)
     except ValueError:
