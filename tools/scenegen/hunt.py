@@ -62,8 +62,7 @@ def run_validate(args, folder):
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
     result = {"rc": proc.returncode, "seconds": round(time.time() - start, 2), "first_failing": "", "note": "",
               "line": ""}
-    m = re.search(r"GPU \(gl\) vs CPU reference: .*", proc.stdout)
-    result["line"] = m.group(0).strip() if m else proc.stdout.strip().splitlines()[-1:][0] if proc.stdout.strip() else ""
+    result["line"] = verdict_line(proc.stdout)
     kinds = {0: None, 1: "fail", 2: "refused", 3: "no-gl"}
     result["verdict"] = kinds.get(proc.returncode, "crash")
     try:
@@ -78,6 +77,15 @@ def run_validate(args, folder):
     if not args.keep_runs:
         shutil.rmtree(run, ignore_errors=True)
     return result
+
+
+def verdict_line(output):
+    """validate's verdict line, else (a refusal, a crash) the last line it printed."""
+    m = re.search(r"GPU \(gl\) vs CPU reference: .*", output)
+    if m:
+        return m.group(0).strip()
+    lines = output.strip().splitlines()
+    return lines[-1] if lines else ""
 
 
 def stage_family(name):
