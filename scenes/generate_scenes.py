@@ -801,10 +801,10 @@ def light_order():
     """Issue 34's zoo: what users' files have and the other scenes lacked. Every light kind in a
     mixed order (a point lamp, then a spot, then a sun, then a second point lamp: a spot and a sun
     after a point light, a point after a sun) and vertex colours: the floor carries float COLOR_0
-    (a warm-to-cool gradient), the platform normalized-ubyte COLOR_0 (red to yellow) with alpha < 1
-    on an opaque material (alpha is ignored there, glTF 2.0 3.9.4). The shell, skylight, sun and lamps are
-    sun_room's, placed clear of the constant bias's acne at validate's 1024^2 maps; the spot shines
-    down onto the platform from 3.3 m (every plane it sees lies >= 1.6 m from it)."""
+    (a warm-to-cool gradient), the platform normalized-ubyte COLOR_0 (red to yellow) with alpha
+    < 1 on an opaque material (alpha is ignored there, glTF 2.0 3.9.4). The shell, skylight, sun
+    and lamps are sun_room's, placed clear of the constant bias's acne at validate's 1024^2 maps;
+    the spot shines down onto the platform from 3.3 m (every plane it sees lies >= 1.6 m from it)."""
     g = Gltf("light kinds in a mixed order and vertex colours (COLOR_0)")
     wall = g.material("plaster", (0.75, 0.73, 0.7), lambert=True)
     floor_mat = g.material("painted_floor", (0.9, 0.9, 0.9), roughness=0.6)
