@@ -21,7 +21,7 @@ import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-FLOAT, UINT16, UINT32 = 5126, 5123, 5125
+FLOAT, UINT8, UINT16, UINT32 = 5126, 5121, 5123, 5125
 ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
 LAMBERT = {"KHR_materials_specular": {"specularFactor": 0.0}}
 
@@ -78,6 +78,14 @@ class MeshData:
     def __init__(self, with_normals=True, with_uv=True, with_tangents=False):
         self.pos, self.nrm, self.uv, self.idx, self.tan = [], [], [], [], []
         self.with_normals, self.with_uv, self.with_tangents = with_normals, with_uv, with_tangents
+        # COLOR_0 (linear RGBA in [0, 1], one per vertex) once set_colors is called; "float" writes
+        # float VEC4, "ubyte" normalized unsigned bytes (what exporters write, glTF 2.0 3.7.2.1).
+        self.colors, self.color_encoding = None, None
+
+    def set_colors(self, color_of_position, encoding="float"):
+        """Vertex colours from a function of the vertex position (call after the geometry)."""
+        self.colors = [list(color_of_position(p)) for p in self.pos]
+        self.color_encoding = encoding
 
     def vertex(self, p, n=None, uv=None):
         self.pos.append(p)
@@ -353,12 +361,14 @@ class Gltf:
         self.doc["bufferViews"].append(view)
         return len(self.doc["bufferViews"]) - 1
 
-    def _accessor(self, values, comps, ctype, target, minmax=False):
-        fmt = {FLOAT: "f", UINT16: "H", UINT32: "I"}[ctype]
+    def _accessor(self, values, comps, ctype, target, minmax=False, normalized=False):
+        fmt = {FLOAT: "f", UINT8: "B", UINT16: "H", UINT32: "I"}[ctype]
         flat = [x for v in values for x in (v if comps > 1 else [v])]
         view = self._view(struct.pack("<%d%s" % (len(flat), fmt), *flat), target)
         acc = {"bufferView": view, "componentType": ctype, "count": len(values),
                "type": {1: "SCALAR", 2: "VEC2", 3: "VEC3", 4: "VEC4"}[comps]}
+        if normalized:
+            acc["normalized"] = True
         if minmax:
             # min/max of the float32 values actually stored (the validator compares exactly).
             f32 = [struct.unpack("<f", struct.pack("<f", x))[0] for x in flat]
@@ -375,6 +385,11 @@ class Gltf:
             attrs["TANGENT"] = self._accessor(m.tan, 4, FLOAT, ARRAY_BUFFER)
         if m.with_uv:
             attrs["TEXCOORD_0"] = self._accessor(m.uv, 2, FLOAT, ARRAY_BUFFER)
+        if m.colors is not None and m.color_encoding == "ubyte":
+            bytes4 = [[int(round(min(max(c, 0.0), 1.0) * 255)) for c in v] for v in m.colors]
+            attrs["COLOR_0"] = self._accessor(bytes4, 4, UINT8, ARRAY_BUFFER, normalized=True)
+        elif m.colors is not None:
+            attrs["COLOR_0"] = self._accessor(m.colors, 4, FLOAT, ARRAY_BUFFER)
         itype = UINT16 if len(m.pos) < 65536 else UINT32
         prim = {"attributes": attrs, "indices": self._accessor(m.idx, 1, itype, ELEMENT_ARRAY_BUFFER), "material": material}
         self.doc["meshes"].append({"name": name, "primitives": [prim]})
@@ -782,6 +797,54 @@ def sun_room():
     return g.write("sun_room.gltf")
 
 
+def light_order():
+    """Issue 34's zoo: what users' files have and the other scenes lacked. Every light kind in a
+    mixed order (a point lamp, then a spot, then a sun, then a second point lamp: a spot and a sun
+    after a point light, a point after a sun) and vertex colours: the floor carries float COLOR_0
+    (a warm-to-cool gradient), the platform normalized-ubyte COLOR_0 (red to yellow) with alpha
+    < 1 on an opaque material (alpha is ignored there, glTF 2.0 3.9.4). The shell, skylight, sun
+    and lamps are sun_room's, placed clear of the constant bias's acne at validate's 1024^2 maps;
+    the spot shines down onto the platform from 3.3 m (every plane it sees lies >= 1.6 m from it)."""
+    g = Gltf("light kinds in a mixed order and vertex colours (COLOR_0)")
+    wall = g.material("plaster", (0.75, 0.73, 0.7), lambert=True)
+    floor_mat = g.material("painted_floor", (0.9, 0.9, 0.9), roughness=0.6)
+    platform_mat = g.material("painted_platform", (1.0, 1.0, 1.0), roughness=0.5)
+    h = 3.8
+
+    def quad(name, mat, origin, du, dv, n=6, colors=None):
+        m = MeshData()
+        m.quad(origin, du, dv, nu=n, nv=n)
+        if colors:
+            m.set_colors(*colors)
+        g.node(name, mesh=g.mesh(name, m, mat))
+
+    gradient = (lambda p: (0.95 - 0.12 * (p[0] + 2.5), 0.55 + 0.05 * (p[2] + 2.5), 0.3 + 0.12 * (p[0] + 2.5), 1.0),
+                "float")
+    quad("floor", floor_mat, [-2.5, 0, 2.5], [5, 0, 0], [0, 0, -5], colors=gradient)
+    quad("back_wall", wall, [-2.5, 0, -2.5], [5, 0, 0], [0, h, 0])
+    quad("front_wall", wall, [2.5, 0, 2.5], [-5, 0, 0], [0, h, 0])
+    quad("left_wall", wall, [-2.5, 0, 2.5], [0, 0, -5], [0, h, 0])
+    quad("right_wall", wall, [2.5, 0, -2.5], [0, 0, 5], [0, h, 0])
+    quad("ceiling_left", wall, [-2.5, h, -2.5], [3.1, 0, 0], [0, 0, 5], n=4)
+    quad("ceiling_right", wall, [1.8, h, -2.5], [0.7, 0, 0], [0, 0, 5], n=2)
+    quad("ceiling_back", wall, [0.6, h, -2.5], [1.2, 0, 0], [0, 0, 1.9], n=2)
+    quad("ceiling_front", wall, [0.6, h, 0.6], [1.2, 0, 0], [0, 0, 1.9], n=2)
+    platform = MeshData()
+    platform.box([0.9, 0.0, -2.4], [1.8, 0.35, 2.4])
+    # Saturated corners: red at the back end (z = -2.4), yellow at the front end, interpolated
+    # along the box; alpha 0.5 (ignored: the material is opaque).
+    platform.set_colors(lambda p: (1.0, 0.1, 0.1, 0.5) if p[2] < 0 else (1.0, 1.0, 0.1, 0.5), "ubyte")
+    g.node("platform", mesh=g.mesh("platform", platform, platform_mat))
+
+    g.point("lamp_back", [-0.7, 1.9, -0.8], intensity=4.0, color=(1.0, 0.8, 0.6))
+    g.spot("platform_spot", [-0.6, 3.3, 0.4], look_rotation([-0.6, 3.3, 0.4], [1.35, 0.35, 0.0]), intensity=10.0,
+           inner=0.3, outer=0.55, color=(0.9, 0.95, 1.0))
+    g.sun("sun", normalize([-0.15, -1.0, 0.08]), lux=8.0, color=(1.0, 0.95, 0.85))
+    g.point("lamp_front", [-0.7, 1.9, 0.8], intensity=4.0, color=(1.0, 0.85, 0.7), light_range=6.0)
+    g.camera([-2.2, 1.6, 2.2], [0.8, 0.6, -0.8], yfov=1.0)
+    return g.write("light_order.gltf")
+
+
 def arch_mesh(m, center, inner, outer, depth, segments):
     """A semicircular arch in the x = const plane: a half annulus (radii inner..outer) about
     `center`, spanning z from -outer to +outer and y upward, extruded over x in +-depth/2. The
@@ -928,7 +991,7 @@ def material_room():
 def main():
     outputs = []
     for make in (cornell_box, demo_room, furnace_sphere, plane_spot, tiny_triangles, thin_wall, foliage, tiled_floor,
-                 sun_room, atrium, scanned_statue, material_room):
+                 sun_room, atrium, scanned_statue, material_room, light_order):
         result = make()
         outputs += result if isinstance(result, list) else [result]
     check = "--check" in sys.argv
