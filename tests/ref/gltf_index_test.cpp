@@ -1,0 +1,160 @@
+// Issue 38 item 1: every glTF index is checked before anything reads it. One case per kind of
+// index (morph target accessors, node light/camera/mesh/skin, material/texture/sampler/image,
+// negative and wrongly typed indices): an InputError naming the property, never a crash or a
+// silently substituted "absent".
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "core/error.h"
+#include "gltf_test_doc.h"
+#include "scene/gltf_loader.h"
+
+namespace vct {
+namespace {
+
+using nlohmann::json;
+using test::GltfDoc;
+
+struct IndexCase {
+  const char* name;
+  const char* expected;  // substring of the message
+  std::function<void(GltfDoc&)> edit;
+};
+
+void add_texture(GltfDoc& d) {
+  d.j["images"] = {{{"uri", "albedo.png"}}};
+  d.j["samplers"] = json::array({json::object()});
+  d.j["textures"] = {{{"source", 0}, {"sampler", 0}}};
+}
+
+void add_light(GltfDoc& d) {
+  d.j["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 1.0}}}}}}};
+}
+
+const std::vector<IndexCase>& index_cases() {
+  static const std::vector<IndexCase> cases = {
+      {"morph_target_accessor", "meshes[0].primitives[0].targets[0].POSITION is 1000000, but accessors has 3 entries",
+       [](GltfDoc& d) {
+         d.j["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", 1000000}}};
+         d.j["meshes"][0]["weights"] = {1.0};
+       }},
+      {"morph_target_small_index", "targets[0].NORMAL is 3, but accessors has 3 entries",
+       [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["targets"] = {{{"NORMAL", 3}}}; }},
+      {"node_light_negative", "nodes[0].extensions.KHR_lights_punctual.light is -1, not an index",
+       [](GltfDoc& d) {
+         add_light(d);
+         d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", -1}}}};
+       }},
+      {"node_light_out_of_range", "KHR_lights_punctual.light is 1, but extensions.KHR_lights_punctual.lights has 1 entry",
+       [](GltfDoc& d) {
+         add_light(d);
+         d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 1}}}};
+       }},
+      {"node_light_no_lights", "lights has 0 entries",
+       [](GltfDoc& d) { d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}}; }},
+      {"node_camera", "nodes[0].camera is 2, but cameras has 0 entries", [](GltfDoc& d) { d.j["nodes"][0]["camera"] = 2; }},
+      {"node_camera_negative", "nodes[0].camera is -1, not an index", [](GltfDoc& d) { d.j["nodes"][0]["camera"] = -1; }},
+      {"node_mesh", "nodes[0].mesh is 7, but meshes has 1 entry", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = 7; }},
+      {"node_mesh_string", "nodes[0].mesh is \"0\", not an index", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = "0"; }},
+      {"node_mesh_fraction", "nodes[0].mesh is 0.5, not an index", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = 0.5; }},
+      {"node_skin", "nodes[0].skin is 0, but skins has 0 entries", [](GltfDoc& d) { d.j["nodes"][0]["skin"] = 0; }},
+      {"node_child", "nodes[0].children[0] is 5, but nodes has 1 entry", [](GltfDoc& d) { d.j["nodes"][0]["children"] = {5}; }},
+      {"scene_root", "scenes[0].nodes[0] is -3, not an index", [](GltfDoc& d) { d.j["scenes"][0]["nodes"] = {-3}; }},
+      {"default_scene", "scene is 4, but scenes has 1 entry", [](GltfDoc& d) { d.j["scene"] = 4; }},
+      {"primitive_material", "primitives[0].material is 9, but materials has 1 entry",
+       [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["material"] = 9; }},
+      {"primitive_indices_negative", "primitives[0].indices is -2, not an index",
+       [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["indices"] = -2; }},
+      {"material_texture", "materials[0].pbrMetallicRoughness.baseColorTexture.index is 1, but textures has 1 entry",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 1}};
+       }},
+      {"material_normal_texture_negative", "materials[0].normalTexture.index is -1, not an index",
+       [](GltfDoc& d) { d.j["materials"][0]["normalTexture"] = {{"index", -1}}; }},
+      {"texture_sampler", "textures[0].sampler is 3, but samplers has 1 entry",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["textures"][0]["sampler"] = 3;
+       }},
+      {"texture_image", "textures[0].source is 1, but images has 1 entry",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["textures"][0]["source"] = 1;
+       }},
+      {"image_buffer_view", "images[0].bufferView is 10, but bufferViews has 3 entries",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["images"][0] = {{"bufferView", 10}, {"mimeType", "image/png"}};
+       }},
+      {"accessor_buffer_view", "accessors[1].bufferView is -5, not an index",
+       [](GltfDoc& d) { d.j["accessors"][1]["bufferView"] = -5; }},
+      {"buffer_view_buffer", "bufferViews[2].buffer is 1, but buffers has 1 entry",
+       [](GltfDoc& d) { d.j["bufferViews"][2]["buffer"] = 1; }},
+      {"children_not_array", "nodes[0].children is not an array", [](GltfDoc& d) { d.j["nodes"][0]["children"] = 1; }},
+  };
+  return cases;
+}
+
+class BadIndex : public ::testing::TestWithParam<size_t> {};
+
+TEST_P(BadIndex, IsRefusedNamingTheProperty) {
+  const IndexCase& c = index_cases()[GetParam()];
+  GltfDoc d = test::quad_doc();
+  c.edit(d);
+  const std::string path = test::write_file(std::string(c.name) + ".gltf", d.text());
+  try {
+    (void)load_gltf_file(path);
+    FAIL() << c.name << ": loaded without error";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+    EXPECT_NE(msg.find(c.expected), std::string::npos) << c.name << ": " << msg;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllKinds, BadIndex, ::testing::Range<size_t>(0, index_cases().size()),
+                         [](const ::testing::TestParamInfo<size_t>& p) { return std::string(index_cases()[p.param].name); });
+
+// The same document with valid indices loads: the cases above fail for their one edit alone.
+TEST(BadIndex, ValidIndicesLoad) {
+  GltfDoc d = test::quad_doc();
+  add_light(d);
+  d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+  const Scene s = load_gltf_text(d.text(), "valid.gltf", ".");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.triangles.size(), 2u);
+}
+
+// A chain of nodes (each the only child of the one before) is a tree however long; closing it
+// into a ring is a cycle. The check walks each node once (docs/scenes.md, "Limits").
+std::string chain_doc(size_t nodes, bool ring) {
+  GltfDoc d = test::quad_doc();
+  json list = json::array();
+  for (size_t i = 0; i < nodes; ++i) {
+    json n = json::object();
+    if (i + 1 < nodes) n["children"] = {i + 1};
+    else if (ring) n["children"] = {0};
+    list.push_back(std::move(n));
+  }
+  list[nodes - 1]["mesh"] = 0;
+  d.j["nodes"] = std::move(list);
+  return d.text();
+}
+
+TEST(NodeChain, LongChainLoadsAndItsRingIsRefused) {
+  constexpr size_t kNodes = 100000;
+  const Scene s = load_gltf_text(chain_doc(kNodes, false), "chain.gltf", ".");
+  EXPECT_EQ(s.triangles.size(), 2u);
+  try {
+    (void)load_gltf_text(chain_doc(kNodes, true), "ring.gltf", ".");
+    FAIL() << "a ring of nodes loaded";
+  } catch (const InputError& e) {
+    // Every node has one parent, and none reaches a root: the first node walked is named.
+    EXPECT_NE(std::string(e.what()).find("node graph has a cycle through node 0"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace vct
