@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "io/bounded_json.h"
 
 namespace vct::app {
 
@@ -92,9 +93,7 @@ bool add_report_parts(PhaseTimes& phases, const std::string& part_times_json, do
                       double report_cpu_ms) {
   nlohmann::json j;
   try {
-    std::ifstream in(part_times_json);
-    if (!in) throw std::runtime_error("missing");
-    j = nlohmann::json::parse(in);
+    j = read_bounded_json_file(part_times_json, "report part times");
   } catch (const std::exception&) {
     phases.add("report", report_wall_ms, false, report_cpu_ms);
     return false;

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
-#include <fstream>
 #include <set>
 
 #include "core/error.h"
 #include "core/parallel_tasks.h"
 #include "io/atomic_file.h"
+#include "io/bounded_json.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "io/run_dir.h"
@@ -133,13 +133,8 @@ void check_kind_of_name(const std::string& manifest, const std::string& name, co
 StageSet read_stage_set_unguarded(const std::string& path) {
   fs::path manifest = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
   if (!fs::exists(manifest)) throw InputError(path, "no vct-stages.json manifest here (docs/external_format.md)");
-  nlohmann::json m;
-  try {
-    std::ifstream in(manifest);
-    m = nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    throw InputError(manifest.string(), std::string("not valid JSON: ") + e.what());
-  }
+  // Regular file, size and depth bounded (a manifest 300 000 levels deep overflowed the stack).
+  const nlohmann::json m = read_bounded_json_file(manifest.string(), "stage-set manifest");
   if (!m.is_object() || m.value("format", "") != "vct-stages")
     throw InputError(manifest.string(), "\"format\" must be \"vct-stages\"");
   if (!m.contains("stages") || !m["stages"].is_object())

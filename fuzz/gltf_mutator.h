@@ -9,7 +9,7 @@
 //   - set index fields (glTF 2.0 spec §3.7: an index names an element of a top-level array) to the
 //     array's size, -1 or beyond 2^31;
 //   - set URIs to what the file-access policy judges (docs/scenes.md, "File access");
-//   - nest a value 127-20 000 levels deep (ref/scene/json_nesting.h refuses beyond 128).
+//   - nest a value 127-20 000 levels deep (ref/io/bounded_json.h refuses beyond 128).
 // Raw tokens and deep nesting are spliced into the text after serialization: nlohmann's dump
 // recurses, and JSON has no NaN. Used by fuzz/gltf_fuzz.cpp (LLVMFuzzerCustomMutator) and by
 // tests/ref/gltf_mutator_test.cpp; header-only, so the fuzz build and the tests share it.
@@ -24,7 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/json_nesting.h"
+#include "io/bounded_json.h"
 
 namespace vct::fuzz {
 

@@ -13,7 +13,7 @@
 #include "io/image_io.h"
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_loader.h"
-#include "scene/json_nesting.h"
+#include "io/bounded_json.h"
 
 namespace vct {
 namespace {

@@ -14,7 +14,7 @@
 #include "../../fuzz/gltf_mutator.h"
 #include "core/error.h"
 #include "scene/gltf_loader.h"
-#include "scene/json_nesting.h"
+#include "io/bounded_json.h"
 
 namespace vct {
 namespace {
