@@ -16,6 +16,11 @@ void write_atomically(const std::string& path, const std::function<void(const st
 /// The one-line error for a failed write of `path` with errno `err`, as write_atomically throws it.
 [[noreturn]] void throw_write_error(const std::string& path, int err);
 
+/// Writes `size` bytes to the new file `tmp`, checking every write(2) and the close: on failure it
+/// throws with errno kept, for write_atomically to report (a library that ignores a failed fwrite
+/// must not produce the bytes it writes: issue 38's 0-byte PNG/EXR files after a full disk).
+void write_bytes_checked(const std::string& tmp, const void* data, size_t size);
+
 /// Writes `text` to `path` atomically.
 void write_text_atomically(const std::string& path, const std::string& text);
 
