@@ -17,7 +17,7 @@
 #include "scene/embedded_scenes.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_image_budget.h"
-#include "scene/gltf_index_table.h"
+#include "scene/gltf_property_table.h"
 #include "scene/gltf_internal.h"
 #include "scene/scene_finite.h"
 #include "scene/texture_mips.h"
@@ -181,7 +181,7 @@ Scene parse(const std::string& bytes, bool glb, const std::string& name, const s
             const SceneLoadOptions& options) {
   std::vector<std::string> warnings;
   const nlohmann::json doc = precheck_json(glb ? check_glb(bytes, name) : bytes, name, warnings);
-  gltf::check_document_indices(doc, name);  // before tinygltf stores absent or negative ones as -1
+  gltf::check_document_properties(doc, name);  // before tinygltf turns bad values into defaults
   // The policy is checked on every URI before tinygltf opens any file, and tinygltf opens files
   // only through the policy's callbacks (gltf_file_access.h).
   const gltf::FileAccess access(base_dir, options.allow_outside_scene_dir);

@@ -121,9 +121,9 @@ const std::vector<BadCase>& bad_cases() {
        [] { return doc_file("dangling_mesh", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = 5; }); }},
       {"dangling_material", "primitives[0].material is 3, but materials has 1 entry",
        [] { return doc_file("dangling_material", [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["material"] = 3; }); }},
-      {"unknown_alpha_mode", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND",
+      {"unknown_alpha_mode", "materials[0].alphaMode is \"CUTOUT\"; it must be one of \"OPAQUE, MASK, BLEND\"",
        [] { return doc_file("unknown_alpha_mode", [](GltfDoc& d) { d.j["materials"][0]["alphaMode"] = "CUTOUT"; }); }},
-      {"negative_alpha_cutoff", "alphaCutoff must be a finite number >= 0",
+      {"negative_alpha_cutoff", "materials[0].alphaCutoff is -0.25; it must be a number >= 0",
        [] {
          return doc_file("negative_alpha_cutoff", [](GltfDoc& d) {
            d.j["materials"][0]["alphaMode"] = "MASK";

@@ -1,7 +1,7 @@
-// Issue 38 item 1: every glTF index is checked before anything reads it. One case per kind of
-// index (morph target accessors, node light/camera/mesh/skin, material/texture/sampler/image,
-// negative and wrongly typed indices): an InputError naming the property, never a crash or a
-// silently substituted "absent".
+// Issue 38 items 1 and 7: every glTF index is checked before anything reads it (one case per kind:
+// morph target accessors, node light/camera/mesh/skin, material/texture/sampler/image, negative
+// and wrongly typed indices), and every property the loader reads has its type, enum or range
+// checked: an InputError naming the property, never a crash or a silently substituted default.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -95,6 +95,89 @@ const std::vector<IndexCase>& index_cases() {
       {"children_not_array", "nodes[0].children is not an array", [](GltfDoc& d) { d.j["nodes"][0]["children"] = 1; }},
   };
   return cases;
+}
+
+// What tinygltf replaced by its default in silence (issue 38, "Silent substitutions").
+const std::vector<IndexCase>& property_cases() {
+  static const std::vector<IndexCase> cases = {
+      {"sampler_wrap_42", "samplers[0].wrapS is 42; it must be one of 33071, 33648, 10497",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["samplers"][0]["wrapS"] = 42;
+       }},
+      {"sampler_mag_filter_mipmap", "samplers[0].magFilter is 9987; it must be one of 9728, 9729",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["samplers"][0]["magFilter"] = 9987;
+       }},
+      {"sampler_filter_string", "samplers[0].minFilter is \"LINEAR\"; it must be one of",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["samplers"][0]["minFilter"] = "LINEAR";
+       }},
+      {"light_intensity_string", "lights[0].intensity is \"10\"; it must be a number >= 0",
+       [](GltfDoc& d) {
+         add_light(d);
+         d.j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = "10";
+       }},
+      {"alpha_mode_number", "materials[0].alphaMode is 1; it must be one of \"OPAQUE, MASK, BLEND\"",
+       [](GltfDoc& d) { d.j["materials"][0]["alphaMode"] = 1; }},
+      {"alpha_cutoff_string", "materials[0].alphaCutoff is \"0.5\"; it must be a number >= 0",
+       [](GltfDoc& d) { d.j["materials"][0]["alphaCutoff"] = "0.5"; }},
+      {"texture_transform_rotation_string",
+       "baseColorTexture.extensions.KHR_texture_transform.rotation is \"abc\"; it must be a number",
+       [](GltfDoc& d) {
+         add_texture(d);
+         d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {
+             {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"rotation", "abc"}}}}}};
+       }},
+      {"emissive_strength_string", "KHR_materials_emissive_strength.emissiveStrength is \"abc\"; it must be a number",
+       [](GltfDoc& d) {
+         d.j["materials"][0]["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", "abc"}}}};
+       }},
+      {"morph_weights_string", "meshes[0].weights is [\"a\"]; it must be an array of numbers",
+       [](GltfDoc& d) { d.j["meshes"][0]["weights"] = {"a"}; }},
+      {"accessor_negative_byte_offset", "accessors[0].byteOffset is -4; it must be an integer >= 0",
+       [](GltfDoc& d) { d.j["accessors"][0]["byteOffset"] = -4; }},
+      {"buffer_view_offset_2_to_64", "bufferViews[0].byteOffset is 1.8446744073709552e+19; it must be an integer >= 0",
+       [](GltfDoc& d) { d.j["bufferViews"][0]["byteOffset"] = 18446744073709551616.0; }},
+      {"matrix_of_15_numbers", "nodes[0].matrix is [1,0,0,0,0,1,0,0,0,0,1,0,0,0,1]; it must be an array of 16 numbers",
+       [](GltfDoc& d) { d.j["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1}; }},
+      {"base_color_factor_of_3", "baseColorFactor is [1,0.5,0.5]; it must be an array of 4 numbers >= 0",
+       [](GltfDoc& d) { d.j["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1, 0.5, 0.5}; }},
+  };
+  return cases;
+}
+
+class BadProperty : public ::testing::TestWithParam<size_t> {};
+
+TEST_P(BadProperty, IsRefusedNamingThePropertyAndTheRule) {
+  const IndexCase& c = property_cases()[GetParam()];
+  GltfDoc d = test::quad_doc();
+  c.edit(d);
+  try {
+    (void)load_gltf_text(d.text(), std::string(c.name) + ".gltf", ".");
+    FAIL() << c.name << ": loaded without error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << c.name << ": " << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllKinds, BadProperty, ::testing::Range<size_t>(0, property_cases().size()),
+                         [](const ::testing::TestParamInfo<size_t>& p) { return std::string(property_cases()[p.param].name); });
+
+// metallic and roughness outside [0, 1] are clamped as engines do, with a warning naming both values.
+TEST(BadProperty, MetallicAndRoughnessOutsideTheUnitRangeAreClampedWithAWarning) {
+  GltfDoc d = test::quad_doc();
+  d.j["materials"][0]["pbrMetallicRoughness"] = {{"metallicFactor", -1.0}, {"roughnessFactor", 5.0}};
+  const Scene s = load_gltf_text(d.text(), "clamp.gltf", ".");
+  ASSERT_FALSE(s.materials.empty());
+  EXPECT_EQ(s.materials[0].metallic_factor, 0.0f);
+  EXPECT_EQ(s.materials[0].roughness_factor, 1.0f);
+  std::string all;
+  for (const std::string& w : s.stats.warnings) all += w + "\n";
+  EXPECT_NE(all.find("material 0 'white' metallicFactor -1.000000 is outside [0, 1]; using 0"), std::string::npos) << all;
+  EXPECT_NE(all.find("material 0 'white' roughnessFactor 5.000000 is outside [0, 1]; using 1"), std::string::npos) << all;
 }
 
 class BadIndex : public ::testing::TestWithParam<size_t> {};
