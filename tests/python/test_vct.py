@@ -129,7 +129,7 @@ def test_settings_round_trip():
     ({"threads": 2.7}, "threads"),  # issue 38: not truncated to 2
     ({"vct": {"time": float("nan")}}, "broken JSON"),  # json.dumps writes NaN, which JSON lacks
     ({"vct": {"shadow_bias": 1e39}}, "shadow_bias"),  # beyond float: Inf
-    (json.loads("[" * 200 + "]" * 200), "nests deeper than 128"),
+    (json.loads('{"vct": ' + '{"a": ' * 200 + "1" + "}" * 200 + "}"), "nests deeper than 128"),
 ])
 def test_bad_settings_raise_naming_the_key(scene, bad, words):
     with pytest.raises(vct.InputError, match=words):
