@@ -21,23 +21,7 @@ namespace vct {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Starts `vct args...` with stdout to /dev/null and stderr to `err`; returns its pid.
-pid_t spawn_vct(const std::vector<std::string>& args, const fs::path& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(null, 1);
-    ::dup2(e, 2);
-    std::vector<char*> argv{const_cast<char*>(VCT_BINARY)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VCT_BINARY, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
+using test::spawn_vct;
 
 bool wait_until(const std::function<bool()>& done, double seconds) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -67,7 +51,7 @@ TEST(InterruptCli, SigtermDuringValidateIsExitFourWithOneLineAndTheLockFree) {
   // 1600 spp keep the path tracer busy for seconds: the signal lands mid-run.
   const pid_t pid = spawn_vct({"validate", "--width", "32", "--height", "32", "--grid", "16", "--spp", "1600",
                                "--threads", "2", "--no-report", "--out", out.string()},
-                              err);
+                              err.string());
   ASSERT_TRUE(wait_until([&] { return fs::exists(out / "INCOMPLETE"); }, 60.0));
   ::kill(pid, SIGTERM);
   EXPECT_EQ(exit_code_of(pid), app::kExitInterrupted);
