@@ -75,5 +75,18 @@ TEST(HostileInputCli, NonFiniteAndFractionalSettingsAreExitTwo) {
   EXPECT_FALSE(fs::exists(dir / "out"));  // refused before the run directory is created
 }
 
+// A voxel.radiance with 1 of its 4 channels passed `vct compare` (issue 38): the set is refused.
+TEST(HostileInputCli, StageWithFewerChannelsThanItsRowIsExitTwo) {
+  const fs::path dir = test::fresh_dir("one_channel");
+  fs::create_directories(dir / "ext");
+  std::string nrrd = "NRRD0004\ntype: float\ndimension: 3\nsizes: 2 2 2\nendian: little\nencoding: raw\n\n";
+  nrrd += std::string(8 * sizeof(float), '\0');
+  write(dir / "ext" / "radiance.nrrd", nrrd);
+  write(dir / "ext" / "vct-stages.json",
+        R"({"format": "vct-stages", "stages": {"voxel.radiance": {"file": "radiance.nrrd", "kind": "volume"}}})");
+  const std::string ext = (dir / "ext").string();
+  expect_refused("compare '" + ext + "' '" + ext + "'", "stage 'voxel.radiance' has 1 channel(s), but it needs 4");
+}
+
 }  // namespace
 }  // namespace vct
