@@ -210,6 +210,71 @@ TEST(BadIndex, ValidIndicesLoad) {
   EXPECT_EQ(s.triangles.size(), 2u);
 }
 
+// Issue 38 "garbage out": values finite in the file's doubles but not as the renderers' floats, or
+// not after the node transforms, are refused before rendering, naming the object.
+std::string load_message(const GltfDoc& d) {
+  try {
+    (void)load_gltf_text(d.text(), "garbage.gltf", ".");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GarbageOut, LightIntensityBeyondFloatIsRefusedNamingTheLight) {
+  GltfDoc d = test::quad_doc();
+  add_light(d);
+  d.j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 1e39;
+  d.j["extensions"]["KHR_lights_punctual"]["lights"][0]["name"] = "lamp";
+  d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+  EXPECT_NE(load_message(d).find("point light 'lamp': intensity inf x colour is not a finite float"), std::string::npos)
+      << load_message(d);
+  d.j["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 3e38;  // finite, but x colour 2 is not
+  d.j["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {2.0, 1.0, 1.0};
+  EXPECT_NE(load_message(d).find("point light 'lamp': intensity"), std::string::npos) << load_message(d);
+}
+
+TEST(GarbageOut, WorldTransformOverflowingFloatIsRefusedNamingTheNode) {
+  GltfDoc d = test::quad_doc();
+  // Each local scale is a finite float; their product (1e40) is not.
+  d.j["nodes"] = {{{"children", {1}}, {"scale", {1e20, 1e20, 1e20}}}, {{"mesh", 0}, {"scale", {1e20, 1e20, 1e20}}}};
+  EXPECT_NE(load_message(d).find("node 1: its world transform"), std::string::npos) << load_message(d);
+}
+
+// Accessor 3: 4 VEC2 of 3e38 (a TEXCOORD_0 morph target); with weight 2 every UV overflows.
+GltfDoc uv_morph_doc(double weight) {
+  GltfDoc d = test::quad_doc();
+  const size_t at = d.bin.size();
+  test::append<float>(d.bin, {3e38f, 0, 3e38f, 0, 3e38f, 0, 3e38f, 0});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 32}});
+  d.j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+  d.j["meshes"][0]["primitives"][0]["targets"] = {{{"TEXCOORD_0", 3}}};
+  d.j["meshes"][0]["weights"] = {weight};
+  return d;
+}
+
+TEST(GarbageOut, MorphTargetOverflowingTheUvsIsRefused) {
+  EXPECT_NE(load_message(uv_morph_doc(2.0)).find("morph target 0 TEXCOORD_0 (weight 2.000000) makes element 0"),
+            std::string::npos)
+      << load_message(uv_morph_doc(2.0));
+  EXPECT_NE(load_message(uv_morph_doc(1e39)).find("node 0 (mesh 0) morph weight 0 is not a finite float"),
+            std::string::npos)
+      << load_message(uv_morph_doc(1e39));
+  EXPECT_EQ(load_message(uv_morph_doc(0.0)), "");  // the same file at weight 0 loads
+}
+
+TEST(GarbageOut, Uint32ColorIsRefused) {
+  GltfDoc d = test::quad_doc();
+  const size_t at = d.bin.size();
+  test::append<uint32_t>(d.bin, {4000000000u, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  d.j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", 48}});
+  d.j["accessors"].push_back({{"bufferView", 3}, {"componentType", 5125}, {"count", 4}, {"type", "VEC3"}});
+  d.j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 3;
+  EXPECT_NE(load_message(d).find("COLOR_0 (accessor 3) must be FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT"),
+            std::string::npos)
+      << load_message(d);
+}
+
 // A chain of nodes (each the only child of the one before) is a tree however long; closing it
 // into a ring is a cycle. The check walks each node once (docs/scenes.md, "Limits").
 std::string chain_doc(size_t nodes, bool ring) {
