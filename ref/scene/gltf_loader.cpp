@@ -17,8 +17,8 @@
 #include "scene/embedded_scenes.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_image_budget.h"
-#include "scene/gltf_property_table.h"
 #include "scene/gltf_internal.h"
+#include "scene/gltf_property_table.h"
 #include "scene/scene_finite.h"
 #include "scene/texture_mips.h"
 
