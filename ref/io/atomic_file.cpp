@@ -8,10 +8,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
+#include "io/bounded_file.h"
 
 namespace vct {
 
@@ -86,13 +85,8 @@ std::string read_file(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, "no such file");
   if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, expected a file");
-  // A FIFO would block and /dev/zero never end (issue 38; io/bounded_file.h for the sized reads).
-  if (!fs::is_regular_file(path, ec)) throw InputError(path, "is not a regular file (a FIFO, device or socket)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // Regular files only (a FIFO would block, /dev/zero never end), bounded (issue 38).
+  return read_regular_file(path, kMaxInputFileBytes, "stage file");
 }
 
 }  // namespace vct

@@ -10,6 +10,8 @@
 #include "gltf_test_doc.h"
 #include "io/bounded_file.h"
 #include "io/bounded_json.h"
+#include "io/image_io.h"
+#include "io/nrrd.h"
 #include "scene/gltf_loader.h"
 
 namespace vct {
@@ -90,6 +92,13 @@ TEST(BoundedSettingsFile, DeepNumberOverflowDirectoryAndFifoAreInputErrors) {
   EXPECT_NE(refusal([&] { load_settings_file(dir, Settings{}); }).find("is a directory, not a settings file"), std::string::npos);
   const std::string pipe = fifo("config_fifo.json");
   EXPECT_NE(refusal([&] { load_settings_file(pipe, Settings{}); }).find("is not a regular file"), std::string::npos);
+}
+
+// Images and volumes `vct compare` reads (EXR, PNG, NRRD) come through the same reader.
+TEST(BoundedStageFile, ImageAndVolumeFromAFifoOrDeviceAreRefused) {
+  const std::string pipe = fifo("stage_fifo.exr");
+  EXPECT_NE(refusal([&] { read_image(pipe); }).find("is not a regular file"), std::string::npos);
+  EXPECT_NE(refusal([] { read_nrrd("/dev/zero"); }).find("/dev/zero: is not a regular file"), std::string::npos);
 }
 
 TEST(BoundedScene, FifoAndDeviceAreRefusedWithoutReading) {

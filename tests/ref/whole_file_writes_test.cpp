@@ -1,13 +1,11 @@
 // Issue 38 item 8: whole files or none. After a disk-full stop, validate left 23-69 PNG/EXR files
 // of 0 bytes under their final names: OpenImageIO did not report every failed write. Images are
 // now encoded in memory and written with checked write(2)s (io/atomic_file.h). Here a file-size
-// limit (RLIMIT_FSIZE, in a child process) makes every write past 4 KiB fail midway, as a full
+// limit (RLIMIT_FSIZE) makes every write past 4 KiB fail midway, as a full
 // disk does: each writer must throw, and leave neither its final name nor a temporary behind.
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <filesystem>
@@ -36,26 +34,27 @@ Image noise(int w, int h) {
   return img;
 }
 
-// Runs `write` in a child under a 4 KiB file-size limit; the child's exit code: 0 when the write
-// threw EnvironmentError ("cannot write: File too large"), 1 when it returned, 2 for another error.
+// Runs `write` under a 4 KiB soft file-size limit (this process, restored after; no fork: a
+// child of a process whose other threads hold locks can deadlock). 0 when the write threw
+// EnvironmentError ("cannot write: File too large"), 1 when it returned, 2 for another error.
 int write_under_limit(const std::function<void()>& write) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::signal(SIGXFSZ, SIG_IGN);  // as vct's main: the write fails with EFBIG instead
-    const rlimit limit{4096, 4096};
-    ::setrlimit(RLIMIT_FSIZE, &limit);
-    try {
-      write();
-    } catch (const EnvironmentError&) {
-      ::_exit(0);
-    } catch (...) {
-      ::_exit(2);
-    }
-    ::_exit(1);
+  rlimit old{};
+  ::getrlimit(RLIMIT_FSIZE, &old);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);  // as vct's main: the write fails with EFBIG
+  rlimit limit = old;
+  limit.rlim_cur = 4096;
+  ::setrlimit(RLIMIT_FSIZE, &limit);
+  int result = 1;
+  try {
+    write();
+  } catch (const EnvironmentError&) {
+    result = 0;
+  } catch (...) {
+    result = 2;
   }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  return result;
 }
 
 void expect_nothing_left(const fs::path& dir) {
