@@ -14,6 +14,8 @@
 
 #include "compare/stage_timings.h"
 #include "core/error.h"
+#include "interrupt.h"
+#include "io/bounded_json.h"
 #include "core/memory_budget.h"
 #include "core/parallel.h"
 #include "io/run_dir.h"
@@ -140,11 +142,10 @@ nlohmann::json validate_row(const BenchOptions& o) {
   if (!o.scene_path.empty()) cmd += " '" + o.scene_path + "'";
   cmd += " " + o.validate_args + " --threads " + std::to_string(thread_count()) + " --out '" + out + "' > '" + std::string(dir) + "/log' 2>&1";
   Stopwatch sw;
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_child(cmd);  // stopped with vct on Ctrl-C or kill (interrupt.h)
   nlohmann::json row = {{"wall_ms", sw.ms()}, {"exit_code", rc}};
   try {
-    std::ifstream in(out + "/run.json");
-    const nlohmann::json run = nlohmann::json::parse(in);
+    const nlohmann::json run = read_bounded_json_file(out + "/run.json", "run.json");
     row["phases"] = run.at("phases");
     row["settings"] = {{"width", run["settings"]["vct"]["width"]}, {"grid", run["settings"]["vct"]["grid"]},
                        {"spp", run["settings"]["pt"]["spp"]}};

@@ -1,7 +1,7 @@
 // vct pathtrace SCENE --spp N: the Embree ground truth. Writes pt_full, pt_direct, pt_emission,
 // pt_indirect_diffuse, pt_indirect_specular (+ _var) as EXR/PNG and run.json. Resumes from the
 // checkpoint in --out when it matches the scene and settings; a higher --spp refines it.
-// Ctrl-C stops after the current pass with a checkpoint (exit 1); rerun the command to resume.
+// Ctrl-C stops after the current pass with a checkpoint (exit 4, interrupt.h); rerun the command to resume.
 // Cluster tasks (docs/cluster.md): --sample-range A:B --partial FILE renders samples A..B-1 into a
 // partial-sums file; --merge DIR adds DIR's partials in sample order into the run directory;
 // --job-key prints the hashes those files carry (the client checks reused and returned files).
@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "interrupt.h"
 #include "options.h"
 #include "pt/pathtrace_run.h"
 #include "pt/progress.h"
@@ -107,7 +108,7 @@ int run_pathtrace_command(const CommonOptions& common, const PtFlags& f) {
   if (!r.completed) {
     std::fprintf(stderr, "vct pathtrace: interrupted at %u of %d spp; checkpoint saved, rerun to resume\n", r.spp,
                  s.pt.spp);
-    return kExitFailed;
+    return kExitInterrupted;
   }
   return kExitOk;
 }

@@ -4,7 +4,6 @@
 // so `vct compare` reads a dumped run); --explain X,Y writes one pixel's cones.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,6 +17,7 @@
 #include "core/error.h"
 #include "core/memory_budget.h"
 #include "io/atomic_file.h"
+#include "io/bounded_json.h"
 #include "io/image_io.h"
 #include "io/run_dir.h"
 #include "options.h"
@@ -127,10 +127,9 @@ Settings apply_vct_flags(Settings s, const VctFlags& f) {
 BackendFacts read_facts(const std::string& path) {
   namespace fs = std::filesystem;
   const fs::path file = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "cannot read (--facts-from wants a stage set or a run.json)");
+  if (!fs::exists(file)) throw InputError(file.string(), "cannot read (--facts-from wants a stage set or a run.json)");
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = read_bounded_json_file(file.string(), "--facts-from file");
     if (!j.is_object() || !j.contains("facts")) throw InputError(file.string(), "has no \"facts\" (--facts-from)");
     const nlohmann::json& f = j.at("facts");
     if (f.is_object() && f.contains("gl") && f.at("gl").is_object()) return f.at("gl").get<BackendFacts>();

@@ -2,13 +2,13 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "compare/stage_set_frame.h"
 #include "stages/stage_registry.h"
 #include "core/error.h"
+#include "io/bounded_json.h"
 #include "scene/gltf_loader.h"
 #include "scene_warnings.h"
 
@@ -24,8 +24,7 @@ std::string manifest_of(const cmp::StageSet& set) {
 nlohmann::json config_vct(const std::string& config) {
   if (config.empty()) return nlohmann::json::object();
   load_settings_file(config, Settings());
-  std::ifstream in(config);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = read_bounded_json_file(config, "settings file");
   return j.is_object() && j.contains("vct") ? j["vct"] : nlohmann::json::object();
 }
 

@@ -1,5 +1,5 @@
 // vct: the VCT Oracle command line. Exit codes: 0 ok / passed, 1 comparison failed,
-// 2 bad input or usage, 3 environment missing (README.md).
+// 2 bad input or usage, 3 environment missing, 4 interrupted (README.md).
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "interrupt.h"
 
 int main(int argc, char** argv) {
   using namespace vct;
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
   // core dump by default; ignored, the write fails with EFBIG and write_atomically reports it as
   // one line, leaving no partial file (issue 19).
   std::signal(SIGXFSZ, SIG_IGN);
+  // Ctrl-C / kill: one line, children stopped, exit 4 (interrupt.h).
+  app::install_interrupt_handlers();
   CLI::App app{"VCT Oracle: CPU reference, GL build and path-traced ground truth for voxel cone tracing"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "vct 0.1.0");

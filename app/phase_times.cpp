@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "io/bounded_json.h"
 
 namespace vct::app {
 
@@ -90,20 +91,23 @@ std::string PhaseTimes::table() const {
 
 bool add_report_parts(PhaseTimes& phases, const std::string& part_times_json, double report_wall_ms,
                       double report_cpu_ms) {
-  nlohmann::json j;
+  nlohmann::json listed;
   try {
-    std::ifstream in(part_times_json);
-    if (!in) throw std::runtime_error("missing");
-    j = nlohmann::json::parse(in);
+    const nlohmann::json j = read_bounded_json_file(part_times_json, "report part times");
+    if (j.is_object()) listed = j.value("parts", nlohmann::json::array());
+    if (!listed.is_array()) throw std::runtime_error("no parts");
   } catch (const std::exception&) {
     phases.add("report", report_wall_ms, false, report_cpu_ms);
     return false;
   }
   double parts = 0.0, parts_cpu = 0.0;
   bool cpu_known = report_cpu_ms >= 0.0;
-  for (const auto& p : j.value("parts", nlohmann::json::array())) {
+  for (const auto& p : listed) {
+    if (!p.is_object()) continue;
     const double ms = p.value("ms", 0.0), cpu = p.value("cpu_ms", -1.0);
-    phases.add("report: " + p.value("name", std::string("?")), ms, false, cpu);
+    const auto name = p.find("name");
+    phases.add("report: " + (name != p.end() && name->is_string() ? name->get<std::string>() : std::string("?")), ms,
+               false, cpu);
     parts += ms;
     parts_cpu += std::max(0.0, cpu);
     cpu_known = cpu_known && cpu >= 0.0;

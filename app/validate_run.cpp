@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "interrupt.h"
 #include "core/settings_table.h"
 #include "io/run_dir.h"
 #include "pt/path_tracer.h"
@@ -188,7 +189,7 @@ std::string make_report(const std::string& run_dir, std::string& why, const std:
   if (!fs::exists(py)) py = "python3";
   const std::string cmd = "VCT_REPORT_FLIP=" + shell_quote(flip) + " " + shell_quote(py) + " " + shell_quote(root + "/report/make_report.py") + " " +
                           shell_quote(run_dir) + " > " + shell_quote(run_dir + "/report.log") + " 2>&1";
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_child(cmd);  // stopped with vct on Ctrl-C or kill (interrupt.h)
   const std::string index = (fs::path(run_dir) / "report" / "index.html").string();
   if (rc != 0 || !fs::exists(index)) {
     why = "report generator failed (see " + run_dir + "/report.log)";

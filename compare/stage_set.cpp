@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
-#include <fstream>
 #include <set>
 
 #include "core/error.h"
 #include "core/parallel_tasks.h"
 #include "io/atomic_file.h"
+#include "io/bounded_json.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "io/run_dir.h"
@@ -130,16 +130,24 @@ void check_kind_of_name(const std::string& manifest, const std::string& name, co
                                    kind + "' (docs/external_format.md, Stage names)");
 }
 
+// A stage with fewer channels than its registry row says would be judged on what it lacks (a
+// voxel.radiance with 1 of its 4 channels passed `vct compare`: issue 38).
+void check_channels(const std::string& manifest, const std::string& name, const StageSet& set) {
+  const auto ref = find_stage(name);
+  if (!ref || ref->row->channels <= 0) return;
+  const auto image = set.images.find(name);
+  const auto volume = set.volumes.find(name);
+  const int have = image != set.images.end() ? image->second.channels : volume->second.channels;
+  if (have < ref->row->channels)
+    throw InputError(manifest, "stage '" + name + "' has " + std::to_string(have) + " channel(s), but it needs " +
+                                   std::to_string(ref->row->channels) + " (docs/external_format.md, Stage names)");
+}
+
 StageSet read_stage_set_unguarded(const std::string& path) {
   fs::path manifest = fs::is_directory(path) ? fs::path(path) / "vct-stages.json" : fs::path(path);
   if (!fs::exists(manifest)) throw InputError(path, "no vct-stages.json manifest here (docs/external_format.md)");
-  nlohmann::json m;
-  try {
-    std::ifstream in(manifest);
-    m = nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    throw InputError(manifest.string(), std::string("not valid JSON: ") + e.what());
-  }
+  // Regular file, size and depth bounded (a manifest 300 000 levels deep overflowed the stack).
+  const nlohmann::json m = read_bounded_json_file(manifest.string(), "stage-set manifest");
   if (!m.is_object() || m.value("format", "") != "vct-stages")
     throw InputError(manifest.string(), "\"format\" must be \"vct-stages\"");
   if (!m.contains("stages") || !m["stages"].is_object())
@@ -173,6 +181,7 @@ StageSet read_stage_set_unguarded(const std::string& path) {
     } else {
       throw InputError(manifest.string(), "stage '" + name + "' has unknown kind '" + kind + "'");
     }
+    check_channels(manifest.string(), name, set);
     set.files[name] = rel;
   }
   return set;

@@ -8,8 +8,12 @@
 //     (NaN, Infinity, 1e999), or the string "NaN";
 //   - set index fields (glTF 2.0 spec §3.7: an index names an element of a top-level array) to the
 //     array's size, -1 or beyond 2^31;
+//   - rewire the accessor/index graph: set an index field to another *valid* index of its array
+//     (a NORMAL to a VEC2 accessor, a morph target to one of another count, a texture to another
+//     image), so the checks behind the index range (types, counts, component types) are reached
+//     (issue 38);
 //   - set URIs to what the file-access policy judges (docs/scenes.md, "File access");
-//   - nest a value 127-20 000 levels deep (ref/scene/json_nesting.h refuses beyond 128).
+//   - nest a value 127-20 000 levels deep (ref/io/bounded_json.h refuses beyond 128).
 // Raw tokens and deep nesting are spliced into the text after serialization: nlohmann's dump
 // recurses, and JSON has no NaN. Used by fuzz/gltf_fuzz.cpp (LLVMFuzzerCustomMutator) and by
 // tests/ref/gltf_mutator_test.cpp; header-only, so the fuzz build and the tests share it.
@@ -24,7 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/json_nesting.h"
+#include "io/bounded_json.h"
 
 namespace vct::fuzz {
 
@@ -124,7 +128,7 @@ inline void mutate_once(Rng& rng, Json& root, std::string& splice) {
   std::vector<Node> nodes = collect(root);
   Node& n = nodes[pick(rng, nodes.size())];
   Json& v = *n.value;
-  switch (pick(rng, 9)) {
+  switch (pick(rng, 10)) {
     case 0:  // duplicate an element or member
       if (v.is_array() && !v.empty()) v.insert(v.begin() + long(pick(rng, v.size() + 1)), v[pick(rng, v.size())]);
       else if (v.is_object() && !v.empty()) v[std::next(v.begin(), long(pick(rng, v.size()))).key() + "_"] = v.front();
@@ -158,6 +162,15 @@ inline void mutate_once(Rng& rng, Json& root, std::string& splice) {
         const char* field = kFields[pick(rng, std::size(kFields))];
         (*n.parent)[field] = edge_index(rng, root, indexed_array(field) ? indexed_array(field) : "");
       }
+      break;
+    }
+    case 8: {  // rewire: another valid index of the same array
+      const char* array = indexed_array(n.key);
+      const int64_t count = array && *array && root.contains(array) && root[array].is_array()
+                                ? int64_t(root[array].size()) : 0;
+      if (count == 0) break;
+      if (v.is_number()) v = int64_t(pick(rng, size_t(count)));
+      else if (v.is_array() && !v.empty()) v[pick(rng, v.size())] = int64_t(pick(rng, size_t(count)));
       break;
     }
     case 6:  // a string the loader judges (URIs, types), or a very long one

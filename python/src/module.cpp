@@ -20,6 +20,7 @@
 #include "compare/stage_set_frame.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
+#include "io/bounded_json.h"
 #include "core/parallel.h"
 #include "core/settings.h"
 #include "io/image_io.h"
@@ -38,12 +39,8 @@ namespace {
 // A settings patch (JSON text of a dict, possibly partial) over `base`, range-checked like
 // --config (load_settings_file): unknown keys, wrong types and out-of-range values throw InputError.
 Settings settings_from_text(const std::string& text, const Settings& base = Settings{}) {
-  nlohmann::json patch;
-  try {
-    patch = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError("settings", std::string("not JSON: ") + e.what());
-  }
+  // The one bounded reader: a dict nested 300 000 deep must not overflow merge_patch's recursion.
+  const nlohmann::json patch = parse_bounded_json(text, "settings");
   if (!patch.is_object()) throw InputError("settings", "expected a dict like {'vct': {'grid': 64}}");
   nlohmann::json merged = base;
   merged.merge_patch(patch);

@@ -1,7 +1,9 @@
 #include "core/settings.h"
 
-#include <fstream>
+#include <cmath>
+#include <limits>
 #include <set>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -11,9 +13,17 @@
 #include "core/light_matrices.h"
 #include "core/pcf_taps.h"
 #include "core/settings_table.h"
+#include "io/bounded_json.h"
 
 namespace vct {
 namespace {
+
+template <typename T>
+bool fits(const nlohmann::json& v) {
+  const double d = v.get<double>();  // exact for every integer an int can hold
+  return std::isfinite(d) && d == std::trunc(d) && d >= double(std::numeric_limits<T>::min()) &&
+         d <= double(std::numeric_limits<T>::max());
+}
 
 /// Reads the keys of `j` into fields; refuses keys nobody reads (typos must not pass silently).
 class Reader {
@@ -32,8 +42,13 @@ class Reader {
   void nested(const char* key, T& out) {
     seen_.insert(key);
     if (!j_.contains(key)) return;
+    const nlohmann::json& v = j_.at(key);
+    // {"threads": 2.7} must not become 2, nor 2^32 + 4 wrap to 4 (as the table's integer rows).
+    if constexpr (std::is_integral_v<T>)
+      if (v.is_number() && !fits<T>(v))
+        throw InputError("", "setting '" + scope_ + key + "' = " + input_excerpt(v.dump()) + " is not an integer in range");
     try {
-      out = j_.at(key).get<T>();
+      out = v.get<T>();
     } catch (const nlohmann::json::exception&) {
       throw InputError("", "setting '" + scope_ + key + "' has the wrong type");
     }
@@ -87,14 +102,9 @@ void from_json(const nlohmann::json& j, Settings& s) {
 }
 
 Settings load_settings_file(const std::string& path, const Settings& base) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open settings file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, std::string("broken JSON: ") + e.what());
-  }
+  // Regular file, size and depth bounded, every parse error (1e999 too) one line (bounded_json.h).
+  const nlohmann::json j = read_bounded_json_file(path, "settings file");
+  if (!j.is_object()) throw InputError(path, "a settings file must hold a JSON object like {\"vct\": {\"grid\": 64}}");
   // Start from `base` so a config file only needs the keys it changes.
   nlohmann::json merged = base;
   merged.merge_patch(j);
@@ -102,6 +112,8 @@ Settings load_settings_file(const std::string& path, const Settings& base) {
     return merged.get<Settings>();
   } catch (const InputError& e) {
     throw InputError(path, e.what());
+  } catch (const nlohmann::json::exception& e) {  // a type nlohmann refuses before our reader sees it
+    throw InputError(path, input_excerpt(e.what(), 160));
   }
 }
 

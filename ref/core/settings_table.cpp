@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "io/bounded_json.h"
 
 namespace vct {
 
@@ -172,6 +173,11 @@ SettingField<S> field(const char* key, T S::*member, SettingRange range, const c
     } catch (const nlohmann::json::exception&) {
       throw InputError("", "setting '" + scope + key + "' has the wrong type");
     }
+    // NaN or Inf (--time nan, --offset inf) or a number beyond the float range (1e39) would reach
+    // the renderer and run.json (as null); every key refuses them, "any" ranges included.
+    if constexpr (std::is_floating_point_v<T>)
+      if (!std::isfinite(s.*member))
+        throw InputError("", "setting '" + scope + key + "' is not a finite number (NaN, Inf or beyond the float range)");
   };
   return f;
 }
@@ -363,8 +369,11 @@ std::string allowed_text(const SettingField<S>& f) {
 
 template <typename S>
 void check_setting_range(const SettingField<S>& f, const S& s, const std::string& scope) {
-  if ((f.type != SettingType::Int && f.type != SettingType::Float) || f.range.unbounded) return;
-  const double v = f.get(s).template get<double>();
+  if (f.type != SettingType::Int && f.type != SettingType::Float) return;
+  const nlohmann::json stored = f.get(s);  // a non-finite float is stored as null
+  const double v = stored.is_number() ? stored.template get<double>() : std::nan("");
+  if (!std::isfinite(v)) throw InputError("", scope + f.key + " must be a finite number");
+  if (f.range.unbounded) return;
   const SettingRange& r = f.range;
   bool ok = std::isfinite(v) && (r.lo_open ? v > r.lo : v >= r.lo) && (r.hi_open ? v < r.hi : v <= r.hi);
   if (!r.only.empty()) {
@@ -386,14 +395,15 @@ template void check_setting_range(const SettingField<PtSettings>&, const PtSetti
 
 nlohmann::json setting_value_from_text(SettingType type, const std::string& text, const std::string& what) {
   if (type == SettingType::Choice || type == SettingType::Text) return text;
+  const std::string expected = type == SettingType::Bool ? "boolean" : "number";
   nlohmann::json v;
   try {
-    v = nlohmann::json::parse(text);
-  } catch (const std::exception&) {
-    throw InputError(what, "'" + text + "' is not a " + (type == SettingType::Bool ? "boolean" : "number"));
+    v = parse_bounded_json(text, what);
+  } catch (const InputError&) {
+    throw InputError(what, "'" + input_excerpt(text) + "' is not a " + expected);
   }
   if (type == SettingType::Bool ? !v.is_boolean() : !v.is_number())
-    throw InputError(what, "'" + text + "' is not a " + (type == SettingType::Bool ? "boolean" : "number"));
+    throw InputError(what, "'" + input_excerpt(text) + "' is not a " + expected);
   return v;
 }
 

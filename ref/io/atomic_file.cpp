@@ -1,5 +1,6 @@
 #include "io/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -7,10 +8,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
+#include "io/bounded_file.h"
 
 namespace vct {
 
@@ -52,24 +52,41 @@ void throw_write_error(const std::string& path, int err) {
                          "; nothing was left under this name");
 }
 
+void write_bytes_checked(const std::string& tmp, const void* data, size_t size) {
+  const auto fail = [&](const char* what) {
+    const int err = errno;
+    std::runtime_error e(tmp + ": " + what + ": " + std::strerror(err));
+    errno = err;  // write_atomically judges the failure by errno
+    throw e;
+  };
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("cannot create");
+  const auto* p = static_cast<const char*>(data);
+  for (size_t done = 0; done < size;) {
+    const ssize_t n = ::write(fd, p + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = ENOSPC;  // no progress: the device took nothing
+      const int err = errno;
+      ::close(fd);
+      errno = err;
+      fail("cannot write");
+    }
+    done += size_t(n);
+  }
+  if (::close(fd) != 0) fail("cannot write");
+}
+
 void write_text_atomically(const std::string& path, const std::string& text) {
-  write_atomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.close();  // close() writes what is buffered: a full disk shows here
-    if (!out) throw std::runtime_error(path + ": cannot write");
-  });
+  write_atomically(path, [&](const std::string& tmp) { write_bytes_checked(tmp, text.data(), text.size()); });
 }
 
 std::string read_file(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path, "no such file");
   if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, expected a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // Regular files only (a FIFO would block, /dev/zero never end), bounded (issue 38).
+  return read_regular_file(path, kMaxInputFileBytes, "stage file");
 }
 
 }  // namespace vct

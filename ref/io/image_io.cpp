@@ -1,5 +1,6 @@
 #include "io/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -16,12 +17,20 @@ namespace vct {
 
 namespace {
 
+// Encoded in memory, then written by write_bytes_checked: OpenImageIO's PNG and EXR writers did
+// not report every failed write on a full disk, and 0-byte or truncated files were renamed into
+// place (issue 38). Whole files or none: the bytes reach the disk only through checked writes.
 void write_with_oiio(const std::string& tmp, const OIIO::ImageSpec& spec, const void* pixels,
                      const std::string& final_path) {
   auto out = OIIO::ImageOutput::create(tmp);
   if (!out) throw std::runtime_error(final_path + ": no image writer: " + OIIO::geterror());
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
+    throw std::runtime_error(final_path + ": the image writer cannot encode to memory");
   if (!out->open(tmp, spec) || !out->write_image(spec.format, pixels) || !out->close())
-    throw std::runtime_error(final_path + ": cannot write image: " + out->geterror());
+    throw std::runtime_error(final_path + ": cannot encode image: " + out->geterror());
+  write_bytes_checked(tmp, encoded.data(), encoded.size());
 }
 
 }  // namespace

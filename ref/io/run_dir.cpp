@@ -21,6 +21,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "io/atomic_file.h"
+#include "io/bounded_json.h"
 #include "io/image_io.h"
 #include "io/nrrd.h"
 
@@ -136,12 +137,11 @@ void RunDir::finish() {
 }
 
 void RunDir::keep_existing_json() {
-  std::ifstream in(file("run.json"));
-  if (!in) return;
+  if (!fs::exists(file("run.json"))) return;
   try {
-    nlohmann::json old = nlohmann::json::parse(in);
+    nlohmann::json old = read_bounded_json_file(file("run.json"), "run.json");
     if (old.is_object()) json_.merge_patch(old);
-  } catch (const nlohmann::json::exception&) {
+  } catch (const InputError&) {
     // Replaced by this command's run.json.
   }
 }

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/bounded_file.h"
+#include "scene/gltf_loader.h"
 
 namespace vct::gltf {
 
@@ -81,7 +83,15 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     if (err) *err += why;
     return false;
   }
-  return tinygltf::ReadWholeFile(out, err, path, nullptr);
+  // Regular files only, at most kMaxSceneFileBytes (a FIFO would block, /dev/zero never ends).
+  try {
+    const std::string bytes = read_regular_file(path, kMaxSceneFileBytes, "file a scene reads");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    if (err) *err += e.what();
+    return false;
+  }
 }
 
 bool write_nothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {

@@ -69,6 +69,15 @@ bool load_image_within_budget(tinygltf::Image* image, int index, std::string* er
                        " are more than the 2 GiB per image the decoder (stb_image) handles; refused before decoding";
       return false;
     }
+    // A 60-byte PNG claiming 16384 x 16384 decoded as a 3.5 GB black texture (issue 38). Deflate
+    // expands at most 1032:1 (RFC 1951: a 258-byte match per ~2 bits), and a JPEG block of 64
+    // pixels needs at least a few bits, so neither format can hold more than 1032 bytes per byte.
+    const uint64_t claimed = h.width * h.height * uint64_t(h.channels) * uint64_t(h.bits) / 8;
+    if ((h.format == "PNG" || h.format == "JPEG") && claimed / 1032 > uint64_t(size > 0 ? size : 0)) {
+      budget.refusal = describe(*image, index, h) + ", but its " + std::to_string(size) +
+                       " bytes cannot hold that many (at most 1032 decoded bytes per encoded byte): a truncated or forged header";
+      return false;
+    }
     budget.kept += image_kept_bytes(h.width, h.height, h.bits);
   }
   return tinygltf::LoadImageData(image, index, err, warn, req_width, req_height, bytes, size, nullptr);

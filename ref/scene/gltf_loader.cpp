@@ -7,17 +7,19 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/memory_budget.h"
+#include "io/bounded_file.h"
+#include "io/bounded_json.h"
 #include "scene/embedded_scenes.h"
 #include "scene/gltf_file_access.h"
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_internal.h"
-#include "scene/json_nesting.h"
+#include "scene/gltf_property_table.h"
+#include "scene/scene_finite.h"
 #include "scene/texture_mips.h"
 
 namespace vct {
@@ -37,30 +39,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tinygltf reports several lines and parsers echo raw file bytes; we report one printable line.
+// tinygltf reports several lines and parsers echo raw file bytes (a corrupt base64 buffer came
+// back whole, 4 MB in one line); we report one printable line quoting at most 300 characters.
 std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   std::string out;
   for (char c : s) {
-    const auto u = static_cast<unsigned char>(c);
     if (c == '\n') out += "; ";
-    else if (u >= 0x20 && u < 0x7f) out += c;
-    else if (c != '\r') out += '?';
+    else if (c != '\r') out += c;
   }
-  return out;
+  return input_excerpt(out, 300);
 }
 
 std::string read_bytes(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError(path, "file not found");
-  if (fs::is_directory(st)) throw InputError(path, "is a directory, not a glTF file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path, "read error");
-  std::string bytes = ss.str();
+  std::string bytes = read_regular_file(path, kMaxSceneFileBytes, "glTF file");
   if (bytes.empty()) throw InputError(path, "empty file");
   return bytes;
 }
@@ -72,22 +64,9 @@ nlohmann::json precheck_json(const std::string& text, const std::string& name, s
   if (first == std::string::npos || text[first] != '{') {
     throw InputError(name, "not a glTF file (neither a JSON object nor a GLB container)");
   }
-  // Before any parser: tinygltf converts the JSON by recursion and a deep enough document ends
-  // the process with a stack overflow (json_nesting.h).
-  const NestingScan nesting = scan_json_nesting(text);
-  if (nesting.exceeded) {
-    throw InputError(name, "JSON nests deeper than " + std::to_string(kMaxJsonNesting) + " levels (at byte " +
-                               std::to_string(nesting.offset) + "); vct reads glTF nested at most " +
-                               std::to_string(kMaxJsonNesting) + " deep (docs/scenes.md, \"Limits\")");
-  }
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for numbers like 1E999
-    std::string what = e.what();
-    const size_t cut = what.find("] ");
-    throw InputError(name, "broken JSON: " + one_line(cut == std::string::npos ? what : what.substr(cut + 2)));
-  }
+  // The one bounded reader (io/bounded_json.h): tinygltf converts the JSON by recursion, and a
+  // deep enough document would end the process with a stack overflow.
+  nlohmann::json j = parse_bounded_json(text, name);
   if (!j.is_object() || !j.contains("asset") || !j["asset"].is_object()) {
     throw InputError(name, "not a glTF file (no \"asset\" object)");
   }
@@ -197,6 +176,7 @@ Scene convert(const tinygltf::Model& model, const std::string& name, std::vector
     const float reach = glm::length(scene.bounds.center() - scene.camera.position) + glm::length(scene.bounds.extent());
     scene.camera.zfar = std::max(2.0f * reach, scene.camera.znear * 10.0f);
   }
+  check_scene_finite(scene, name);  // lights, camera and emitters as the renderers will read them
   return scene;
 }
 
@@ -204,6 +184,7 @@ Scene parse(const std::string& bytes, bool glb, const std::string& name, const s
             const SceneLoadOptions& options) {
   std::vector<std::string> warnings;
   const nlohmann::json doc = precheck_json(glb ? check_glb(bytes, name) : bytes, name, warnings);
+  gltf::check_document_properties(doc, name);  // before tinygltf turns bad values into defaults
   // The policy is checked on every URI before tinygltf opens any file, and tinygltf opens files
   // only through the policy's callbacks (gltf_file_access.h).
   const gltf::FileAccess access(base_dir, options.allow_outside_scene_dir);

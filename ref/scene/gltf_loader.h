@@ -18,6 +18,11 @@ struct SceneLoadOptions {
   uint64_t image_memory_budget = 0;
 };
 
+/// The largest file a scene reads (the .gltf/.glb and every buffer or image its URIs name): a GLB
+/// records its length in 32 bits and tinygltf takes a document's length as `unsigned int`, so
+/// nothing larger can be a glTF file (docs/scenes.md, "Limits").
+inline constexpr uint64_t kMaxSceneFileBytes = 0xFFFFFFFFull;
+
 /// Loads a .gltf or .glb file.
 Scene load_gltf_file(const std::string& path, const SceneLoadOptions& options = {});
 

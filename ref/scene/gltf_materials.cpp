@@ -102,6 +102,15 @@ std::vector<uint8_t> to_rgba8(const tinygltf::Image& img) {
   return out;
 }
 
+// glTF gives metallicFactor and roughnessFactor in [0, 1]; engines clamp a value outside it in the
+// shader, so we clamp too, and say which value is used (docs/scenes.md, "What the loader refuses").
+float factor_in_unit_range(double value, const std::string& what, std::vector<std::string>& warnings) {
+  if (value >= 0.0 && value <= 1.0) return float(value);
+  const float used = value < 0.0 ? 0.0f : 1.0f;
+  warnings.push_back(what + " " + std::to_string(value) + " is outside [0, 1]; using " + std::to_string(int(used)));
+  return used;
+}
+
 // glTF 2.0 §3.9.4 / material.schema.json: alphaMode is OPAQUE (default), MASK or BLEND;
 // alphaCutoff (default 0.5) is >= 0. BLEND is rendered as MASK at 0.5 (docs/scenes.md).
 void read_alpha_mode(const Context& ctx, const tinygltf::Material& g, const std::string& owner,
@@ -165,8 +174,8 @@ void convert_materials(const Context& ctx, Scene& scene) {
                                    float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
     }
     mat.base_color_texture = texture_ref(ctx, pbr.baseColorTexture, owner + " baseColorTexture");
-    mat.metallic_factor = float(pbr.metallicFactor);
-    mat.roughness_factor = float(pbr.roughnessFactor);
+    mat.metallic_factor = factor_in_unit_range(pbr.metallicFactor, owner + " metallicFactor", scene.stats.warnings);
+    mat.roughness_factor = factor_in_unit_range(pbr.roughnessFactor, owner + " roughnessFactor", scene.stats.warnings);
     mat.metallic_roughness_texture = texture_ref(ctx, pbr.metallicRoughnessTexture, owner + " metallicRoughnessTexture");
     mat.normal_texture = texture_ref(ctx, g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions,
                                      owner + " normalTexture");

@@ -61,10 +61,21 @@ bool degenerate(const vec3& a, const vec3& b, const vec3& c) {
   return !(area2 > 1e-7 * longest) || longest == 0.0;
 }
 
+// glTF 2.0 §3.7.2.1 allows COLOR_0 and TEXCOORD_n as float or as normalized unsigned byte/short
+// only: a uint32 colour (up to 4e9) would multiply the base colour unbounded.
+void check_color_or_uv_type(const Context& ctx, const tinygltf::Accessor& a, const std::string& what) {
+  const bool ok = a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                  (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                    a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT));
+  if (!ok) fail(ctx, what + " must be FLOAT or normalized UNSIGNED_BYTE/UNSIGNED_SHORT (glTF 2.0 3.7.2.1)");
+}
+
 std::vector<vec2> read_uv(const Context& ctx, const tinygltf::Primitive& p, const char* name, size_t count,
                           const std::vector<float>& weights, const std::string& owner) {
   auto it = p.attributes.find(name);
   if (it == p.attributes.end()) return {};
+  check_color_or_uv_type(ctx, ctx.model.accessors[size_t(it->second)],
+                         owner + " " + name + " (accessor " + std::to_string(it->second) + ")");
   std::vector<float> f = read_floats(ctx, it->second, 2, owner + " " + name);
   if (f.size() != count * 2) fail(ctx, owner + " " + name + " count differs from POSITION count");
   add_morph_displacements(ctx, p, weights, name, 2, f, owner);
@@ -90,6 +101,7 @@ std::vector<vec4> read_color(const Context& ctx, const tinygltf::Primitive& p, s
   if (it == p.attributes.end()) return {};
   const auto& a = ctx.model.accessors[size_t(it->second)];
   const int comps = a.type == TINYGLTF_TYPE_VEC4 ? 4 : 3;
+  check_color_or_uv_type(ctx, a, owner + " COLOR_0 (accessor " + std::to_string(it->second) + ")");
   std::vector<float> f = read_floats(ctx, it->second, comps, owner + " COLOR_0");
   if (f.size() != count * size_t(comps)) fail(ctx, owner + " COLOR_0 count differs from POSITION count");
   add_morph_displacements(ctx, p, weights, "COLOR_0", comps, f, owner);
@@ -140,6 +152,7 @@ class Flattener {
       stack.pop_back();
       const auto& n = ctx_.model.nodes[size_t(item.node)];
       const mat4 world = item.parent * local_matrix(ctx_, n, item.node);
+      check_finite(world, item.node);
       visit(item.node, world);
       for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world});
     }
@@ -182,6 +195,15 @@ class Flattener {
   }
 
   void warn(const std::string& w) { scene_.stats.warnings.push_back(w); }
+
+  // Each local matrix is finite (local_matrix), but their product down a chain can overflow float.
+  void check_finite(const mat4& world, int node) const {
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(world[c][r]))
+          fail(ctx_, "node " + std::to_string(node) + ": its world transform (the product of its ancestors') "
+                     "is not finite (it overflows float)");
+  }
 
   // A morph target's TANGENT is a VEC3 displacement of the VEC4 tangent's xyz (glTF 2.0 §3.7.2.2):
   // handedness (w) is not morphed.
@@ -230,7 +252,11 @@ class Flattener {
     const float det = glm::determinant(linear);
     const mat3 normal_matrix = std::abs(det) > 1e-30f ? glm::transpose(glm::inverse(linear)) : mat3(1.0f);
     m.pos.resize(count);
-    for (size_t i = 0; i < count; ++i) m.pos[i] = vec3(world * vec4(pf[3 * i], pf[3 * i + 1], pf[3 * i + 2], 1.0f));
+    for (size_t i = 0; i < count; ++i) {
+      m.pos[i] = vec3(world * vec4(pf[3 * i], pf[3 * i + 1], pf[3 * i + 2], 1.0f));
+      if (!std::isfinite(m.pos[i].x) || !std::isfinite(m.pos[i].y) || !std::isfinite(m.pos[i].z))
+        fail(ctx_, owner + " vertex " + std::to_string(i) + ": its world-space position is not finite (overflows float)");
+    }
     bool have_normals = false;
     if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
       std::vector<float> nf = read_floats(ctx_, it->second, 3, owner + " NORMAL");

@@ -137,6 +137,12 @@ void check_meshes(const Context& ctx) {
         check_ref(ctx, acc, m.accessors.size(), owner + " attribute " + name, "accessor", false);
       }
       check_ref(ctx, prim.indices, m.accessors.size(), owner + " indices", "accessor", true);
+      for (size_t t = 0; t < prim.targets.size(); ++t) {
+        for (const auto& [name, acc] : prim.targets[t]) {
+          check_ref(ctx, acc, m.accessors.size(), owner + " morph target " + std::to_string(t) + " " + name,
+                    "accessor", false);
+        }
+      }
       check_ref(ctx, prim.material, m.materials.size(), owner, "material", true);
     }
   }
@@ -149,6 +155,24 @@ int node_light(const tinygltf::Node& n) {
   return v.IsInt() ? v.Get<int>() : -2;
 }
 
+// With one parent per node, a cycle is a parent chain that never reaches a root. Each chain is
+// walked until it meets a root or a node already known to reach one, then all of it is marked:
+// every node is walked once, so a chain of 10^6 nodes takes linear time (issue 38).
+void check_no_cycle(const Context& ctx, const std::vector<int>& parent) {
+  enum : uint8_t { kUnknown, kOnWalk, kReachesRoot };
+  std::vector<uint8_t> state(parent.size(), kUnknown);
+  std::vector<size_t> walk;
+  for (size_t i = 0; i < parent.size(); ++i) {
+    walk.clear();
+    for (int p = int(i); p != -1 && state[size_t(p)] != kReachesRoot; p = parent[size_t(p)]) {
+      if (state[size_t(p)] == kOnWalk) fail(ctx, "node graph has a cycle through " + item("node", size_t(p)));
+      state[size_t(p)] = kOnWalk;
+      walk.push_back(size_t(p));
+    }
+    for (size_t w : walk) state[w] = kReachesRoot;
+  }
+}
+
 void check_nodes(const Context& ctx) {
   const auto& m = ctx.model;
   std::vector<int> parent(m.nodes.size(), -1);
@@ -157,6 +181,7 @@ void check_nodes(const Context& ctx) {
     const std::string owner = item("node", i) + (n.name.empty() ? "" : " '" + n.name + "'");
     check_ref(ctx, n.mesh, m.meshes.size(), owner, "mesh", true);
     check_ref(ctx, n.camera, m.cameras.size(), owner, "camera", true);
+    check_ref(ctx, n.skin, m.skins.size(), owner, "skin", true);
     check_ref(ctx, node_light(n), m.lights.size(), owner, "light", true);
     for (int c : n.children) {
       check_ref(ctx, c, m.nodes.size(), owner + " (children)", "node", false);
@@ -169,15 +194,7 @@ void check_nodes(const Context& ctx) {
       parent[static_cast<size_t>(c)] = static_cast<int>(i);
     }
   }
-  // With one parent per node, a cycle is a parent chain that never reaches a root.
-  for (size_t i = 0; i < m.nodes.size(); ++i) {
-    size_t steps = 0;
-    for (int p = parent[i]; p != -1; p = parent[static_cast<size_t>(p)]) {
-      if (++steps > m.nodes.size() || static_cast<size_t>(p) == i) {
-        fail(ctx, "node graph has a cycle through " + item("node", i));
-      }
-    }
-  }
+  check_no_cycle(ctx, parent);
   for (size_t s = 0; s < m.scenes.size(); ++s) {
     for (int root : m.scenes[s].nodes) {
       check_ref(ctx, root, m.nodes.size(), item("scene", s), "node", false);

@@ -2,6 +2,7 @@
 // it writes byte for byte (determinism_cli_test.cpp, kill_resume_test.cpp).
 #pragma once
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace vct::test {
 
@@ -35,6 +37,23 @@ inline fs::path fresh_dir(const std::string& name) {
   fs::remove_all(p);
   fs::create_directories(p);
   return p;
+}
+
+/// Starts `VCT_BINARY args...` with stdout to /dev/null and stderr to `err`; returns its pid.
+inline pid_t spawn_vct(const std::vector<std::string>& args, const std::string& err = "/dev/null") {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(null, 1);
+    ::dup2(e, 2);
+    std::vector<char*> argv{const_cast<char*>(VCT_BINARY)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(VCT_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return pid;
 }
 
 /// Runs `VCT_BINARY args` with `env` prefixed (e.g. "LP_NUM_THREADS=2"), output discarded.

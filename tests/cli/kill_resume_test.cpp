@@ -23,22 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::differences;
 using test::files_below;
-
-// Starts `vct args...` with stdout/stderr to /dev/null; returns its pid.
-pid_t spawn_vct(const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    std::vector<char*> argv{const_cast<char*>(VCT_BINARY)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(VCT_BINARY, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
+using test::spawn_vct;
 
 // Waits until `done()` or the child exits; true if done() became true while it was running.
 bool wait_for(pid_t pid, const std::function<bool()>& done, double seconds) {

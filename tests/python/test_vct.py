@@ -126,12 +126,33 @@ def test_settings_round_trip():
     ({"vct": {"light_model": "sun"}}, "light_model"),
     ({"pt": {"spp": -1}}, "spp"),
     ([1, 2], "dict"),
+    ({"threads": 2.7}, "threads"),  # issue 38: not truncated to 2
+    ({"vct": {"time": float("nan")}}, "broken JSON"),  # json.dumps writes NaN, which JSON lacks
+    ({"vct": {"shadow_bias": 1e39}}, "shadow_bias"),  # beyond float: Inf
+    (json.loads('{"vct": ' + '{"a": ' * 200 + "1" + "}" * 200 + "}"), "nests deeper than 128"),
 ])
 def test_bad_settings_raise_naming_the_key(scene, bad, words):
     with pytest.raises(vct.InputError, match=words):
         vct.check_settings(bad)
     with pytest.raises(ValueError):  # InputError is a ValueError
         vct.render_ref(scene, bad)
+
+
+def test_bad_scene_index_raises_instead_of_crashing(tmp_path):
+    """Issue 38: a morph target naming accessor 1000000 read out of bounds and killed Python."""
+    root = os.environ.get("VCT_SOURCE_DIR") or os.path.join(os.path.dirname(__file__), "..", "..")
+    with open(os.path.join(root, "scenes", "cornell_box.gltf")) as f:
+        doc = json.load(f)
+    doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": 1000000}]
+    (tmp_path / "bad.gltf").write_text(json.dumps(doc))
+    with pytest.raises(vct.InputError, match=r"targets\[0\]\.POSITION is 1000000, but accessors has"):
+        vct.load_scene(str(tmp_path / "bad.gltf"))
+
+
+def test_deep_stage_set_manifest_raises(tmp_path):
+    (tmp_path / "vct-stages.json").write_text('{"format": "vct-stages", "info": ' + "[" * 300000 + "]" * 300000 + "}")
+    with pytest.raises(vct.InputError, match="nests deeper than 128"):
+        vct.read_stage_set(str(tmp_path))
 
 
 def test_stage_set_written_and_read_back(ref, tmp_path):

@@ -115,36 +115,36 @@ const std::vector<BadCase>& bad_cases() {
            d.j["accessors"][0]["sparse"]["count"] = 5;
          });
        }},
-      {"dangling_buffer_view", "refers to bufferView 7",
+      {"dangling_buffer_view", "accessors[1].bufferView is 7, but bufferViews has 3 entries",
        [] { return doc_file("dangling_buffer_view", [](GltfDoc& d) { d.j["accessors"][1]["bufferView"] = 7; }); }},
-      {"dangling_mesh", "refers to mesh 5",
+      {"dangling_mesh", "nodes[0].mesh is 5, but meshes has 1 entry",
        [] { return doc_file("dangling_mesh", [](GltfDoc& d) { d.j["nodes"][0]["mesh"] = 5; }); }},
-      {"dangling_material", "refers to material 3",
+      {"dangling_material", "primitives[0].material is 3, but materials has 1 entry",
        [] { return doc_file("dangling_material", [](GltfDoc& d) { d.j["meshes"][0]["primitives"][0]["material"] = 3; }); }},
-      {"unknown_alpha_mode", "alphaMode \"CUTOUT\" is not OPAQUE, MASK or BLEND",
+      {"unknown_alpha_mode", "materials[0].alphaMode is \"CUTOUT\"; it must be one of \"OPAQUE, MASK, BLEND\"",
        [] { return doc_file("unknown_alpha_mode", [](GltfDoc& d) { d.j["materials"][0]["alphaMode"] = "CUTOUT"; }); }},
-      {"negative_alpha_cutoff", "alphaCutoff must be a finite number >= 0",
+      {"negative_alpha_cutoff", "materials[0].alphaCutoff is -0.25; it must be a number >= 0",
        [] {
          return doc_file("negative_alpha_cutoff", [](GltfDoc& d) {
            d.j["materials"][0]["alphaMode"] = "MASK";
            d.j["materials"][0]["alphaCutoff"] = -0.25;
          });
        }},
-      {"dangling_texture", "refers to texture 2",
+      {"dangling_texture", "baseColorTexture.index is 2, but textures has 0 entries",
        [] {
          return doc_file("dangling_texture", [](GltfDoc& d) {
            d.j["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 2}};
          });
        }},
-      {"dangling_light", "refers to light 0",
+      {"dangling_light", "KHR_lights_punctual.light is 0, but extensions.KHR_lights_punctual.lights has 0 entries",
        [] {
          return doc_file("dangling_light", [](GltfDoc& d) {
            d.j["nodes"][0]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
          });
        }},
-      {"dangling_child_node", "refers to node 9",
+      {"dangling_child_node", "nodes[0].children[0] is 9, but nodes has 1 entry",
        [] { return doc_file("dangling_child_node", [](GltfDoc& d) { d.j["nodes"][0]["children"] = {9}; }); }},
-      {"dangling_scene_node", "refers to node 4",
+      {"dangling_scene_node", "scenes[0].nodes[0] is 4, but nodes has 1 entry",
        [] { return doc_file("dangling_scene_node", [](GltfDoc& d) { d.j["scenes"][0]["nodes"] = {4}; }); }},
       {"node_cycle", "cycle",
        [] {

@@ -13,7 +13,7 @@
 #include "io/image_io.h"
 #include "scene/gltf_image_budget.h"
 #include "scene/gltf_loader.h"
-#include "scene/json_nesting.h"
+#include "io/bounded_json.h"
 
 namespace vct {
 namespace {
@@ -170,6 +170,24 @@ TEST(GltfLimits, TheBudgetCountsImagesAlreadyDecoded) {
       << msg;
   o.image_memory_budget = 2 * 54612;
   EXPECT_EQ(load_error(d.text(), o), "");
+}
+
+}  // namespace
+}  // namespace vct
+
+namespace vct {
+namespace {
+
+// Issue 38: a header-only PNG claiming 16384 x 16384 fits the memory budget of a large machine and
+// the decoder's 2 GiB, and decoded as a black 1 GiB texture. Its bytes cannot hold that image.
+TEST(GltfLimits, HeaderClaimingMoreThanItsBytesCanHoldIsRefused) {
+  test::write_file("forged.png", png_header_only(16384, 16384, 8, 6));
+  SceneLoadOptions o;
+  o.image_memory_budget = 1ull << 40;  // the budget does not speak first
+  const std::string msg = load_error(textured_doc("forged.png"), o);
+  EXPECT_NE(msg.find("its PNG header says 16384 x 16384 pixels, 4 channel(s) of 8 bits, but its "), std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("cannot hold that many (at most 1032 decoded bytes per encoded byte)"), std::string::npos) << msg;
 }
 
 }  // namespace

@@ -256,7 +256,7 @@ TEST(GltfLoader, UnknownLightTypeIsRefused) {
     (void)load(d);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("has type 'area'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("lights[0].type is \"area\"; it must be one of \"directional, point, spot\""), std::string::npos) << e.what();
   }
 }
 
