@@ -69,16 +69,22 @@ RadianceInputs radiance_inputs(const StageSet& rs, const StageSet& ts) {
 float channel0(const Volume* v, size_t i) { return v->data[i * size_t(v->channels)]; }
 
 // Voxel i's worst channel: within the model's bound at its fragment count plus its slack (0 at an
-// exact voxel), or, with an interval, within [lo - abs - slack, hi + abs + slack].
+// exact voxel), or, with an interval, within [lo - abs - slack, hi + abs + slack]. A filled voxel
+// (opaque with no fragments: solid voxelization, surface thickening) reduced no fragments, so the
+// interval of the fragment orders says nothing about it (it holds 0): its value is the fill's, judged
+// by the model's bound whatever the reduction (scenes/regressions/seed-27-small).
 WorstChannel radiance_worst(const RadianceInputs& in, size_t i, bool exact_voxel, double& se, double& max_abs) {
   const double n = in.fragments ? std::max(1.0, double(channel0(in.fragments, i))) : 8.0;
+  const bool filled = in.fragments && channel0(in.fragments, i) == 0.0f && in.ref.data[i * size_t(in.ref.channels) +
+                                                                                         size_t(in.ref.channels - 1)] > 0.0f;
+  const bool interval = in.lo && !filled;
   const VoxelModel& m = in.model;
   return worst_channel(std::min(in.ref.channels, in.test.channels), [&](int c) {
     const size_t k = i * size_t(in.ref.channels) + size_t(c);
     const double r = in.ref.data[k], t = in.test.data[i * size_t(in.test.channels) + size_t(c)];
     const double slack = in.slack && c < 3 ? double(channel0(in.slack, i)) : 0.0;
     double d = std::abs(t - r), bound = exact_voxel ? 0.0 : m.bound(r, n) + slack;
-    if (in.lo) {
+    if (interval) {
       const double l = double(in.lo->data[k]) - m.abs - slack, h = double(in.hi->data[k]) + m.abs + slack;
       d = t < l ? l - t : t > h ? t - h : 0.0;
       bound = m.abs + slack;

@@ -114,6 +114,26 @@ TEST(StageCompare, CasIntervalAcceptsAnyOrderRejectsOutside) {
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
 }
 
+// A filled voxel (opaque, no fragments: surface thickening) reduced no fragments, so the CAS
+// interval holds 0 there; its value is the fill's and is judged by the model's bound
+// (scenes/regressions/seed-27-small: 210 exact voxels failed before).
+TEST(StageCompare, CasFilledVoxelIsJudgedByItsValueNotTheEmptyInterval) {
+  StageSet a = voxel_set("cas_rgba8");
+  a.volumes["voxel.radiance"].set_rgba(4, 3, 4, vec4(0.0f, 0.0f, 0.0f, 1.0f));  // thickened under the floor
+  Volume fragments(8, 8, 8, 1);
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x) fragments.voxel(x, 2, z)[0] = 1.0f;
+  a.volumes["voxel.fragments"] = fragments;
+  Volume interval = voxel_set("cas_rgba8").volumes["voxel.radiance"];  // the floor's fragments only
+  a.volumes["voxel.cas_lo"] = interval;
+  a.volumes["voxel.cas_hi"] = interval;
+  StageSet b = a;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Pass);
+  // A fill that lost its opacity by more than the RGBA8 step still fails.
+  b.volumes["voxel.radiance"].voxel(4, 3, 4)[3] = 0.9f;
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.radiance").verdict, Verdict::Fail);
+}
+
 TEST(StageCompare, ConservativeReferenceTurnsMissingIntoHoles) {
   StageSet a = voxel_set("fixed_point");
   a.settings = {{"voxelizer", "conservative"}};
