@@ -194,9 +194,9 @@ Offender pixel_offender(const Image& ref, const Image& test, int x, int y, const
 }
 
 // Every pixel: its rule, the statistics, the offenders.
-// `explained`: options naming a pixel whose worst channel goes to `explained_worst`.
+// `opt.explain` names a pixel whose worst channel goes to `explained_worst`.
 std::vector<Rule> admit_pixels(const ImageJudge& j, StageVerdict& v, std::vector<Offender>& offenders,
-                               const CompareOptions* explained, WorstChannel& explained_worst) {
+                               const CompareOptions& opt, WorstChannel& explained_worst) {
   std::vector<Rule> rules(size_t(j.ref.width) * size_t(j.ref.height), Rule::WithinBound);
   const Image& r = j.judged();
   double se = 0;
@@ -209,7 +209,7 @@ std::vector<Rule> admit_pixels(const ImageJudge& j, StageVerdict& v, std::vector
         return ChannelDistance{d, j.pixel_bound(x, y, c), d};
       });
       ++v.checked;
-      if (explained && explains(*explained, x, y)) explained_worst = w;
+      if (explains(opt, x, y)) explained_worst = w;
       if (w.within()) continue;
       ++v.out_of_bound;
       rules[size_t(y) * size_t(j.ref.width) + size_t(x)] = admit_beyond_bound(j, x, y);
@@ -323,7 +323,7 @@ StageVerdict judge_image_stage(const std::string& stage, const Image& ref, const
   v.bound = bound_words(j);
   std::vector<Offender> offenders;
   WorstChannel explained;
-  std::vector<Rule> rules = admit_pixels(j, v, offenders, &opt, explained);
+  std::vector<Rule> rules = admit_pixels(j, v, offenders, opt, explained);
   size_t inadmissible = 0;
   for (Rule r : rules) inadmissible += r == Rule::Beyond;
   ShareOutcome shares = apply_shares(j, rules);
