@@ -30,12 +30,7 @@ Scene lamp_over_floor(float candela, float height) {
   l.intensity = candela;
   s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
-  s.camera.position = vec3(0.0f, 3.0f, 0.001f);
-  s.camera.forward = vec3(0.0f, -1.0f, 0.0f);
-  s.camera.up = vec3(0.0f, 0.0f, -1.0f);
-  s.camera.yfov = 1.0f;
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 10.0f;
+  test::top_camera(s);
   return s;
 }
 

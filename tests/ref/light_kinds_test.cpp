@@ -23,15 +23,6 @@ uint32_t lambert_material(Scene& s) {
   return m;
 }
 
-void top_camera(Scene& s) {
-  s.camera.position = vec3(0.0f, 3.0f, 0.001f);
-  s.camera.forward = vec3(0.0f, -1.0f, 0.0f);
-  s.camera.up = vec3(0.0f, 0.0f, -1.0f);
-  s.camera.yfov = 1.0f;
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 10.0f;
-}
-
 Light point_light(float intensity, float range) {
   Light l;
   l.kind = LightKind::Point;
@@ -52,7 +43,7 @@ Scene point_plane(float range, bool occluder) {
                    {0.3f, 0.5f, 0.1f}, {0, 1, 0}, m);
   s.lights.push_back(point_light(3.0f, range));
   s.volume = fit_volume(s.bounds);
-  top_camera(s);
+  test::top_camera(s);
   return s;
 }
 
@@ -134,7 +125,7 @@ Scene sun_plane(float tilt, bool occluder) {
   l.position = vec3(100.0f);  // a sun's position means nothing
   s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
-  top_camera(s);
+  test::top_camera(s);
   return s;
 }
 

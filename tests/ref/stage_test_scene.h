@@ -45,6 +45,17 @@ inline void add_box(Scene& s, vec3 lo, vec3 hi, uint32_t m) {
 
 /// A small Cornell-like room: floor, back and side walls, a box, an emissive panel, one spot light
 /// pointing down, camera in front. Everything the stages touch, in ~40 triangles.
+// A camera 3 m above the origin looking straight down (+y up in the scene, -z up in the image):
+// the analytic plane-under-a-light tests' view.
+inline void top_camera(Scene& s) {
+  s.camera.position = vec3(0.0f, 3.0f, 0.001f);
+  s.camera.forward = vec3(0.0f, -1.0f, 0.0f);
+  s.camera.up = vec3(0.0f, 0.0f, -1.0f);
+  s.camera.yfov = 1.0f;
+  s.camera.znear = 0.5f;
+  s.camera.zfar = 10.0f;
+}
+
 inline Scene stage_room() {
   Scene s;
   s.source = "test:stage_room";
