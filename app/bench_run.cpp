@@ -20,7 +20,7 @@
 #include "core/parallel.h"
 #include "io/run_dir.h"
 #include "pt/ray_throughput.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)

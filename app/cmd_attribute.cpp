@@ -19,7 +19,7 @@
 #include "io/run_dir.h"
 #include "options.h"
 #include "scene_warnings.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "validate_run.h"
 
 namespace vct::app {

@@ -14,7 +14,7 @@
 #include "io/run_dir.h"
 #include "options.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "validate_run.h"
 #include "verdict_summary.h"
 

@@ -27,7 +27,7 @@
 #include "scene_warnings.h"
 #include "stages/dumps.h"
 #include "stages/explain.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)

@@ -12,7 +12,7 @@
 #include "io/run_dir.h"
 #include "pt/path_tracer.h"
 #include "pt/progress.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"

@@ -14,7 +14,7 @@
 #include "scene/gltf_loader.h"
 #include "stages/cone_sets.h"
 #include "stages/indirect_pass.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/soft_shadow.h"
 
 namespace {

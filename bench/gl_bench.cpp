@@ -17,7 +17,7 @@
 #include "gl/gl_context.h"
 #include "gl/gl_pipeline.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 using namespace vct;
 

@@ -12,7 +12,7 @@
 
 #include "core/parallel.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace {
 

@@ -5,10 +5,10 @@
 
 #include "compare/tie_range.h"
 #include "compare/tolerance.h"
-#include "stages/coverage_ties.h"
+#include "freedoms/direct_ties.h"
+#include "freedoms/voxel_freedoms.h"
 #include "stages/cube_map.h"
 #include "stages/direct.h"
-#include "stages/direct_ties.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
 #include "stages/multibounce.h"
@@ -90,29 +90,23 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
 std::optional<VoxelGrid> reference_voxels_on_test_inputs(const Scene& scene, const FrameResult& test,
                                                          const VctSettings& s) {
   const bool bounce_input = s.bounces >= 2 && test.bounce_input.voxel_count() > 0 && test.bounce_input.nx == s.grid;
-  // The running mean's interval is computed beside the frame (pipeline.cpp), not re-derived here.
+  // The running mean's interval is computed beside the frame (freedoms/reference_freedoms.cpp), not
+  // re-derived here.
   if (s.reduction == Reduction::RunningMeanHalf) return std::nullopt;
   std::vector<ShadowMap> maps = scene.lights.empty() ? std::vector<ShadowMap>() : test_maps_with_matrices(scene, test, s);
   const bool own_maps = !maps.empty();
   if (!bounce_input && !own_maps) return std::nullopt;
   if (!own_maps) maps = render_shadow_maps(scene, s);  // the reference's own, as its frame used them
-  // The reference's own voxelization (pipeline.cpp).
+  // The reference's own voxelization (stages/pipeline.cpp).
   const std::vector<vec2> positions = test.facts.sample_positions.empty()
                                           ? standard_sample_positions(s.msaa_samples)
                                           : test.facts.sample_positions;
   Voxelization vox = s.voxelizer == Voxelizer::Conservative ? voxelize_conservative(scene, s.grid)
                                                              : voxelize_gpu_rule(scene, s.grid, positions);
-  add_coverage_ties(scene, vox);
-  VoxelGrid grid;
-  if (bounce_input) {
-    const VoxelMips previous = build_mips(test.bounce_input, s.anisotropic);
-    const BounceLight bounce = make_bounce_light(scene, previous, s);
-    grid = inject_and_reduce(scene, vox, maps, s, &bounce);
-  } else {
-    grid = inject_and_reduce(scene, vox, maps, s);
-  }
-  add_particles_to_grid(scene, s, grid);  // and to the CAS interval, as the frame adds them
-  return grid;
+  if (!bounce_input) return judged_voxels(scene, vox, maps, s);
+  const VoxelMips previous = build_mips(test.bounce_input, s.anisotropic);
+  const BounceLight bounce = make_bounce_light(scene, previous, s);
+  return judged_voxels(scene, vox, maps, s, &bounce);
 }
 
 namespace {

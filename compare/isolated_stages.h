@@ -24,7 +24,7 @@ namespace vct::cmp {
 /// and mips; the other stages are copied from `test`. Soft shadows (cone-traced direct light)
 /// are re-traced too when enabled; otherwise direct light is re-shaded from `test`'s G-buffer and
 /// shadow maps (left empty when `test` lacks a light's map). gbuffer.tie_range then holds the
-/// shading stages' admissible ranges on these inputs (stages/direct_ties.h), nothing else.
+/// shading stages' admissible ranges on these inputs (freedoms/direct_ties.h), nothing else.
 /// `display`: the test's declared display transform; when it names image.direct, the composite
 /// adds that image decoded to linear light (DisplayTransform::decode; decode_display_direct).
 /// `march_end`: the indirect cones' MarchParams::march_end (-1 / +1: the march-end tie's

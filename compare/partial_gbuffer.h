@@ -38,7 +38,7 @@ vec3 position_from_depth(const Scene& scene, int w, int h, float px, float py, f
 /// precision along the pixel's ray (4 x 2^-24 of window depth: the engine's interpolation and
 /// store, float or 24-bit, and our 2 d - 1), the 2^-8 pixel its vertices snap by (its attributes
 /// are those of a surface point up to 2^-8 pixel from the pixel centre on each window axis, as
-/// stages/fragment_slack.h), found on the plane through the position with the engine's normal,
+/// freedoms/fragment_slack.h), found on the plane through the position with the engine's normal,
 /// and 4 roundings of the position. Capped at the volume's size (anywhere). From g.depth,
 /// g.normal, g.coverage and g.position.
 Image position_margin_from_depth(const Scene& scene, const GBuffer& g);

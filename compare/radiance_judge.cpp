@@ -169,7 +169,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     n.transparent_lit += !ro[i];
     // Different fragment counts: MSAA sample-coverage ties at triangle edges changed the set of
     // fragments averaged. The mean of any set those ties admit is inside the reference's slack
-    // (stages/coverage_ties.h), so a voxel beyond it is no tie; the count is still capped.
+    // (freedoms/coverage_ties.h), so a voxel beyond it is no tie; the count is still capped.
     const bool count_tie = in.test_fragments && channel0(in.fragments, i) != channel0(in.test_fragments, i);
     const bool exact_voxel = in.exact && !count_tie && channel0(in.exact, i) > 0.0f;
     n.exact_checked += exact_voxel;

@@ -79,7 +79,7 @@ StageVerdict judge_voxel_stage(ToleranceModel model, const StageSet& rs, const S
 
 // An image stage with the images its rules read: the camera's depth (edges), the reference's
 // texture slack and raster alternatives; a shadow map is its own depth and has its own range
-// (stages/shadow_map_ties.h; without one, an external reference, it keeps the neighbourhood rule
+// (freedoms/shadow_map_ties.h; without one, an external reference, it keeps the neighbourhood rule
 // and the shares).
 StageVerdict judge_image(const std::string& stage, const std::optional<StageRef>& ref, const StageSet& rs,
                          const StageSet& ts, const CompareOptions& opt, const JudgeContext& ctx) {

@@ -24,13 +24,13 @@ struct CompareOptions {
 
 /// The images an image stage's rules read besides its two values (each may be null).
 /// `edge_hint`: the reference's depth (camera-space stages), for the edge map.
-/// `texture_slack`: the reference's GBuffer::texture_slack (stages/texture_slack.h), added to the
+/// `texture_slack`: the reference's GBuffer::texture_slack (freedoms/texture_slack.h), added to the
 /// bound of the textured G-buffer stages; its alpha_tie channel adds edges.
 /// `display`: the engine's declared display transform of this stage (compare/display_transform.h):
 /// the reference's linear colour is mapped through it and each pixel's bound carried into display
 /// space; nullptr = linear.
-/// `tie_range`: the reference's GBuffer::tie_range (stages/gbuffer_ties.h), or for a shadow map its
-/// ShadowMap::tie_range / cube_tie_range face (stages/shadow_map_ties.h): a beyond-bound pixel
+/// `tie_range`: the reference's GBuffer::tie_range (freedoms/gbuffer_ties.h), or for a shadow map its
+/// ShadowMap::tie_range / cube_tie_range face (freedoms/shadow_map_ties.h): a beyond-bound pixel
 /// inside the range of the values a correct GL may show there (plus its bound) is admitted as a
 /// raster alternative, at any count, and any other fails (compare/tie_range.h).
 struct ImageStageInputs {

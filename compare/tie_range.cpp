@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-#include "stages/gbuffer_ties.h"
+#include "freedoms/gbuffer_ties.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {
@@ -33,9 +33,9 @@ std::string tie_range_stage(const std::string& stage) {
 TieRangeChannels tie_range_channels(const std::string& stage, const Image& range, int channels) {
   const std::string prefix = "gbuffer.";
   TieRangeChannels out;
-  // G-buffer stages by their attachment's name (stages/gbuffer_ties.h), the shading stages judged
-  // on the test's own inputs by their stage name (stages/direct_ties.h), shadow maps as "depth"
-  // (stages/shadow_map_ties.h).
+  // G-buffer stages by their attachment's name (freedoms/gbuffer_ties.h), the shading stages judged
+  // on the test's own inputs by their stage name (freedoms/direct_ties.h), shadow maps as "depth"
+  // (freedoms/shadow_map_ties.h).
   const bool gbuffer = stage.compare(0, prefix.size(), prefix) == 0;
   const bool light_space = light_space_range_row(stage) != nullptr;
   if (!gbuffer && !light_space && stage != stage_names::kImageDirect && stage != stage_names::kImageEmission)

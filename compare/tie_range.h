@@ -1,7 +1,7 @@
-// Raster alternatives in the comparison: the reference's GBuffer::tie_range (stages/gbuffer_ties.h)
+// Raster alternatives in the comparison: the reference's GBuffer::tie_range (freedoms/gbuffer_ties.h)
 // holds, per G-buffer stage and channel, the range of its own value and of every value a correct
 // GL may show where an edge or a triangle's facing ties under vertex snapping; ShadowMap::tie_range
-// and cube_tie_range (stages/shadow_map_ties.h) the same for each shadow-map texel's depth. A beyond-bound
+// and cube_tie_range (freedoms/shadow_map_ties.h) the same for each shadow-map texel's depth. A beyond-bound
 // pixel inside that range (plus the pixel's bound) is a value a correct GL gives there: admitted,
 // whatever the count, and reported (docs/compare.md, "Raster alternatives").
 #pragma once
@@ -14,14 +14,14 @@
 namespace vct::cmp {
 
 /// The reference-only stage holding `stage`'s range: shadow_map_tie_range.N for shadow_map.N,
-/// shadow_map_cube_tie_range.N for shadow_map_cube.N (stages/shadow_map_ties.h), gbuffer.tie_range
+/// shadow_map_cube_tie_range.N for shadow_map_cube.N (freedoms/shadow_map_ties.h), gbuffer.tie_range
 /// for every other stage (the G-buffer's, and image.direct / image.emission on the test's own inputs).
 std::string tie_range_stage(const std::string& stage);
 
 /// Channels of `range` holding `stage`'s lower and upper ends, channel by channel (lo[c], hi[c]
 /// for c < channels); empty when `stage` is not a G-buffer stage the range covers (nor
 /// image.direct / image.emission, whose ranges the reference computes on the test's own inputs,
-/// stages/direct_ties.h, nor a shadow map, whose range is its "depth" group) or the image lacks
+/// freedoms/direct_ties.h, nor a shadow map, whose range is its "depth" group) or the image lacks
 /// one of them.
 struct TieRangeChannels {
   std::vector<int> lo, hi;

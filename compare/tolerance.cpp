@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "compare/counted_shares.h"
+#include "freedoms/texture_slack.h"
 #include "stages/raster.h"
-#include "stages/texture_slack.h"
 
 namespace vct::cmp {
 

@@ -43,12 +43,12 @@ ImageModel image_model(const std::string& stage);
 
 /// Channel of the reference's texture slack image (GBuffer::texture_slack) that widens `stage`'s
 /// bound, found by its name ("normal", "albedo", "material", "emission": EXR files store channels
-/// sorted by name) or, for an unnamed image, by stages/texture_slack.h's order. -1 for stages
+/// sorted by name) or, for an unnamed image, by freedoms/texture_slack.h's order. -1 for stages
 /// that are not textured or a slack image without that channel.
 int texture_slack_channel(const std::string& stage, const Image& slack);
 
 /// Channel "alpha_tie" of the reference's texture slack image (1 where the alpha test may go
-/// either way, stages/alpha_ties.h), or -1 when the image has none.
+/// either way, freedoms/alpha_ties.h), or -1 when the image has none.
 int alpha_tie_channel(const Image& slack);
 
 /// Per-voxel radiance bound at level 0, chosen by how the TEST side stored and reduced voxels.

@@ -7,7 +7,7 @@
 #include "attribution/ladder_context.h"
 #include "attribution/specular_ladder.h"
 #include "core/error.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::attr {
 

@@ -1,12 +1,11 @@
-#include "core/declared_cones.h"
 #include "core/memory_budget.h"
-
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include "core/declared_cones.h"
 #include "core/error.h"
 
 namespace vct {
@@ -25,11 +24,12 @@ constexpr uint64_t kFragmentsPerSlice = 8;
 
 // Per fragment: the sorted VoxelFragment list (48 B), the per-triangle lists it was gathered from
 // (48 B: freed, but as small blocks in the worker threads' heaps, which are not returned to the
-// system) and its may_drop flag (1 B, stages/coverage_ties.h); then the larger of two phases: the
-// coverage ties, which hold one re-voxelization's sorted list at a time (48 B; its per-triangle
-// lists reuse the heap blocks above), and the injection's radiance (vec3, 12 B) and the
-// reduction's voxel start index (8 B).
-constexpr uint64_t kBytesPerFragment = 48 + 48 + 1 + std::max<uint64_t>(48, 12 + 8);
+// system), its may_drop flag (1 B, freedoms/coverage_ties.h) and the last frame's radiance (vec3,
+// 12 B: kept for the freedoms after the frame, stages/pipeline.h FrameIntermediates); then the
+// larger of two phases: the coverage ties, which hold one re-voxelization's sorted list at a time
+// (48 B; its per-triangle lists reuse the heap blocks above), and the reduction's voxel start
+// index (8 B).
+constexpr uint64_t kBytesPerFragment = 48 + 48 + 1 + 12 + std::max<uint64_t>(48, 8);
 
 // One frame's VoxelMips: iso[0] is a copy of the base level (RGBA float, 16 B/voxel) and every
 // pyramid's levels 1..log2 N hold (N^3 - 1) / 7 voxels; anisotropic adds six directional pyramids.
@@ -65,20 +65,21 @@ uint64_t voxel_bytes(const VctSettings& v) {
 
 // Alive from the G-buffer on; `shadow_layers` square float depth images (1 when the scene's lights
 // are not known yet; a point light's cube counts six), each with its reference-only range of
-// alternatives (two floats per texel: stages/shadow_map_ties.h).
+// alternatives (two floats per texel: freedoms/shadow_map_ties.h).
 uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
   const uint64_t pixels = uint64_t(v.width) * uint64_t(v.height);
   const uint64_t shadow =
       uint64_t(std::max(shadow_layers, 0)) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) * (4 + 8);
-  // G-buffer 21 floats (84 B), its texture slack (6 floats, 24 B) and raster-alternative range
-  // (42 floats, 168 B: stages/gbuffer_ties.h); FrameImages: 8 RGB float images (96 B), one RGBA image per diffuse
-  // cone (16 B each) and their source in IndirectImages while they are copied (as much again; the
-  // composite images do not exist yet then, so this is 60 B/pixel high at the seed's 5 cones);
-  // the soft-shadow visibility.
+  // G-buffer 21 floats (84 B), the raster it came from (kept for the freedoms: depth, triangle,
+  // barycentrics, facing and its tie, 22 B), its texture slack (6 floats, 24 B) and
+  // raster-alternative range (42 floats, 168 B: freedoms/gbuffer_ties.h); FrameImages: 8 RGB float
+  // images (96 B), one RGBA image per diffuse cone (16 B each) and their source in IndirectImages
+  // while they are copied (as much again; the composite images do not exist yet then, so this is
+  // 60 B/pixel high at the seed's 5 cones); the soft-shadow visibility.
   const size_t declared = parse_declared_cones(v.diffuse_cone_set).size();  // an engine's set, if given
   const uint64_t cones = declared > 0 ? uint64_t(declared) : uint64_t(v.diffuse_cone_count);
   const uint64_t cone_images = 2 * 16 * (v.diffuse_cones ? cones : 0);
-  const uint64_t per_pixel = 84 + 24 + 168 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
+  const uint64_t per_pixel = 84 + 22 + 24 + 168 + 96 + cone_images + (v.soft_shadows ? 4 : 0);
   return shadow + pixels * per_pixel;
 }
 
@@ -95,17 +96,16 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   e.baseline = kProcessBaseline;
   e.voxels = voxel_bytes(v);
   e.images = image_bytes(v, shadow_layers);
-  // The G-buffer's VisibilityBuffer: depth, triangle id, barycentrics, facing, facing tie
-  // (22 B/pixel), and while the raster alternatives are found (stages/gbuffer_ties.h) up to two
-  // more (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
+  // Besides the G-buffer's VisibilityBuffer (counted in the images: it is kept for the freedoms),
+  // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
   // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
   // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images. Before the G-buffer, one map (or face) at a time, its
-  // range of alternatives (stages/shadow_map_ties.h) is written straight into its image (counted
+  // range of alternatives (freedoms/shadow_map_ties.h) is written straight into its image (counted
   // there) through one band of scratch per thread; with alpha masks the alpha ties add the
   // masked front, the front that may be kept and the surfaces behind with their doubles: the
-  // camera's 3 x 22 + 16 B per texel of the map.
-  const uint64_t camera = (3 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
+  // camera's VisibilityBuffer and two more, 3 x 22 + 16 B per texel of the map.
+  const uint64_t camera = (2 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
   const uint64_t light = (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
   e.raster_scratch = std::max(camera, light);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -81,6 +82,14 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point start_;
 };
+
+/// Runs `work` and adds its wall time to timings[name] (a frame's per-stage timings).
+template <class Work>
+void timed(std::map<std::string, double>& timings, const std::string& name, Work&& work) {
+  const Stopwatch sw;
+  work();
+  timings[name] += sw.ms();
+}
 
 /// Machine and library versions for run.json["environment"].
 nlohmann::json environment_info();

@@ -59,7 +59,7 @@ struct SlotLods {
   // sub-texel weight precision GL leaves open (scene/texture_sample.h); zero for the reference.
   vec2 texel_shift{0.0f};
   // Added to the filtered normal-map texel (each channel, clamped to [0, 1]): GL returns a lookup
-  // of an 8-bit UNORM texture with that format's precision, one step 1/255 (stages/texture_slack.h
+  // of an 8-bit UNORM texture with that format's precision, one step 1/255 (freedoms/lookup_precision.h
   // kUnorm8Step); zero for the reference.
   vec3 normal_texel_offset{0.0f};
 };

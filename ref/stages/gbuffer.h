@@ -5,6 +5,7 @@
 #include "core/settings.h"
 #include "scene/scene.h"
 #include "scene/surface.h"
+#include "stages/raster.h"
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -23,14 +24,23 @@ struct GBufferSample {
 GBufferSample gbuffer_sample(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
                              uint32_t triangle, const vec3& bary, float depth, bool front_facing);
 
+/// The material `triangle` shows at image pixel (x, row)'s centre (barycentrics `bary`) and the
+/// texture LODs it was looked up at (the G-buffer's own; the texture slack tries the others).
+struct PixelMaterial {
+  SurfaceMaterial material;
+  SurfaceLods lods;
+};
+PixelMaterial pixel_material(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
+                             uint32_t triangle, const vec3& bary);
+
 /// The material of a G-buffer pixel, as the BRDF sees it (direct light, soft shadows, their ties).
 SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
 
 /// settings.width x settings.height view through scene.camera (projection aspect = width/height).
 /// Normals face the camera: back-facing triangles (clockwise in window space, GL's
 /// gl_FrontFacing == false) get their shading normal negated.
-/// `ties_ms`, when given, receives the time of the raster alternatives (gbuffer.tie_range, the
-/// oracle's own work, which `vct bench` counts apart from the G-buffer itself).
-GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings, double* ties_ms = nullptr);
+/// The judge's images beside it (texture_slack, tie_range) are the oracle's own work
+/// (freedoms/gbuffer_freedoms.h); `visibility`, when given, receives the raster they start from.
+GBuffer render_gbuffer(const Scene& scene, const VctSettings& settings, VisibilityBuffer* visibility = nullptr);
 
 }  // namespace vct

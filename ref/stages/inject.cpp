@@ -3,11 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.h"
-#include "io/run_dir.h"  // Stopwatch
-#include "stages/coverage_ties.h"
 #include "stages/direct.h"
-#include "stages/fragment_exactness.h"
-#include "stages/fragment_slack.h"
 #include "stages/reduction.h"
 #include "stages/voxel_fill.h"
 #include "stages/voxel_lod.h"
@@ -65,11 +61,6 @@ VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& val
   g.radiance = rgba_volume(n);
   g.fragments = Volume(n, n, n, 1);
   g.fragments.channel_names = {"fragments"};
-  const bool cas = settings.reduction == Reduction::CasRgba8;
-  if (cas) {
-    g.cas_lo = rgba_volume(n);
-    g.cas_hi = rgba_volume(n);
-  }
   // Fragments are sorted by voxel: each run is one voxel, reduced independently.
   std::vector<size_t> starts;
   for (size_t i = 0; i < vox.fragments.size(); ++i)
@@ -78,41 +69,31 @@ VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& val
   parallel_for(int64_t(starts.size()) - 1, [&](int64_t r) {
     const size_t b = starts[size_t(r)], e = starts[size_t(r) + 1];
     const ivec3 c = vox.fragments[b].voxel;
-    vec4 out(0.0f, 0.0f, 0.0f, 1.0f), lo(0.0f, 0.0f, 0.0f, 1.0f), hi(0.0f, 0.0f, 0.0f, 1.0f);
+    vec4 out(0.0f, 0.0f, 0.0f, 1.0f);
     std::vector<float> ch(e - b);
     for (int k = 0; k < 3; ++k) {
       for (size_t i = b; i < e; ++i) ch[i - b] = values[i][k];
       out[k] = quantize_storage(reduce_channel(ch, settings.reduction), settings.storage);
-      if (cas) {
-        const CasInterval iv = cas_interval(ch);
-        lo[k] = iv.lo;
-        hi[k] = iv.hi;
-      }
     }
     g.radiance.set_rgba(c.x, c.y, c.z, out);
     *g.fragments.voxel(c.x, c.y, c.z) = float(e - b);
-    if (cas) {
-      g.cas_lo.set_rgba(c.x, c.y, c.z, lo);
-      g.cas_hi.set_rgba(c.x, c.y, c.z, hi);
-    }
   });
   return g;
 }
 
-VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
-                            const VctSettings& settings, const BounceLight* bounce, OracleVolumes oracle) {
-  const std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
+VoxelGrid reduce_and_fill(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
+                          const VctSettings& settings) {
   VoxelGrid g = reduce_fragments(vox, values, settings);
   // Solid interior and thickening (voxel_fill.h) add opacity before particles and mips.
   fill_voxels(scene, vox, settings, g.radiance);
-  const Stopwatch sw;
-  if (oracle.judged) {
-    const std::vector<float> slack = fragment_shading_slack(scene, vox, values, maps, settings, bounce);
-    g.shading_slack = voxel_shading_slack(vox, slack);
-    g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
-    widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);
-  }
-  if (oracle.ms) *oracle.ms = sw.ms();
+  return g;
+}
+
+VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
+                            const VctSettings& settings, const BounceLight* bounce, std::vector<vec3>* values_out) {
+  std::vector<vec3> values = fragment_radiance(scene, vox, maps, settings, bounce);
+  VoxelGrid g = reduce_and_fill(scene, vox, values, settings);
+  if (values_out) *values_out = std::move(values);
   return g;
 }
 

@@ -30,19 +30,17 @@ std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox,
                                     const VctSettings& settings, const BounceLight* bounce = nullptr);
 
 /// Level-0 voxels: RGB from settings.reduction over the voxel's fragments, A = 1 where occupied
-/// (and where stages/voxel_fill.h adds the solid interior or thickening),
-/// then settings.storage quantization; `fragments` counts; cas_lo/cas_hi for Reduction::CasRgba8;
-/// shading_slack (stages/fragment_slack.h).
-/// The judge's volumes beside the voxels: shading slack, exactness, coverage ties (the oracle's own
-/// work). `judged` false skips them (a multibounce frame that is not the last: nothing judges
-/// it); `ms`, when given, receives their time (`vct bench` counts it apart from the injection).
-struct OracleVolumes {
-  bool judged = true;
-  double* ms = nullptr;
-};
+/// (and where stages/voxel_fill.h adds the solid interior or thickening), then settings.storage
+/// quantization; `fragments` counts. `values_out`, when given, receives each fragment's light
+/// (fragment_radiance). The judge's volumes beside the voxels (shading slack, exactness, the
+/// reduction's interval) are the oracle's own work: freedoms/voxel_freedoms.h.
 VoxelGrid inject_and_reduce(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                             const VctSettings& settings, const BounceLight* bounce = nullptr,
-                            OracleVolumes oracle = {});
+                            std::vector<vec3>* values_out = nullptr);
+
+/// reduce_fragments, then stages/voxel_fill.h's opacity: the grid inject_and_reduce makes from `values`.
+VoxelGrid reduce_and_fill(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
+                          const VctSettings& settings);
 
 /// The reduction alone, from per-fragment values (same order as vox.fragments).
 VoxelGrid reduce_fragments(const Voxelization& vox, const std::vector<vec3>& values, const VctSettings& settings);

@@ -7,7 +7,6 @@
 #include "stages/cone_sets.h"
 #include "stages/mips.h"
 #include "stages/particles.h"
-#include "stages/running_mean.h"
 
 namespace vct {
 
@@ -32,14 +31,7 @@ double total_energy(const Volume& radiance) {
 
 void add_particles_to_grid(const Scene& scene, const VctSettings& s, VoxelGrid& g) {
   if (scene.emitters.empty()) return;
-  const Volume before = g.radiance;
   add_particles_to_voxels(scene, s, g.radiance);
-  if (g.cas_lo.voxel_count() == g.radiance.voxel_count() && g.cas_hi.voxel_count() == g.radiance.voxel_count())
-    add_light_to_interval(particle_voxel_light(scene, s, g.radiance.nx), g.cas_lo, g.cas_hi);
-  if (g.exact.voxel_count() != g.radiance.voxel_count()) return;
-  for (size_t i = 0; i < g.exact.voxel_count(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (g.radiance.data[i * 4 + size_t(c)] != before.data[i * 4 + size_t(c)]) g.exact.data[i] = 0.0f;
 }
 
 namespace {
@@ -66,13 +58,8 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
                                           bool keep_frames) {
   MultibounceResult r;
   Stopwatch sw;
-  // Only the last frame's voxels are judged; which frame is last is known in advance unless the
-  // loop may stop early on convergence.
-  const auto judged = [&](int frame) { return frame == s.bounces - 1 || s.convergence_tolerance > 0.0f; };
-  double slack_ms = 0.0;
-  r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr, {judged(0), &slack_ms});
-  r.timings_ms["inject"] = sw.ms() - slack_ms;
-  r.timings_ms["voxel_slack"] = slack_ms;
+  r.grid = inject_and_reduce(scene, vox, shadow_maps, s, nullptr, &r.last_values);
+  r.timings_ms["inject"] = sw.ms();
   finish_frame(scene, s, r);
   for (int frame = 1; frame < s.bounces; ++frame) {
     if (keep_frames) r.earlier_frames.push_back(r.grid.radiance);
@@ -80,9 +67,8 @@ MultibounceResult inject_with_multibounce(const Scene& scene, const Voxelization
     const VoxelMips previous = std::move(r.mips);
     const BounceLight bounce = make_bounce_light(scene, previous, s);
     sw = Stopwatch();
-    r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce, {judged(frame), &slack_ms});
-    r.timings_ms["bounce_inject"] += sw.ms() - slack_ms;
-    r.timings_ms["voxel_slack"] += slack_ms;
+    r.grid = inject_and_reduce(scene, vox, shadow_maps, s, &bounce, &r.last_values);
+    r.timings_ms["bounce_inject"] += sw.ms();
     finish_frame(scene, s, r);
     if (multibounce_converged(r.energy, s.convergence_tolerance)) break;
   }

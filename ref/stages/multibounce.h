@@ -26,11 +26,8 @@ constexpr float kBounceMinLod = 1.0f;
 BounceLight make_bounce_light(const Scene& scene, const VoxelMips& previous, const VctSettings& s);
 BounceLight make_bounce_light(const Scene& scene, VoxelMips&& previous, const VctSettings& s) = delete;
 
-/// Adds the particles' light to a reduced grid as the frame does (add_particles_to_voxels): a voxel
-/// it reaches is no longer exact (VoxelGrid::exact: float arithmetic on both sides), and the CAS
-/// interval moves with it, since GL's resolve adds the particles to the unpacked CAS value
-/// (gl/shaders/voxel_resolve.comp); an interval without them fails every voxel near a fire
-/// (demo_room; docs/compare.md, the `cas-rgba8-interval` row).
+/// Adds the particles' light to a reduced grid as the frame does (add_particles_to_voxels); what
+/// that does to the judge's volumes beside it is freedoms/voxel_freedoms.h's add_particle_freedoms.
 void add_particles_to_grid(const Scene& scene, const VctSettings& s, VoxelGrid& g);
 
 /// Total RGB radiance summed over the base level (the energy recorded per frame), in a fixed
@@ -48,8 +45,9 @@ struct MultibounceResult {
   std::vector<double> energy;  // total_energy after each frame
   std::vector<Volume> earlier_frames;  // base level of each frame before the last (if kept)
   Volume bounce_input;  // the base level the last frame's bounce light came from (frames > 1)
+  std::vector<vec3> last_values;  // the last frame's fragment light (inject_and_reduce's values_out)
   int frames = 0;
-  std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject", "voxel_slack"
+  std::map<std::string, double> timings_ms;  // "inject", "mips", "particles_voxels", "bounce_inject"
 };
 
 /// Runs frame 1 and then up to settings.bounces - 1 bounce frames; stops early when

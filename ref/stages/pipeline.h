@@ -3,9 +3,13 @@
 // -> mips -> direct (PCF or cone shadows) -> indirect cones -> particles -> composite.
 #pragma once
 
+#include <vector>
+
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "stages/raster.h"
 #include "stages/stage_types.h"
+#include "stages/voxelize.h"
 
 namespace vct {
 
@@ -16,21 +20,25 @@ namespace vct {
 /// `march_end`: the indirect cones' MarchParams::march_end (the march-end tie's alternatives).
 void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end = 0);
 
-/// The reference's own work for the judge, which a VCT frame does not do (raster alternatives,
-/// slacks, coverage ties, the holes map, the running mean's interval), by timing name: `vct bench`
-/// counts them apart from the stages (compare/stage_timings.cpp), and the timing "total_vct" is
-/// "total" without them.
-inline constexpr const char* kOracleExtraStages[] = {"gbuffer_ties", "shadow_tie_ranges", "direct_slack",
-                                                     "voxel_slack",  "coverage_ties",     "holes",
-                                                     "running_mean_interval"};
+/// What a frame computed on its way that its outputs do not keep, for the judge's freedoms
+/// (freedoms/reference_freedoms.h), which start from the same raster and fragments.
+struct FrameIntermediates {
+  VisibilityBuffer camera;              // the G-buffer's raster (render_gbuffer's visibility)
+  Voxelization voxels;                  // the voxelization the frame injected
+  std::vector<vec3> fragment_light;     // the last frame's light per fragment (order of voxels.fragments)
+};
 
-/// Runs every stage of the CPU reference. Threads come from set_thread_count(); the result is
-/// byte-identical for any thread count.
-FrameResult render_ref_frame(const Scene& scene, const Settings& settings);
+/// A frame of the CPU VCT stages and what they left on the way.
+struct VctFrame {
+  FrameResult result;
+  FrameIntermediates intermediates;
+};
 
-/// Same, with the GPU-rule voxelizer sampling at `sample_positions` (a driver's
-/// GL_SAMPLE_POSITION list, BackendFacts::sample_positions) instead of the standard pattern of
-/// settings.vct.msaa_samples; empty = the standard pattern.
-FrameResult render_ref_frame(const Scene& scene, const Settings& settings, const std::vector<vec2>& sample_positions);
+/// Runs every VCT stage of the CPU reference, nothing of the judge's (the whole reference frame
+/// is freedoms/reference_frame.h's render_ref_frame). The voxelizer samples at `sample_positions`
+/// (a driver's GL_SAMPLE_POSITION list, BackendFacts::sample_positions) instead of the standard
+/// pattern of settings.vct.msaa_samples when not empty. Threads come from set_thread_count(); the
+/// result is byte-identical for any thread count. The timing "total_vct" is the whole of it.
+VctFrame run_vct_frame(const Scene& scene, const Settings& settings, const std::vector<vec2>& sample_positions);
 
 }  // namespace vct

@@ -193,7 +193,7 @@ struct SpanEdges {
 /// `sample`: the coverage sample's offset in the pixel ([0,1)^2, y up; multiples of 1/256), the
 /// centre by default; depth and barycentrics are always those at the centre (as GL interpolates
 /// at the centre whichever sample is covered), so an offset sample shows which surface a correct
-/// GL whose edges lie that far off the reference's would have kept (stages/gbuffer_ties.h).
+/// GL whose edges lie that far off the reference's would have kept (freedoms/gbuffer_ties.h).
 VisibilityBuffer render_visibility(const std::vector<vec3>& positions,
                                    const std::vector<uvec3>& triangles, const mat4& view_proj,
                                    int width, int height, const Scene* alpha_scene = nullptr,

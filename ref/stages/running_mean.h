@@ -2,50 +2,18 @@
 // design's renderer): each fragment loads the stored mean s and count c, stores
 // (s*c + x)/(c+1) rounded to binary16, with no lock. Racing fragments overwrite each other, so
 // the value left is the running mean of some non-empty subset of the voxel's fragments, in some
-// order. The reference cannot pick that subset; it states the interval every such value lies in,
-// like the CAS interval (stages/reduction.h), and the comparison judges the test against it
+// order. The reference cannot pick that subset; it states the interval every such value lies in
+// (freedoms/reduction_interval.h), and the comparison judges the test against it
 // (docs/compare.md, "running-mean-half-interval").
 #pragma once
 
-#include <utility>
 #include <vector>
 
-#include "core/volume.h"
-#include "stages/voxelize.h"
 
 namespace vct {
 
 /// The value the running mean leaves when the given fragments arrive in this order with no lost
 /// update: s_1 = h(x_1), s_k = h((s_{k-1}*(k-1) + x_k)/k) in float32, h = round to binary16.
 float running_mean_half_sequential(const std::vector<float>& values);
-
-struct ValueInterval {
-  float lo = 0.0f, hi = 0.0f;
-};
-
-/// Every value the running mean may leave, for any order and any non-empty subset of `values`
-/// (lost updates), lies in [h(min) - 2 ulp, h(max) + 2 ulp] (ulp: binary16 spacing there). Why:
-/// each step averages values in [min, max] (induction), and rounding is monotone, so every step
-/// stays in [h(min), h(max)] when rounding to nearest; one ulp more on each side admits any
-/// binary16 rounding mode (GL 4.5 §2.3.4.2 leaves it to the implementation) and one more the
-/// float32 arithmetic of the average pushing a value across a rounding boundary. The singletons
-/// {min} and {max} (all but one update lost) reach h(min) and h(max): the interval is tight to
-/// those ulps. Empty input: {0, 0}.
-ValueInterval running_mean_interval(const std::vector<float>& values);
-
-/// Per voxel and RGB channel, running_mean_interval of the voxel's fragments (`values` in the
-/// order of vox.fragments, which is sorted by voxel); alpha 1 where occupied. Written into the
-/// reference's interval volumes (VoxelGrid::cas_lo / cas_hi) when it models this reduction.
-void running_mean_interval_volumes(const Voxelization& vox, const std::vector<vec3>& values, Volume& lo,
-                                   Volume& hi);
-
-/// The interval after light is added to the reduced voxels (the particles' additive light,
-/// stages/particles.h): each addition `add` at voxel v moves both ends by `add`, and the engine's
-/// binary16 store of the sum may round either way, so each end moves one more binary16 ulp of
-/// the new end outward (lo down, hi up). Additions are applied in the given order, as
-/// add_particles_to_voxels applies them. A voxel with no fragments gets [add - ulp, add + ulp]
-/// with alpha 0 (transparent light).
-using AddedLight = std::pair<ivec3, vec3>;  // (voxel, RGB added)
-void add_light_to_interval(const std::vector<AddedLight>& additions, Volume& lo, Volume& hi);
 
 }  // namespace vct

@@ -33,7 +33,7 @@ Image* cube_face(FrameResult& f, int i, bool grow) {
   }
   return &f.shadow_maps[light].cube[size_t(i % 6)];
 }
-// The reference's light-space raster alternatives beside each map (stages/shadow_map_ties.h).
+// The reference's light-space raster alternatives beside each map (freedoms/shadow_map_ties.h).
 Image* shadow_tie_range(FrameResult& f, int i, bool grow) {
   Image* map = shadow_map(f, i, grow);
   return map ? &f.shadow_maps[size_t(i)].tie_range : nullptr;
@@ -84,9 +84,9 @@ const std::vector<StageRow> kRows = {
   {st::kShadowMapCube,         "shadow_map_cube_{}",            K::Image,  X::CubeFace, R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     cube_face,                                         nullptr,
    "one face of a point light's D32F cube (member light x 6 + face, GL's face order +x -x +y -y +z -z)", "Shadow maps", "ref/stages/shadow_map.cpp, ref/stages/cube_map.cpp", "gl/gl_pass_raster.cpp (shadow_pass), gl/shaders/depth_only.frag", "shadow"},
   {st::kShadowMapTieRange,     "",                              K::Image,  X::Light,    R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     shadow_tie_range,                                  nullptr,
-   "per texel of a spot or directional light's map, the range of the depths a correct GL may store under 2^-8 texel vertex snapping and alpha-test ties (reference only)", "Shadow maps", "ref/stages/shadow_map_ties.cpp, ref/stages/raster_alternatives.cpp", "-", "shadow"},
+   "per texel of a spot or directional light's map, the range of the depths a correct GL may store under 2^-8 texel vertex snapping and alpha-test ties (reference only)", "Shadow maps", "ref/freedoms/shadow_map_ties.cpp, ref/freedoms/raster_alternatives.cpp", "-", "shadow"},
   {st::kShadowMapCubeTieRange, "",                              K::Image,  X::CubeFace, R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     cube_face_tie_range,                               nullptr,
-   "the same range per texel of one face of a point light's cube (member light x 6 + face; reference only)", "Shadow maps", "ref/stages/shadow_map_ties.cpp, ref/stages/raster_alternatives.cpp", "-", "shadow"},
+   "the same range per texel of one face of a point light's cube (member light x 6 + face; reference only)", "Shadow maps", "ref/freedoms/shadow_map_ties.cpp, ref/freedoms/raster_alternatives.cpp", "-", "shadow"},
   {st::kGbufferCoverage,       "gbuffer_coverage",              K::Image,  X::None,     R::Judged,    P::Unit,     T::Coverage,       false, C::Always,            1, "",                     gbuffer<&GBuffer::coverage>,                       nullptr,
    "the camera G-buffer's coverage per pixel centre", "G-buffer and direct light", "ref/stages/gbuffer.cpp, ref/stages/raster.cpp", "gl/gl_pass_raster.cpp (gbuffer_pass), gl/shaders/gbuffer.frag", "gbuffer"},
   {st::kGbufferDepth,          "gbuffer_depth",                 K::Image,  X::None,     R::Judged,    P::Depth,    T::Depth,          false, C::No,                1, "",                     gbuffer<&GBuffer::depth>,                          nullptr,
@@ -104,9 +104,9 @@ const std::vector<StageRow> kRows = {
   {st::kGbufferEmission,       "gbuffer_emission",              K::Image,  X::None,     R::Judged,    P::Color,    T::Texture,        false, C::Always,            3, "",                     gbuffer<&GBuffer::emission>,                       nullptr,
    "the camera G-buffer's emitted radiance per pixel centre", "G-buffer and direct light", "ref/stages/gbuffer.cpp, ref/stages/raster.cpp", "gl/gl_pass_raster.cpp (gbuffer_pass), gl/shaders/gbuffer.frag", "gbuffer"},
   {st::kGbufferTextureSlack,   "",                              K::Image,  X::None,     R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     gbuffer<&GBuffer::texture_slack>,                  nullptr,
-   "how far each textured G-buffer value moves under a 2^-8 px sample shift and any admissible texture LOD (reference only)", "G-buffer and direct light", "ref/stages/texture_slack.cpp, ref/stages/uv_derivatives.cpp", "-", "gbuffer"},
+   "how far each textured G-buffer value moves under a 2^-8 px sample shift and any admissible texture LOD (reference only)", "G-buffer and direct light", "ref/freedoms/texture_slack.cpp, ref/stages/uv_derivatives.cpp", "-", "gbuffer"},
   {st::kGbufferTieRange,       "",                              K::Image,  X::None,     R::Auxiliary, P::Unit,     T::None,           false, C::No,                0, "",                     gbuffer<&GBuffer::tie_range>,                      nullptr,
-   "per G-buffer stage and channel, the range of the values a correct GL may show where an edge or a triangle's facing ties under 2^-8 px vertex snapping (reference only)", "G-buffer and direct light", "ref/stages/gbuffer_ties.cpp", "-", "gbuffer"},
+   "per G-buffer stage and channel, the range of the values a correct GL may show where an edge or a triangle's facing ties under 2^-8 px vertex snapping (reference only)", "G-buffer and direct light", "ref/freedoms/gbuffer_ties.cpp", "-", "gbuffer"},
   {st::kImageDirect,           "direct",                        K::Image,  X::None,     R::Judged,    P::Color,    T::Shading,        false, C::UnlessSoftShadows, 3, "pt_direct",            frame_image_slot<&FrameImages::direct>,            nullptr,
    "Cook-Torrance direct light with shadow-map (or cone) visibility", "G-buffer and direct light", "ref/stages/direct.cpp", "gl/gl_pass_shading.cpp (direct_pass), gl/shaders/direct.frag", "direct"},
   {st::kVoxelOccupancy,        "voxels_occupancy",              K::Volume, X::None,     R::Derived,   P::Volume,   T::VoxelOccupancy, false, C::No,                0, "",                     nullptr,                                           nullptr,
@@ -116,13 +116,13 @@ const std::vector<StageRow> kRows = {
   {st::kVoxelFragments,        "voxels_fragments",              K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::fragments>,
    "fragments (surface samples) per voxel", "Voxelizers", "ref/stages/voxelize_gpu.cpp", "gl/gl_pass_voxel.cpp (voxelize)", "voxelize"},
   {st::kVoxelCasLo,            "voxels_cas_lo",                 K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::cas_lo>,
-   "lowest value a correct CAS running average may store (reference only)", "Reduction", "ref/stages/reduction.cpp", "-", ""},
+   "lowest value a correct CAS running average may store (reference only)", "Reduction", "ref/freedoms/reduction_interval.cpp, ref/stages/reduction.cpp", "-", ""},
   {st::kVoxelCasHi,            "voxels_cas_hi",                 K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::cas_hi>,
-   "highest value a correct CAS running average may store (reference only)", "Reduction", "ref/stages/reduction.cpp", "-", ""},
+   "highest value a correct CAS running average may store (reference only)", "Reduction", "ref/freedoms/reduction_interval.cpp, ref/stages/reduction.cpp", "-", ""},
   {st::kVoxelShadingSlack,     "voxels_shading_slack",          K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::shading_slack>,
-   "how far each voxel's mean light may move under GL's shading freedoms: 2^-8 voxel position snapping, texture LOD, sub-texel weights, and which fragments the snapped raster averages (reference only)", "Reduction", "ref/stages/fragment_slack.cpp, ref/stages/voxel_lod.cpp, ref/stages/coverage_ties.cpp", "-", ""},
+   "how far each voxel's mean light may move under GL's shading freedoms: 2^-8 voxel position snapping, texture LOD, sub-texel weights, and which fragments the snapped raster averages (reference only)", "Reduction", "ref/freedoms/fragment_slack.cpp, ref/stages/voxel_lod.cpp, ref/freedoms/coverage_ties.cpp", "-", ""},
   {st::kVoxelExact,            "voxels_exact",                  K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::exact>,
-   "1 where every fragment's light is bit-determined (emission from constants, no light reaching the fragment, no bounce, no particles): the fixed-point reduction must agree exactly there (reference only)", "Reduction", "ref/stages/fragment_exactness.cpp", "-", ""},
+   "1 where every fragment's light is bit-determined (emission from constants, no light reaching the fragment, no bounce, no particles): the fixed-point reduction must agree exactly there (reference only)", "Reduction", "ref/freedoms/fragment_exactness.cpp", "-", ""},
   {st::kVoxelBounceInput,      "voxels_bounce_input",           K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           bounce_input,
    "multibounce: the base level of the frame before the last, whose mips the last frame's bounce light was traced in; voxel.radiance is judged on the test's own (compare/isolated_stages.h)", "Temporal multibounce", "ref/stages/multibounce.cpp", "gl/gl_pass_voxel.cpp (voxel_passes)", ""},
   {st::kVoxelConservative,     "voxels_conservative_occupancy", K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           conservative,

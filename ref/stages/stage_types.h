@@ -30,7 +30,7 @@ struct ShadowMap {
   std::array<mat4, 6> cube_view_proj{};  // world -> face clip space (90 degree perspective)
   // Reference only (empty from GL): per texel the range [lo, hi] of the depth a correct GL may
   // store there under 2^-8 texel vertex snapping and alpha-test ties, of `depth` and of each
-  // `cube` face (stages/shadow_map_ties.h); the comparison admits a value inside it.
+  // `cube` face (freedoms/shadow_map_ties.h); the comparison admits a value inside it.
   Image tie_range;
   std::array<Image, 6> cube_tie_range;
   bool is_cube() const { return !cube[0].empty(); }
@@ -48,12 +48,12 @@ struct GBuffer {
   Image depth;      // 1: window depth [0,1]
   Image coverage;   // 1: 1 where a triangle covers the pixel centre
   // Reference only (empty from GL): per textured attribute (normal, albedo, material, emission)
-  // how far its value may move under a 2^-8 pixel sample shift (stages/texture_slack.h); the
+  // how far its value may move under a 2^-8 pixel sample shift (freedoms/texture_slack.h); the
   // comparison adds it to those stages' bounds.
   Image texture_slack;
   // Reference only (empty from GL): per G-buffer stage and channel the range [lo, hi] of the
   // values a correct GL may show here when its edges or a triangle's facing tie the other way
-  // (stages/gbuffer_ties.h); the comparison admits a value inside it.
+  // (freedoms/gbuffer_ties.h); the comparison admits a value inside it.
   Image tie_range;
   // Test frames only, where the re-trace reconstructs the engine's positions from its depth
   // (compare/partial_gbuffer.h): per axis how far (world units) the engine's own position may lie
@@ -71,10 +71,10 @@ struct VoxelGrid {
   Volume cas_lo, cas_hi;
   // Reference only: per voxel how far its mean may move under the shading freedoms GL leaves
   // the voxelization pass (position snapping, texture LOD, sub-texel weights;
-  // stages/fragment_slack.h).
+  // freedoms/fragment_slack.h).
   Volume shading_slack;
   // Reference only: 1 where every fragment's light is computed bit for bit by any correct GL
-  // (stages/fragment_exactness.h), so the fixed-point reduction must agree
+  // (freedoms/fragment_exactness.h), so the fixed-point reduction must agree
   // exactly there.
   Volume exact;
 };
@@ -118,7 +118,7 @@ struct FrameResult {
   FrameImages images;
   std::vector<double> multibounce_energy;  // total voxel radiance after each multibounce frame
   // ref only: the base level after each multibounce frame before the last (kept while small,
-  // see pipeline.cpp), for the dumps.
+  // see stages/pipeline.cpp), for the dumps.
   std::vector<Volume> multibounce_frames;
   // The base level the last multibounce frame traced its bounce light from (the frame before the
   // last; empty after one frame): what voxel.radiance is judged on in bounce frames

@@ -126,10 +126,14 @@ Voxelization voxelize(const Scene& scene, const VctSettings& settings) {
 }
 
 Volume hole_map(const Voxelization& conservative, const Voxelization& gpu) {
-  Volume h(conservative.n, conservative.n, conservative.n, 1);
+  return hole_map(conservative.occupancy, gpu.occupancy);
+}
+
+Volume hole_map(const Volume& conservative_occupancy, const Volume& gpu_occupancy) {
+  Volume h(conservative_occupancy.nx, conservative_occupancy.ny, conservative_occupancy.nz, 1);
   h.channel_names = {"hole"};
   for (size_t i = 0; i < h.data.size(); ++i)
-    h.data[i] = (conservative.occupancy.data[i] > 0.0f && gpu.occupancy.data[i] == 0.0f) ? 1.0f : 0.0f;
+    h.data[i] = (conservative_occupancy.data[i] > 0.0f && gpu_occupancy.data[i] == 0.0f) ? 1.0f : 0.0f;
   return h;
 }
 

@@ -35,7 +35,7 @@ struct Voxelization {
   int64_t covered = 0;  // number of occupied voxels
   /// The GPU rule's MSAA sample positions (pixel units); empty for the conservative voxelizer.
   std::vector<vec2> samples;
-  /// Coverage ties (stages/coverage_ties.h, filled by add_coverage_ties; empty until then): per
+  /// Coverage ties (freedoms/coverage_ties.h, filled by add_coverage_ties; empty until then): per
   /// fragment, 1 where a correct GL may not make it, and the fragments it may make besides these
   /// (same order as `fragments`).
   std::vector<uint8_t> may_drop;
@@ -48,13 +48,13 @@ glm::dvec3 to_voxel_space(const Scene& scene, int n, const vec3& world);
 /// GL's own arithmetic in the conservative shaders (clip, depth range, in double that GLSL 4.50
 /// §4.7.1 only promises to be as precise as float), in voxels: the whole bound of the gs mode,
 /// part of the hardware modes' (compare/conservative_occupancy.h), and the conservative
-/// voxelizer's coverage ties (stages/coverage_ties.h).
+/// voxelizer's coverage ties (freedoms/coverage_ties.h).
 constexpr double kConservativeArithmetic = 1.0 / 1024.0;
 
 /// Exact conservative voxelization; one fragment per (triangle, voxel) at the point of the
 /// triangle closest to the voxel centre. With `grow` != 0 the voxel boxes are closed and grown
 /// (shrunk, when negative) by that many voxels on every side: the sets a GL whose box tests are
-/// that far off may make (stages/coverage_ties.h).
+/// that far off may make (freedoms/coverage_ties.h).
 Voxelization voxelize_conservative(const Scene& scene, int n, double grow = 0.0);
 
 /// The GPU rule with 1, 4 or 8 samples; one fragment per covered pixel (any sample), evaluated at
@@ -69,6 +69,8 @@ Voxelization voxelize(const Scene& scene, const VctSettings& settings);
 
 /// 1 where `conservative` has a voxel and `gpu` does not (1 channel).
 Volume hole_map(const Voxelization& conservative, const Voxelization& gpu);
+/// The same from the two occupancy volumes.
+Volume hole_map(const Volume& conservative_occupancy, const Volume& gpu_occupancy);
 
 /// Dominant axis of a triangle as the seed's geometry shader picks it from
 /// p = abs(cross(v1 - v0, v2 - v0)) in float: 2 (z) if p.z > p.x && p.z > p.y, else 0 (x) if

@@ -1,22 +1,22 @@
 // Alpha-mask ties are geometric-edge ties (docs/compare.md, "Alpha-mask ties"): a sample whose
-// alpha lies within the freedom GL leaves it (stages/alpha_ties.h: 8-bit bilinear weights plus a
+// alpha lies within the freedom GL leaves it (freedoms/alpha_ties.h: 8-bit bilinear weights plus a
 // 2^-8 pixel sample shift) of the cutoff may show the surface or what lies behind it. The
 // reference's G-buffer marks every such pixel (texture slack channel alpha_tie), and the
 // comparison adds the marks to its edge map, where a flipped pixel must still be an admissible
 // neighbour value; nothing else is admitted and no bound is widened.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 #include <string>
 #include <utility>
 
 #include "compare/image_edges.h"
 #include "compare/stage_compare.h"
+#include "freedoms/alpha_ties.h"
+#include "freedoms/gbuffer_freedoms.h"
 #include "scene/alpha_mask.h"
 #include "scene/gltf_loader.h"
-#include "stages/alpha_ties.h"
 #include "stages/gbuffer.h"
 #include "stages/raster.h"
 
@@ -64,7 +64,7 @@ TEST(AlphaTies, TheGbufferMarksEverySampleThatMayFlip) {
   for (int size : {64, 128, 256}) {
     VctSettings st;
     st.width = st.height = size;
-    const GBuffer g = render_gbuffer(s, st);
+    const GBuffer g = render_gbuffer_with_freedoms(s, st);
     const mat4 view_proj = s.camera.projection(1.0f) * s.camera.view();
     const TieCount c = alpha_ties_in_view(s, view_proj, size, g.depth, &g.texture_slack);
     std::printf("  gbuffer %d^2: %d samples may flip, %d flagged by depth, %d marked alpha_tie\n",
@@ -85,7 +85,7 @@ TEST(AlphaTies, AFlipIsAdmittedOnlyWhereTheAlphaTieChannelMarksIt) {
   const Scene& s = foliage();
   VctSettings st;
   st.width = st.height = 256;
-  const GBuffer g = render_gbuffer(s, st);
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
   const Image& ref = g.depth;
   const std::vector<uint8_t> depth_edges = edge_map(ref, &ref);
   const auto flipped = [&](int x, int y) {

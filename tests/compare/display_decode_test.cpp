@@ -11,7 +11,7 @@
 #include "compare/stage_set.h"
 #include "find_verdict.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::cmp {
 namespace {

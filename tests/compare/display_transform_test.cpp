@@ -10,7 +10,7 @@
 #include "compare/stage_compare.h"
 #include "core/error.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::cmp {
 namespace {

@@ -26,7 +26,7 @@
 #include "stages/inject.h"
 #include "stages/mips.h"
 #include "stages/multibounce.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/running_mean.h"
 #include "stages/voxelize.h"
 #include "stages/shadow_map.h"

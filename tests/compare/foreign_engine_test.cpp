@@ -15,7 +15,7 @@
 #include "scene/gltf_loader.h"
 #include "stages/inject.h"
 #include "stages/mips.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/running_mean.h"
 #include "stages/voxelize.h"
 

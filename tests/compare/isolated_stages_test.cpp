@@ -8,7 +8,7 @@
 #include "stages/mips.h"
 #include "stages/multibounce.h"
 #include "stages/particles.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/shadow_map.h"
 #include "stages/voxelize.h"
 

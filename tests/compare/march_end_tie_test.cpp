@@ -10,7 +10,7 @@
 #include "find_verdict.h"
 #include "scene/gltf_loader.h"
 #include "stages/mips.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::cmp {
 namespace {

@@ -11,7 +11,7 @@
 #include "compare/metamorphic_map.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_transform.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {

@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "scene/gltf_loader.h"
 #include "stages/indirect_pass.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {

@@ -2,12 +2,11 @@
 // silhouette that ties, the negated normal of a triangle whose facing ties) is admitted; without
 // the range, or with a value outside it, the stage fails (compare/tie_range.h).
 #include <gtest/gtest.h>
-
 #include <string>
 
 #include "compare/display_transform.h"
 #include "compare/stage_compare.h"
-#include "stages/gbuffer_ties.h"
+#include "freedoms/gbuffer_ties.h"
 
 namespace vct::cmp {
 namespace {
@@ -104,7 +103,7 @@ TEST(RasterAlternatives, WithTheRangeANeighboursValueIsNoLongerATie) {
   EXPECT_EQ(v.extra.at("allowed_edge_fraction").get<double>(), 0.0);
 }
 
-// The shading stages' ranges (a PCF tap that may flip, stages/direct_ties.h) hold for an engine
+// The shading stages' ranges (a PCF tap that may flip, freedoms/direct_ties.h) hold for an engine
 // that wrote its direct light display-encoded too: the range's ends carried through the declared
 // transform, plus one step of the 8-bit store.
 TEST(RasterAlternatives, DisplayEncodedShadingStageIsAdmittedWithinTheRangeCarriedThroughTheTransform) {

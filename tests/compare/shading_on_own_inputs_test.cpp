@@ -3,18 +3,17 @@
 // frame gives its own bytes, every tap a correct lookup may flip lies in the reference's range,
 // and a value beyond the bound outside that range fails at once, whatever the count.
 #include <gtest/gtest.h>
-
 #include <random>
 
 #include "compare/isolated_stages.h"
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "find_verdict.h"
+#include "freedoms/direct_ties.h"
+#include "freedoms/shadow_ties.h"
 #include "scene/gltf_loader.h"
-#include "stages/direct_ties.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/shadow_map.h"
-#include "stages/shadow_ties.h"
 
 namespace vct::cmp {
 namespace {

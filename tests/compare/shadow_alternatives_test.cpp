@@ -1,15 +1,14 @@
-// Shadow maps judged on the reference's light-space raster alternatives (stages/shadow_map_ties.h,
+// Shadow maps judged on the reference's light-space raster alternatives (freedoms/shadow_map_ties.h,
 // compare/tie_range.h): a texel showing a depth a correct GL may store there is admitted at any
 // count; any other beyond-bound texel fails, with no edge or interior share. Without the range
 // (an external reference) the neighbourhood rule and the edge share stay.
 #include <gtest/gtest.h>
-
 #include <string>
 
 #include "compare/stage_compare.h"
+#include "freedoms/shadow_map_ties.h"
 #include "scene/scene.h"
 #include "stages/depth_raster.h"
-#include "stages/shadow_map_ties.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {

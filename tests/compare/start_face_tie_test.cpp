@@ -17,7 +17,7 @@
 #include "scene/gltf_loader.h"
 #include "stages/composite.h"
 #include "stages/indirect_pass.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {

@@ -69,7 +69,7 @@ TEST(TextureSlackBound, ChannelsAreFoundByName) {
   EXPECT_EQ(texture_slack_channel("image.emission", named), 1);  // the G-buffer emission, added
   EXPECT_EQ(texture_slack_channel("gbuffer.position", named), -1);
   EXPECT_EQ(texture_slack_channel("image.final", named), -1);
-  const Image unnamed(1, 1, 4);  // stages/texture_slack.h's order
+  const Image unnamed(1, 1, 4);  // freedoms/texture_slack.h's order
   EXPECT_EQ(texture_slack_channel("gbuffer.normal", unnamed), 0);
   EXPECT_EQ(texture_slack_channel("gbuffer.emission", unnamed), 3);
   EXPECT_EQ(texture_slack_channel("image.emission", unnamed), 3);

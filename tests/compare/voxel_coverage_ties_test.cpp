@@ -1,5 +1,5 @@
 // voxel.radiance where GL's voxel raster averaged another set of fragments than the reference
-// (stages/coverage_ties.h, docs/compare.md "Voxel shading slack"): the built-in scene at grid 32
+// (freedoms/coverage_ties.h, docs/compare.md "Voxel shading slack"): the built-in scene at grid 32
 // with llvmpipe's 4 samples has voxel (14, 18, 11) made of a dark fragment of the box's side, at
 // depth 14.99984 (within its snap margin of voxel 15), and a lit one of the box's top. llvmpipe
 // wrote the dark one to voxel 15 and stored the top's light alone there: twice the reference's
@@ -9,10 +9,11 @@
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "find_verdict.h"
+#include "freedoms/coverage_ties.h"
+#include "freedoms/reference_frame.h"
+#include "freedoms/voxel_freedoms.h"
 #include "scene/gltf_loader.h"
-#include "stages/coverage_ties.h"
 #include "stages/inject.h"
-#include "stages/pipeline.h"
 #include "stages/raster.h"
 #include "stages/voxelize.h"
 
@@ -71,7 +72,10 @@ TEST(VoxelCoverageTies, TheLitFragmentAloneIsAnAdmissibleVoxel) {
 TEST(VoxelCoverageTies, WithoutTheTiesTheSameVoxelFails) {
   Case c;
   const Voxelization plain = voxelize_gpu_rule(c.scene, c.s.vct.grid, 4);  // no add_coverage_ties
-  c.ref.voxels.shading_slack = inject_and_reduce(c.scene, plain, c.ref.shadow_maps, c.s.vct).shading_slack;
+  std::vector<vec3> light;
+  VoxelGrid without = inject_and_reduce(c.scene, plain, c.ref.shadow_maps, c.s.vct, nullptr, &light);
+  add_voxel_freedoms(c.scene, plain, light, c.ref.shadow_maps, c.s.vct, nullptr, without);
+  c.ref.voxels.shading_slack = without.shading_slack;
   const StageVerdict v = c.judged(c.lit, 1.0f);
   EXPECT_EQ(v.out_of_bound, 1u) << v.note;
 }

@@ -11,7 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "stages/inject.h"
 #include "stages/particles.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/voxelize.h"
 
 namespace vct::cmp {

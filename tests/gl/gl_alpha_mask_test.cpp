@@ -10,7 +10,7 @@
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 namespace {

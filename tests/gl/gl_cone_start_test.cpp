@@ -7,7 +7,7 @@
 
 #include "gl_test_util.h"
 #include "stages/indirect_pass.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 namespace {

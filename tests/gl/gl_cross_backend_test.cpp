@@ -6,7 +6,7 @@
 #include "gl_test_util.h"
 #include "stages/mips.h"
 #include "stages/reduction.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/indirect_pass.h"
 
 namespace vct::gl::test {

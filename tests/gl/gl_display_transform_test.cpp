@@ -7,7 +7,7 @@
 
 #include "compare/stage_compare.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 namespace {

@@ -13,7 +13,7 @@
 #include "gl/gl_faults.h"
 #include "gl/gl_program.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 namespace {

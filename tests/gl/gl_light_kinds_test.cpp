@@ -11,7 +11,7 @@
 #include "compare/stage_set.h"
 #include "gl_test_util.h"
 #include "scene/exposure.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 namespace {

@@ -1,7 +1,7 @@
 // Temporal multibounce on GL against the CPU reference.
 #include "compare/isolated_stages.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 

@@ -2,7 +2,7 @@
 // eye-facing discs additively (depth-tested, no depth writes) where the CPU intersects pixel-centre
 // rays with the same discs, and both add the particles' light into the voxels.
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/shadow_map.h"
 
 namespace vct::gl::test {

@@ -1,6 +1,6 @@
 // Cone-traced soft shadows on GL against the CPU reference.
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct::gl::test {
 

@@ -11,7 +11,7 @@
 #include "gl_test_util.h"
 #include "scene/texture_sample.h"
 #include "stages/gbuffer.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/uv_derivatives.h"
 #include "stages/voxel_lod.h"
 

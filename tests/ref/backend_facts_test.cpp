@@ -6,7 +6,7 @@
 
 #include "scene/gltf_loader.h"
 #include "stages/backend_facts.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "stages/raster.h"
 
 namespace vct {

@@ -1,17 +1,16 @@
-// Coverage ties of the voxel raster (stages/coverage_ties.h): the admissible means against brute
+// Coverage ties of the voxel raster (freedoms/coverage_ties.h): the admissible means against brute
 // force, and the fragments a snapped raster may drop or add against voxelizations of triangles
 // whose window vertices really moved by one sub-pixel step.
-#include <gtest/gtest.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
+#include <gtest/gtest.h>
 #include <random>
 #include <set>
 #include <tuple>
 
+#include "freedoms/coverage_ties.h"
 #include "stage_test_scene.h"
-#include "stages/coverage_ties.h"
 #include "stages/raster.h"
 #include "stages/voxelize.h"
 

@@ -1,20 +1,20 @@
-// The voxel shading slack (stages/fragment_slack.h) against hand-computed values: the sub-texel
+// The voxel shading slack (freedoms/fragment_slack.h) against hand-computed values: the sub-texel
 // weight shift of a bilinear lookup, and the position term of a floor under a point light, whose
 // light falls off as h / d^3 (glTF point light: I cos(theta) / d^2, cos(theta) = h / d).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
+#include "freedoms/fragment_exactness.h"
+#include "freedoms/fragment_slack.h"
+#include "freedoms/lookup_precision.h"
+#include "freedoms/texture_slack.h"
 #include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
 #include "stage_test_scene.h"
-#include "stages/fragment_exactness.h"
-#include "stages/fragment_slack.h"
 #include "stages/inject.h"
 #include "stages/shadow_map.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 namespace {

@@ -1,14 +1,14 @@
-// Raster alternatives (stages/gbuffer_ties.h): the values a correct GL may show at a G-buffer
+// Raster alternatives (freedoms/gbuffer_ties.h): the values a correct GL may show at a G-buffer
 // pixel when an edge or a triangle's facing ties under 2^-8 pixel vertex snapping.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
 #include "alpha_card_scene.h"
+#include "freedoms/gbuffer_freedoms.h"
+#include "freedoms/gbuffer_ties.h"
 #include "stage_test_scene.h"
 #include "stages/gbuffer.h"
-#include "stages/gbuffer_ties.h"
 #include "stages/raster.h"
 
 namespace vct {
@@ -93,7 +93,7 @@ GBuffer render(Scene& s) {
   VctSettings st;
   st.width = kW;
   st.height = kH;
-  return render_gbuffer(s, st);
+  return render_gbuffer_with_freedoms(s, st);
 }
 
 TEST(RasterTies, SilhouetteThroughAPixelCentreAdmitsTheSurfaceBehind) {
@@ -172,7 +172,7 @@ TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
   Scene s = test::half_masked_card(true);
   VctSettings st;
   st.width = st.height = 33;
-  const GBuffer g = render_gbuffer(s, st);
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
   const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
   const float card = g.albedo.at(24, 16, 0), backdrop = g.albedo.at(2, 16, 0);
   ASSERT_NEAR(backdrop, 0.8f, 1e-6f);

@@ -1,14 +1,14 @@
 // Hard spots (innerConeAngle == outerConeAngle; docs/scenes.md, "Hard spots"): the shared step in
 // both light models, the reference's image.direct, and the judge's tie at the edge (docs/compare.md,
 // "Hard spots": within 2^-20 of cos outer a correct GL may be lit or dark).
+#include <cmath>
 #include <gtest/gtest.h>
 
-#include <cmath>
-
+#include "freedoms/direct_ties.h"
+#include "freedoms/gbuffer_freedoms.h"
 #include "shared/vct_shared.h"
 #include "stage_test_scene.h"
 #include "stages/direct.h"
-#include "stages/direct_ties.h"
 #include "stages/gbuffer.h"
 #include "stages/shadow_map.h"
 
@@ -53,7 +53,7 @@ TEST(HardSpot, DirectIsTheClosedFormInsideAndZeroOutside) {
   st.width = st.height = 48;
   st.shadow_map_size = 256;
   const auto maps = render_shadow_maps(s, st);
-  GBuffer g = render_gbuffer(s, st);
+  GBuffer g = render_gbuffer_with_freedoms(s, st);
   const Image direct = shade_direct(s, g, maps, st);
   int lit = 0, dark = 0;
   for (int y = 0; y < st.height; ++y)
@@ -79,7 +79,7 @@ TEST(HardSpot, TheEdgePixelMayBeLitOrDarkAndOnlyIt) {
   st.width = st.height = 8;
   st.shadow_map_size = 256;
   const auto maps = render_shadow_maps(s, st);
-  GBuffer g = render_gbuffer(s, st);
+  GBuffer g = render_gbuffer_with_freedoms(s, st);
   const float r = std::tan(kOuter);
   const vec3 on_edge(r, 0.0f, 0.0f), inside(0.3f * r, 0.0f, 0.0f), outside(1.5f * r, 0.0f, 0.0f);
   g.position.set_rgb(3, 3, on_edge);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "stages/composite.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "test_box_scene.h"
 
 namespace vct {

@@ -5,7 +5,7 @@
 
 #include "core/parallel.h"
 #include "shared/vct_shared.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 #include "test_box_scene.h"
 
 namespace vct {

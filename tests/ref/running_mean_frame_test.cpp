@@ -1,4 +1,4 @@
-// The reference's running-mean interval on whole frames (stages/running_mean.h, pipeline.cpp):
+// The reference's running-mean interval on whole frames (freedoms/reduction_interval.h, freedoms/reference_freedoms.cpp):
 // with the particles' light and with bounces > 1 it still holds the reference's own voxels (the
 // exact mean of each voxel's last-frame fragments plus the particles' light), which before
 // issue 21's item 4 fell outside it (particle voxels) or had no interval at all (bounces > 1).
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
+#include "freedoms/reference_frame.h"
 
 namespace vct {
 namespace {

@@ -1,11 +1,11 @@
-// The racy running mean's interval (stages/running_mean.h): every order and every non-empty
+// The racy running mean's interval (freedoms/reduction_interval.h): every order and every non-empty
 // subset of a voxel's fragments, run through the binary16 running mean, lands inside it, and
 // its ends are within the stated ulps of values those runs reach.
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <random>
 
+#include "freedoms/reduction_interval.h"
 #include "stages/reduction.h"
 #include "stages/running_mean.h"
 

@@ -1,14 +1,13 @@
-// Raster alternatives in light space (stages/shadow_map_ties.h): the depths a correct GL may store
+// Raster alternatives in light space (freedoms/shadow_map_ties.h): the depths a correct GL may store
 // at a shadow-map texel under 2^-8 texel vertex snapping and alpha-test ties, hand-computed on
 // orthographic maps where one texel is one world unit and every window depth is exact.
+#include <cmath>
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "alpha_card_scene.h"
+#include "freedoms/shadow_map_ties.h"
 #include "stage_test_scene.h"
 #include "stages/shadow_map.h"
-#include "stages/shadow_map_ties.h"
 
 namespace vct {
 namespace {

@@ -1,14 +1,13 @@
-// The PCF visibility over a fragment's snap parallelogram (stages/snap_visibility.h): a hand-made
+// The PCF visibility over a fragment's snap parallelogram (freedoms/snap_visibility.h): a hand-made
 // map where the only lit part lies inside the parallelogram, away from every corner (what the
 // corner-only slack missed on atrium, docs/compare.md "Voxel shading slack"), and every point of
 // many parallelograms on a real scene's spot and point light maps inside the range.
 #include <gtest/gtest.h>
-
 #include <random>
 
+#include "freedoms/snap_visibility.h"
 #include "stage_test_scene.h"
 #include "stages/shadow_map.h"
-#include "stages/snap_visibility.h"
 
 namespace vct {
 namespace {

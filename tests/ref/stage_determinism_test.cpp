@@ -1,10 +1,12 @@
 // Every part-1 stage gives the same bytes for 1, 2 and 8 threads; and the dump writer's names.
-#include <gtest/gtest.h>
-
 #include <cstring>
 #include <filesystem>
+#include <gtest/gtest.h>
 
 #include "core/parallel.h"
+#include "freedoms/gbuffer_freedoms.h"
+#include "freedoms/shadow_map_ties.h"
+#include "freedoms/voxel_freedoms.h"
 #include "io/run_dir.h"
 #include "stage_test_scene.h"
 #include "stages/direct.h"
@@ -13,7 +15,6 @@
 #include "stages/inject.h"
 #include "stages/mips.h"
 #include "stages/shadow_map.h"
-#include "stages/shadow_map_ties.h"
 #include "stages/voxelize.h"
 
 namespace vct {
@@ -38,7 +39,7 @@ std::vector<uint8_t> run_all(const Scene& s, int threads) {
     add(m.depth.data);
     add(m.tie_range.data);
   }
-  const GBuffer g = render_gbuffer(s, st);
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
   for (const Image* i : {&g.position, &g.normal, &g.albedo, &g.material, &g.depth, &g.coverage, &g.texture_slack, &g.tie_range})
     add(i->data);
   add(shade_direct(s, g, maps, st).data);
@@ -48,10 +49,13 @@ std::vector<uint8_t> run_all(const Scene& s, int threads) {
   add(hole_map(c, gp).data);
   for (Reduction r : {Reduction::ExactMean, Reduction::FixedPoint, Reduction::CasRgba8}) {
     st.reduction = r;
-    const VoxelGrid vg = inject_and_reduce(s, r == Reduction::FixedPoint ? gp : c, maps, st);
+    Voxelization vox = r == Reduction::FixedPoint ? gp : c;
+    const VoxelGrid vg = judged_voxels(s, vox, maps, st);
     add(vg.radiance.data);
     add(vg.cas_lo.data);
     add(vg.cas_hi.data);
+    add(vg.shading_slack.data);
+    add(vg.exact.data);
     const VoxelMips m = build_mips(vg.radiance, true);
     for (const Volume& v : m.iso) add(v.data);
     for (const auto& d : m.aniso)

@@ -2,15 +2,15 @@
 // hand-computed values: GL 4.5 §8.14's level selection for every min filter, trilinear lookups on
 // a built chain, rho's admissible approximations, and lambda of planes at known distances with
 // known UV scales, for the camera and for the voxel grid.
+#include <cmath>
 #include <gtest/gtest.h>
 
-#include <cmath>
-
+#include "freedoms/lod_candidates.h"
+#include "freedoms/texture_slack.h"
 #include "scene/texture_lod.h"
 #include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
 #include "stage_test_scene.h"
-#include "stages/texture_slack.h"
 #include "stages/uv_derivatives.h"
 #include "stages/voxel_lod.h"
 

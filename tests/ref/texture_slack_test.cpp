@@ -1,16 +1,16 @@
-// The G-buffer's texture slack (stages/texture_slack.h) against hand-computed values: window
+// The G-buffer's texture slack (freedoms/texture_slack.h) against hand-computed values: window
 // barycentrics of a plane facing the camera, and the slack of a minified bilinear checkerboard.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <gtest/gtest.h>
 
+#include "freedoms/gbuffer_freedoms.h"
+#include "freedoms/texture_slack.h"
 #include "io/srgb.h"
 #include "scene/surface.h"
 #include "stage_test_scene.h"
 #include "stages/gbuffer.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 namespace {
@@ -83,7 +83,7 @@ void check_checker(bool albedo) {
   ASSERT_NEAR(v.rho, 4.37042, 1e-5);
   VctSettings st;
   st.width = st.height = 16;
-  const GBuffer g = render_gbuffer(v.scene, st);
+  const GBuffer g = render_gbuffer_with_freedoms(v.scene, st);
   const int ch = albedo ? kSlackAlbedo : kSlackMaterial;
   const double expected = v.rho / 256.0;  // 0.0170720
   int away_from_kinks = 0;
@@ -134,7 +134,7 @@ TEST(TextureSlack, SmoothUntexturedNormalsMoveWithTheSamplePoint) {
     v.scene.normals[i] = glm::normalize(vec3(v.scene.positions[i].x < 0.0f ? -k : k, 0.0f, 1.0f));
   VctSettings st;
   st.width = st.height = 16;
-  const GBuffer g = render_gbuffer(v.scene, st);
+  const GBuffer g = render_gbuffer_with_freedoms(v.scene, st);
   const auto normal_at = [&](double u) {
     const double t = (2.0 * u - 1.0) * double(k);
     return glm::dvec3(t, 0.0, 1.0) / std::sqrt(1.0 + t * t);
@@ -157,7 +157,7 @@ TEST(TextureSlack, FlatUntexturedMaterialsHaveNone) {
   v.scene.materials[0].base_color_texture.texture = -1;
   VctSettings st;
   st.width = st.height = 8;
-  const GBuffer g = render_gbuffer(v.scene, st);
+  const GBuffer g = render_gbuffer_with_freedoms(v.scene, st);
   for (float s : g.texture_slack.data) EXPECT_EQ(s, 0.0f);
 }
 

@@ -1,16 +1,19 @@
-#include "stages/fragment_slack.h"
+#include "freedoms/fragment_slack.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/parallel.h"
+#include "freedoms/direct_slack.h"
+#include "freedoms/lod_candidates.h"
+#include "freedoms/lookup_precision.h"
+#include "freedoms/snap_visibility.h"
+#include "freedoms/texture_slack.h"
 #include "stages/direct.h"
-#include "stages/direct_slack.h"
 #include "stages/light_sample.h"
+#include "stages/raster.h"
 #include "stages/shadow_map.h"
-#include "stages/snap_visibility.h"
-#include "stages/texture_slack.h"
 #include "stages/voxel_lod.h"
 
 namespace vct {
@@ -99,7 +102,7 @@ SnapParallelogram snap_parallelogram(const SnapWindow& w, const VoxelFragment& f
 
 /// The PCF taps a correct GL may read anywhere the snap may put the fragment: per light, its
 /// unshadowed light times how far the visibility moves over the whole parallelogram (and the
-/// lookup's own float ties), stages/snap_visibility.h. The corners alone miss a texel edge or
+/// lookup's own float ties), freedoms/snap_visibility.h. The corners alone miss a texel edge or
 /// depth tie crossed inside it: on atrium a point lamp's cube face is nearly edge-on to a wall,
 /// and GL's fragment, 0.05 texel from the reference's (well inside the snap), read one row of the
 /// 3x3 kernel lit that every corner reads shadowed (docs/compare.md, "Voxel shading slack").

@@ -1,14 +1,14 @@
-#include "stages/direct_ties.h"
+#include "freedoms/direct_ties.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/parallel.h"
+#include "freedoms/gbuffer_ties.h"
+#include "freedoms/shadow_ties.h"
 #include "stages/direct.h"
 #include "stages/gbuffer.h"
-#include "stages/gbuffer_ties.h"
 #include "stages/light_sample.h"
-#include "stages/shadow_ties.h"
 
 namespace vct {
 

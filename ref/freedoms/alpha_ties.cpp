@@ -1,10 +1,11 @@
-#include "stages/alpha_ties.h"
+#include "freedoms/alpha_ties.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "scene/alpha_mask.h"
 #include "shared/vct_shared.h"
+#include "stages/raster.h"
 
 namespace vct {
 

@@ -1,11 +1,11 @@
-#include "stages/fragment_exactness.h"
+#include "freedoms/fragment_exactness.h"
 
 #include <cmath>
 
 #include "core/parallel.h"
+#include "freedoms/texture_slack.h"
 #include "scene/surface.h"
 #include "stages/light_sample.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 

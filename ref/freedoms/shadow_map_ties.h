@@ -1,7 +1,7 @@
 // Raster alternatives in light space: per shadow-map texel, the range [lo, hi] of every depth a
 // correct GL may store there (docs/compare.md, "Raster alternatives", light space). A shadow map
 // is an ordinary depth-only render (GL 4.5 section 14.6), so the camera's freedoms apply texel for
-// texel (stages/raster_alternatives.h), each snapped vertex coordinate one 2^-8 texel step off:
+// texel (freedoms/raster_alternatives.h), each snapped vertex coordinate one 2^-8 texel step off:
 //  - coverage follows the sample shifted by (+-2^-8, +-2^-8) texel: where another triangle is in
 //    front there (a silhouette through the texel), or none, its depth at the centre (or the clear
 //    value 1) is what GL stores;
@@ -29,7 +29,7 @@ namespace vct {
 /// the scene's alpha masks discard), stored as `format`: an image with channels
 /// tie_range_channel_name("depth", 0, lo/hi) ("depth.0.lo", "depth.0.hi"), row 0 = top, as the map.
 /// One fused sweep over the triangles finds the four shifted samples' depths and both margin
-/// ends; alpha masks add three visibility passes (stages/raster_alternatives.h).
+/// ends; alpha masks add three visibility passes (freedoms/raster_alternatives.h).
 Image shadow_depth_range(const Scene& scene, const mat4& view_proj, int size, ShadowDepthFormat format);
 
 /// Fills every map's tie_range (spot and directional lights) or cube_tie_range (the six faces of a

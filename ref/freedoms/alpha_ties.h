@@ -8,8 +8,8 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "freedoms/texture_slack.h"
 #include "scene/scene.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 

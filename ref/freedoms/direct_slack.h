@@ -1,6 +1,6 @@
 // How far the direct light may legitimately move at a pixel: the reference's own direct_radiance
 // (stages/direct.h) shaded from every material a correct GL G-buffer may hold there (the texture
-// slack's sample shifts x admissible LODs, stages/texture_slack.h), at the shifted positions and
+// slack's sample shifts x admissible LODs, freedoms/texture_slack.h), at the shifted positions and
 // the same shadow maps. image.direct's bound adds it (docs/compare.md, "Texture LOD"): a
 // normal-mapped surface's admissible normals move n.l and the specular lobe by more than the
 // shading bound alone allows; on any surface the snapped sample point moves the interpolated

@@ -1,13 +1,13 @@
-#include "stages/shadow_map_ties.h"
+#include "freedoms/shadow_map_ties.h"
 
 #include <algorithm>
 #include <array>
 
 #include "core/parallel.h"
+#include "freedoms/gbuffer_ties.h"
+#include "freedoms/raster_alternatives.h"
 #include "scene/alpha_mask.h"
-#include "stages/gbuffer_ties.h"
 #include "stages/raster.h"
-#include "stages/raster_alternatives.h"
 #include "stages/shadow_map.h"
 
 namespace vct {

@@ -1,5 +1,5 @@
 // The PCF visibility a correct GL may compute for a voxel fragment anywhere the voxel raster's
-// vertex snap may move it (stages/fragment_slack.h): a small parallelogram on its triangle. Every
+// vertex snap may move it (freedoms/fragment_slack.h): a small parallelogram on its triangle. Every
 // point of it is looked up, not only its corners: a texel edge or a depth tie crossed inside the
 // parallelogram flips a tap that no corner shows. A tap's texel and its compare are decided
 // together — the tap reads texel (i, j) only on the part of the parallelogram whose coordinate
@@ -12,13 +12,13 @@
 // depth past stored + bias, a direction on one cube face — is the sign of a linear function of
 // (a, b) once multiplied by w > 0. Each region is the square clipped by half-planes; a depth
 // (a ratio of two affine functions) takes its extremes over a convex region at its vertices. The
-// lookup's own float arithmetic widens each test by stages/shadow_ties.h's margins.
+// lookup's own float arithmetic widens each test by freedoms/shadow_ties.h's margins.
 #pragma once
 
 #include "core/math.h"
 #include "core/settings.h"
+#include "freedoms/shadow_ties.h"
 #include "scene/scene.h"
-#include "stages/shadow_ties.h"
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -32,7 +32,7 @@ struct SnapParallelogram {
 /// [lo, hi] of one light's PCF visibility over every point of `q`: lo counts a tap lit only where
 /// it is lit everywhere, hi where it is lit somewhere. Both compares: nearest (texelFetch, the
 /// pipeline's own) and an engine's linear (shadow_compare = linear) with exact weights; the
-/// weights' 8-bit freedom is a term of its own (stages/fragment_slack.cpp, linear_compare_slack).
+/// weights' 8-bit freedom is a term of its own (freedoms/fragment_slack.cpp, linear_compare_slack).
 VisibilityRange snap_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
                                       const VctSettings& settings);
 

@@ -6,9 +6,9 @@
 //     axis of the dominant-axis projection — more where the centre lies outside the triangle and
 //     the attributes are extrapolated (voxel_snap_reach). That moves the fragment along its
 //     triangle: the falloff and textures shift, and a PCF tap flips anywhere in the parallelogram
-//     it may reach (stages/snap_visibility.h), not only at its corners;
+//     it may reach (freedoms/snap_visibility.h), not only at its corners;
 //   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
-//   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h);
+//   - sub-texel weights: filter weights with 8 fractional bits (freedoms/texture_slack.h);
 //   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off.
 #pragma once
 
@@ -16,8 +16,8 @@
 
 #include "core/settings.h"
 #include "scene/scene.h"
-#include "stages/raster.h"
 #include "stages/inject.h"
+#include "stages/raster.h"
 #include "stages/stage_types.h"
 #include "stages/voxelize.h"
 
@@ -33,7 +33,7 @@ namespace vct {
 /// +infinity for a sliver (kVertexSnapStep G >= 1/2) or a triangle seen edge-on in its window.
 double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f);
 
-/// Where GL may write fragment f along its dominant axis (stages/coverage_ties.h): the axis, the
+/// Where GL may write fragment f along its dominant axis (freedoms/coverage_ties.h): the axis, the
 /// reference's voxel-space depth there (relative to vertex 0, as voxelize.frag interpolates it)
 /// and how far GL's may lie from it. The point GL interpolates may be voxel_snap_reach away on
 /// each window axis, which moves the depth by the plane's in-window gradient times that reach;

@@ -1,12 +1,13 @@
-#include "stages/gbuffer_ties.h"
+#include "freedoms/gbuffer_ties.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/parallel.h"
+#include "freedoms/texture_slack.h"
 #include "scene/alpha_mask.h"
 #include "stages/gbuffer.h"
-#include "stages/texture_slack.h"
+#include "stages/raster.h"
 
 namespace vct {
 
@@ -92,7 +93,7 @@ void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer&
   });
 }
 
-// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface, masks ignored, may pass or
+// Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface, masks ignored, may pass or
 // fail its alpha test in a correct GL, the other outcome is admissible (raster_alternatives.h).
 void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
   const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);

@@ -1,7 +1,7 @@
 // Which voxels GL must reproduce bit for bit: those whose fragments' light no freedom of the GL
 // specification reaches (docs/compare.md, "Exact voxels"). With the fixed-point reduction both
 // backends then sum the same integers and round them the same way, so the reduction is judged
-// exactly there, apart from the shading freedoms (stages/fragment_slack.h) everywhere else.
+// exactly there, apart from the shading freedoms (freedoms/fragment_slack.h) everywhere else.
 #pragma once
 
 #include "core/settings.h"

@@ -19,9 +19,9 @@
 #include <string>
 
 #include "core/math.h"
+#include "freedoms/raster_alternatives.h"
 #include "scene/scene.h"
 #include "stages/raster.h"
-#include "stages/raster_alternatives.h"
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -46,7 +46,7 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 /// there, by the surface whose depth at the centre ties with the front one's (the other
 /// fragment with the smallest depth minus margin, when that is within the front's depth plus
 /// its margin), by the negated normal where a front surface's facing may flip, and, where an
-/// alpha test may go either way (stages/alpha_ties.h), by its other outcome.
+/// alpha test may go either way (freedoms/alpha_ties.h), by its other outcome.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
 
 }  // namespace vct

@@ -1,4 +1,4 @@
-#include "stages/snap_visibility.h"
+#include "freedoms/snap_visibility.h"
 
 #include <algorithm>
 #include <cmath>

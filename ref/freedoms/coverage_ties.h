@@ -2,7 +2,7 @@
 // GL leaves vertex snapping to the implementation (GL 4.5 §14.6.1; GL_SUBPIXEL_BITS 8), so each
 // snapped window coordinate of the dominant-axis projection may be one 2^-8 pixel step off the
 // reference's. That moves a triangle's edge at a sample by at most what moving the sample by one
-// of the four (+-2^-8, +-2^-8) corner shifts moves it (stages/gbuffer_ties.h derives this for the
+// of the four (+-2^-8, +-2^-8) corner shifts moves it (freedoms/gbuffer_ties.h derives this for the
 // camera raster; the voxel raster is the same rasterizer with one pixel per voxel). A fragment is a
 // covered pixel (any MSAA sample), so a triangle whose coverage of a voxel's pixel differs between
 // the centre samples and any shifted ones may or may not add its fragment there: the set of
@@ -36,7 +36,7 @@ namespace vct {
 /// may decide them either way (the gs mode's whole bound; a hardware mode over-estimates more).
 void add_coverage_ties(const Scene& scene, Voxelization& vox);
 
-/// Widens `slack` (per voxel, stages/fragment_slack.h's voxel_shading_slack) by the fragment sets
+/// Widens `slack` (per voxel, freedoms/fragment_slack.h's voxel_shading_slack) by the fragment sets
 /// the coverage ties admit: where a voxel's set may change, its slack becomes the largest
 /// distance, over RGB, between the reference's mean and the mean of any admissible set, each
 /// fragment taken at its light +- its own shading slack (the largest mean adds the certain

@@ -1,12 +1,13 @@
-#include "stages/coverage_ties.h"
+#include "freedoms/coverage_ties.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 
-#include "stages/fragment_slack.h"
-#include "stages/raster_alternatives.h"  // kVertexSnapStep
+#include "freedoms/fragment_slack.h"
+#include "freedoms/raster_alternatives.h"  // kVertexSnapStep
+#include "stages/raster.h"
 
 namespace vct {
 

@@ -1,5 +1,5 @@
 // What one sub-pixel step of vertex snapping leaves free in a rasterization, shared by the camera's
-// raster alternatives (stages/gbuffer_ties.h) and the shadow maps' (stages/shadow_map_ties.h). GL
+// raster alternatives (freedoms/gbuffer_ties.h) and the shadow maps' (freedoms/shadow_map_ties.h). GL
 // leaves how window coordinates are computed and rounded to the sub-pixel grid to the
 // implementation (GL 4.5 section 14.6.1; GL_SUBPIXEL_BITS only says how many bits are kept), so
 // every snapped coordinate may be one step (2^-8 pixel) off the reference's: edges move like the
@@ -41,7 +41,7 @@ double depth_tie_margin(const RasterTriangle& t);
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
                                 bool depth_ties);
 
-/// Alpha-mask ties (stages/alpha_ties.h): where the front-most surface a correct GL may keep (masks
+/// Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface a correct GL may keep (masks
 /// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)
 /// may pass or fail its alpha test (`may_flip` 1), `surface` holds the other outcome: that surface
 /// where the reference (`vb`, rendered with the masks) discarded it, what lies behind it

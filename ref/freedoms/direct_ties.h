@@ -1,7 +1,7 @@
 // The shading stages' ties on the test's own inputs (docs/compare.md, "Shading stages on the
 // test's own inputs"): image.direct re-shaded by the reference from the test's G-buffer and shadow
 // maps leaves only the shading arithmetic (the stage's bound) and the PCF taps that the lookup's
-// float arithmetic may flip (stages/shadow_ties.h). Direct light is a sum over lights of a
+// float arithmetic may flip (freedoms/shadow_ties.h). Direct light is a sum over lights of a
 // non-negative term times that light's visibility, so it lies in [sum c_i lo_i, sum c_i hi_i].
 // image.emission is the G-buffer's emission as the final pass adds it: on the test's own G-buffer
 // it has no alternative (its range is its value).
@@ -18,7 +18,7 @@ namespace vct {
 
 /// Per pixel, the lower and upper end of image.direct and image.emission a correct GL may give
 /// from G-buffer `g` and shadow maps `maps` (with their matrices), as channels
-/// tie_range_channel_name("image.direct" | "image.emission", c, lo/hi) (stages/gbuffer_ties.h),
+/// tie_range_channel_name("image.direct" | "image.emission", c, lo/hi) (freedoms/gbuffer_ties.h),
 /// read by compare/tie_range.h. `direct` and `emission`: the reference's own values there,
 /// which the ranges include.
 Image shading_tie_range(const Scene& scene, const GBuffer& g, const std::vector<ShadowMap>& maps,

@@ -1,11 +1,13 @@
-#include "stages/direct_slack.h"
+#include "freedoms/direct_slack.h"
 
 #include <algorithm>
 
 #include "core/parallel.h"
+#include "freedoms/lod_candidates.h"
+#include "freedoms/lookup_precision.h"
+#include "freedoms/texture_slack.h"
 #include "stages/direct.h"
 #include "stages/raster.h"
-#include "stages/texture_slack.h"
 #include "stages/uv_derivatives.h"
 
 namespace vct {
@@ -54,7 +56,7 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
                   direct_radiance(scene, maps, settings, points[p].position, nrm, v, m) - ref);
               slack = std::max(slack, std::max(d.x, std::max(d.y, d.z)));
             }
-      // Plus the normal map's 8-bit lookup precision at the centre (stages/texture_slack.h
+      // Plus the normal map's 8-bit lookup precision at the centre (freedoms/lookup_precision.h
       // kUnorm8Step), a freedom independent of the above: the sum bounds both (as the voxels').
       float precision = 0.0f;
       if (n > 0 && scene.materials[scene.triangle_material[tri]].normal_texture.present())

@@ -1,12 +1,12 @@
-#include "stages/raster_alternatives.h"
+#include "freedoms/raster_alternatives.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/parallel.h"
+#include "freedoms/alpha_ties.h"
+#include "freedoms/texture_slack.h"
 #include "scene/alpha_mask.h"
-#include "stages/alpha_ties.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 

@@ -1,12 +1,12 @@
-#include "stages/shadow_ties.h"
+#include "freedoms/shadow_ties.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "stages/shadow_map.h"
+#include "freedoms/direct_slack.h"
 #include "stages/cube_map.h"
-#include "stages/direct_slack.h"
+#include "stages/shadow_map.h"
 
 namespace vct {
 
