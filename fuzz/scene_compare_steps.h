@@ -11,9 +11,9 @@
 #include "compare/stage_set.h"
 #include "compare/stage_set_frame.h"
 #include "core/error.h"
+#include "freedoms/reference_frame.h"
 #include "fuzz_inputs.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
 
 namespace vct::fuzz {
 
