@@ -26,7 +26,8 @@ vec4 round_to_half(vec4 v) {
   return vec4(round_to_half(v.x), round_to_half(v.y), round_to_half(v.z), round_to_half(v.w));
 }
 
-// RGBA8 stores: GL's float->unorm8 conversion may round or truncate (llvmpipe truncates). The
+// RGBA8 stores: GL's float->unorm8 conversion may round or truncate (llvmpipe rounds to nearest:
+// tests/gl/gl_store_conversion_test.cpp). The
 // value is rounded here (to nearest even, as the CPU's quantize_unorm8) and a quarter step is
 // added, so either conversion lands on the same integer.
 vec4 unorm8_store_value(vec4 v) {
