@@ -53,6 +53,9 @@ constexpr std::array<AdmissionRow, kRuleCount> kRows = {{
      "voxel.occupancy / voxel.radiance taint of the level's 2^L base cube",
      "any value above a base voxel that ties (the caps of the voxel stages bound how many)", "",
      "Tolerance models and where each bound comes from", {120, 120, 255}},
+    {Rule::CoverageTie, "coverage-tie", F::Occupancy, K::Range, "voxel.occupancy_tie",
+     "a voxel each fragment of which may drop, or where a fragment GL may make lands, under 2^-8 px vertex "
+     "snapping (coverage ties)", "", "Voxel shading slack", {0, 140, 140}},
     {Rule::FaceNeighbourTie, "face-neighbour-tie", F::Occupancy, K::Neighbour, "",
      "a missing voxel with an extra one among its 26 neighbours (a sample on a voxel face, edge or corner)",
      kOccupancyTieCap.denominator, "Tolerance models and where each bound comes from", {0, 200, 255}},

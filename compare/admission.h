@@ -39,6 +39,7 @@ enum class Rule : uint8_t {
   UpstreamShare,
   VolumeWithinBound,
   AboveUpstreamTie,
+  CoverageTie,
   FaceNeighbourTie,
   EdgeFragmentsTie,
   FillRay,

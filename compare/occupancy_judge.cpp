@@ -32,6 +32,7 @@ struct OccupancyDiff {
   const Volume& ref;
   std::vector<uint8_t> missing, extra;
   const Volume *ref_fragments = nullptr, *test_fragments = nullptr;
+  const Volume* coverage_ties = nullptr;  // the reference's voxel.occupancy_tie, when it has one
   std::vector<uint8_t> surface_differs;  // fill_ties.h; empty without both fragment counts
   bool conservative_ref = false;
   size_t occupied = 0;
@@ -52,6 +53,8 @@ OccupancyDiff diff_of(const StageSet& rs, const StageSet& ts) {
     return it != s.volumes.end() && same_size(it->second, d.ref) ? &it->second : nullptr;
   };
   d.ref_fragments = frag_of(rs);
+  const auto ties = rs.volumes.find(st::kVoxelOccupancyTie);
+  if (ties != rs.volumes.end() && same_size(ties->second, d.ref)) d.coverage_ties = &ties->second;
   d.test_fragments = frag_of(ts);
   // A sample-rule fragment lies on a triangle inside its voxel, so where the counts agree the two
   // sides hold the same triangles (hence the same facing), also against a conservative reference.
@@ -64,15 +67,18 @@ OccupancyDiff diff_of(const StageSet& rs, const StageSet& ts) {
 }
 
 // The first rule admitting a voxel occupied on one side only. Filled voxels (opaque without
-// fragments: solid interior, thickening) have their own rule (fill_ties.h); others tie when the
-// side that has them held at most 2 fragments (samples on a triangle edge, decided by the fill
-// rule) or a voxel differing the other way is among their 26 neighbours (a sample on a face).
+// fragments: solid interior, thickening) have their own rule (fill_ties.h); others tie where the
+// reference's coverage ties say the voxel's fragments may all drop or one may be added
+// (freedoms/coverage_ties.h), when the side that has them held at most 2 fragments (samples on a
+// triangle edge, decided by the fill rule) or a voxel differing the other way is among their 26
+// neighbours (a sample on a face); the last two are counted (kOccupancyTieCap).
 Rule occupancy_rule(const OccupancyDiff& d, size_t i) {
   const bool missing = d.missing[i];
   const Volume* fr = missing ? d.ref_fragments : d.test_fragments;
   const float fragments = fr ? fr->data[i * size_t(fr->channels)] : -1.0f;
   if (!d.surface_differs.empty() && fragments == 0.0f)
     return ray_meets(d.ref, d.surface_differs, i) ? Rule::FillRay : Rule::Beyond;
+  if (d.coverage_ties && d.coverage_ties->data[i * size_t(d.coverage_ties->channels)] > 0.0f) return Rule::CoverageTie;
   if (fr && fragments <= 2.0f) return Rule::EdgeFragmentsTie;
   if (face_neighbour_in(d.ref, missing ? d.extra : d.missing, i)) return Rule::FaceNeighbourTie;
   return d.conservative_ref && missing ? Rule::ConservativeHole : Rule::Beyond;
@@ -81,7 +87,8 @@ Rule occupancy_rule(const OccupancyDiff& d, size_t i) {
 std::string occupancy_bound_text(bool conservative_ref) {
   return std::string(conservative_ref
                          ? "no voxel outside the conservative set (except boundary ties); missing voxels are holes (warn)"
-                         : "exact, except ties (up to 1% of occupied voxels -> warn): a missing voxel with an extra one "
+                         : "exact, except ties (warn): a voxel the reference's coverage ties let differ "
+                           "(voxel.occupancy_tie), and up to 1% of occupied voxels more: a missing voxel with an extra one "
                            "among its 26 neighbours (sample on a voxel face), or a voxel of <= 2 fragments (sample on a "
                            "triangle edge); any other missing or extra voxel fails") +
          "; a filled voxel (opaque, no fragments: solid/thickening) may differ only where an axis ray through it "
@@ -129,9 +136,11 @@ StageVerdict compare_occupancy(const StageSet& rs, const StageSet& ts, const Com
   v.out_of_bound = missing_n + extra_n;
   v.allowed = v.out_of_bound - v.admitted[Rule::Beyond];
   v.max_abs = v.out_of_bound ? 1.0 : 0.0;
-  // The cap (compare/counted_shares.h): more ties than a share of the occupied voxels is a shift.
+  // The cap (compare/counted_shares.h): more counted ties than a share of the occupied voxels is a
+  // shift. The coverage ties are derived voxel by voxel and not counted.
+  const size_t counted = v.allowed - v.admitted[Rule::CoverageTie];
   const bool too_many_ties =
-      double(v.allowed) > kOccupancyTieCap.fraction * double(std::max<size_t>(d.occupied, 1)) && !d.conservative_ref;
+      double(counted) > kOccupancyTieCap.fraction * double(std::max<size_t>(d.occupied, 1)) && !d.conservative_ref;
   v.verdict = v.admitted[Rule::Beyond] || too_many_ties ? Verdict::Fail : v.allowed ? Verdict::Warn : Verdict::Pass;
   occupancy_note(v, d, ts.backend, missing_n, extra_n, too_many_ties);
   if (too_many_ties) {  // every differing voxel fails, and the pairs are listed: the evidence of a shift

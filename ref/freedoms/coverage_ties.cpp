@@ -144,6 +144,23 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox) {
   keep_unique(vox, added);
 }
 
+Volume occupancy_ties(const Voxelization& vox) {
+  Volume ties(vox.n, vox.n, vox.n, 1);
+  ties.channel_names = {"tie"};
+  if (vox.may_drop.size() != vox.fragments.size()) return ties;  // add_coverage_ties not run
+  // Fragments are sorted by voxel: a voxel may be left empty when each of its fragments may drop.
+  for (size_t b = 0, e = 0; b < vox.fragments.size(); b = e) {
+    bool all_drop = true;
+    for (e = b; e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel; ++e)
+      all_drop = all_drop && vox.may_drop[e];
+    const ivec3 v = vox.fragments[b].voxel;
+    if (all_drop) *ties.voxel(v.x, v.y, v.z) = 1.0f;
+  }
+  for (const VoxelFragment& f : vox.may_add)
+    if (*vox.occupancy.voxel(f.voxel.x, f.voxel.y, f.voxel.z) == 0.0f) *ties.voxel(f.voxel.x, f.voxel.y, f.voxel.z) = 1.0f;
+  return ties;
+}
+
 void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
                              const std::vector<float>& fragment_slack, const std::vector<ShadowMap>& maps,
                              const VctSettings& settings, const BounceLight* bounce, Volume& slack,

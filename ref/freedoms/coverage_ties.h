@@ -36,6 +36,11 @@ namespace vct {
 /// may decide them either way (the gs mode's whole bound; a hardware mode over-estimates more).
 void add_coverage_ties(const Scene& scene, Voxelization& vox);
 
+/// 1 per voxel where the coverage ties (add_coverage_ties, already run on `vox`) let a correct GL's
+/// occupancy differ from the reference's: every fragment in the voxel may drop, or a fragment GL
+/// may make lands in a voxel `vox` leaves empty (VoxelGrid::occupancy_tie).
+Volume occupancy_ties(const Voxelization& vox);
+
 /// Widens `slack` (per voxel, freedoms/fragment_slack.h's voxel_shading_slack) by the fragment sets
 /// the coverage ties admit: where a voxel's set may change, its slack becomes the largest
 /// distance, over RGB, between the reference's mean and the mean of any admissible set, each

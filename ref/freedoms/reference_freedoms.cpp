@@ -28,8 +28,9 @@ void direct_slack(const Scene& scene, const VctSettings& s, Inputs&, FrameResult
   if (!s.soft_shadows) add_direct_texture_slack(scene, r.shadow_maps, s, r.images.direct, r.gbuffer);
 }
 
-void coverage_ties(const Scene& scene, const VctSettings&, Inputs& in, FrameResult&) {
+void coverage_ties(const Scene& scene, const VctSettings&, Inputs& in, FrameResult& r) {
   add_coverage_ties(scene, in.voxels);
+  r.voxels.occupancy_tie = occupancy_ties(in.voxels);
 }
 
 // The last frame's: its bounce light is rebuilt from the frame before it (r.bounce_input) as

@@ -44,6 +44,7 @@ inline constexpr char kVoxelShadingSlack[] = "voxel.shading_slack";
 inline constexpr char kVoxelConservative[] = "voxel.conservative";
 inline constexpr char kVoxelBounceInput[] = "voxel.bounce_input";
 inline constexpr char kVoxelExact[] = "voxel.exact";
+inline constexpr char kVoxelOccupancyTie[] = "voxel.occupancy_tie";
 inline constexpr char kVoxelHoles[] = "voxel.holes";
 inline constexpr char kMipIso[] = "mip.iso";
 inline constexpr char kMipPosx[] = "mip.posx";

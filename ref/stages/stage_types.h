@@ -77,6 +77,10 @@ struct VoxelGrid {
   // (freedoms/fragment_exactness.h), so the fixed-point reduction must agree
   // exactly there.
   Volume exact;
+  // Reference only: 1 where a correct GL may leave the voxel's occupancy otherwise than the
+  // reference's: every fragment in it may drop, or a fragment GL may make lands in it while the
+  // reference's is empty (the coverage ties, freedoms/coverage_ties.h).
+  Volume occupancy_tie;
 };
 
 /// Axis directions of the anisotropic volumes, in this order: +x, -x, +y, -y, +z, -z.

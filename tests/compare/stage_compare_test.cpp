@@ -40,6 +40,28 @@ TEST(StageCompare, MissingVoxelFailsOccupancyAndIsListed) {
   EXPECT_EQ(r.first_failing(), "voxel.occupancy");
 }
 
+// The reference's coverage ties (voxel.occupancy_tie) admit a voxel they flag, by the rule
+// coverage-tie and outside the 1 % cap: two flagged voxels of 64 missing (3 %) warn; a missing
+// voxel they do not flag still fails.
+TEST(StageCompare, CoverageTieVoxelsAreAdmittedByTheirTieAndNotCounted) {
+  StageSet a = voxel_set("fixed_point");
+  Volume ties(8, 8, 8, 1);
+  *ties.voxel(3, 2, 5) = 1.0f;
+  *ties.voxel(6, 2, 1) = 1.0f;
+  a.volumes["voxel.occupancy_tie"] = ties;
+  StageSet b = a;
+  b.volumes.erase("voxel.occupancy_tie");
+  b.volumes["voxel.radiance"].set_rgba(3, 2, 5, vec4(0.0f));
+  b.volumes["voxel.radiance"].set_rgba(6, 2, 1, vec4(0.0f));
+  const StageVerdict occ = find(compare_stage_sets(a, b), "voxel.occupancy");
+  EXPECT_EQ(occ.verdict, Verdict::Warn) << occ.note;
+  EXPECT_EQ(occ.admitted[Rule::CoverageTie], 2u);
+  b.volumes["voxel.radiance"].set_rgba(0, 2, 0, vec4(0.0f));  // not a tie, no differing neighbour
+  const StageVerdict fail = find(compare_stage_sets(a, b), "voxel.occupancy");
+  EXPECT_EQ(fail.verdict, Verdict::Fail) << fail.note;
+  EXPECT_EQ(fail.admitted[Rule::Beyond], 1u);
+}
+
 TEST(StageCompare, FixedPointAllowsOnlyShadingRoundingPerVoxel) {
   const StageSet a = voxel_set("fixed_point");  // RGBA8: bound 2^-14 + 1/255 + 2^-7 |ref| = 0.0079 at 0.5
   StageSet b = a;
