@@ -235,26 +235,46 @@ Linear dot_axis(const Linear r[3], const vec3& axis) {
   return out;
 }
 
-VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapParallelogram& q,
-                           const VctSettings& s) {
-  const Linear r[3] = {axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)};
+/// The direction r = point - light over q, per world axis, and how far a lookup's may be off:
+/// p - light rounds once on each side, and p itself is known within q.margin.
+struct CubeDirections {
+  Linear r[3];
+  double er = 0.0;
+};
+
+CubeDirections cube_directions(const SnapParallelogram& q, const vec3& light) {
+  CubeDirections d{{axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)}, 0.0};
   double largest = 0.0;
   for (const Point& p : unit_square())
-    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(r[k].at(p)));
-  // The lookup's p - light rounds once on each side; p itself is known within q.margin.
-  const double er = 2.0 * kU * largest + q.margin;
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(d.r[k].at(p)));
+  d.er = 2.0 * kU * largest + q.margin;
+  return d;
+}
+
+/// Where face `home` may be selected: ma >= |r_k| of the other axes, within the rounding.
+Polygon face_region(const CubeDirections& d, int home) {
+  const CubeFaceAxes& axes = cube_face_axes(home);
+  const Linear ma = dot_axis(d.r, axes.major_axis);
+  Polygon region = clip(unit_square(), ma);
+  for (int k = 0; k < 3 && !region.empty(); ++k) {
+    if (std::abs(axes.major_axis[k]) > 0.0f) continue;
+    region = clip(region, ma - d.r[k] + Linear{2.0 * d.er, 0.0, 0.0});
+    region = clip(region, ma + d.r[k] + Linear{2.0 * d.er, 0.0, 0.0});
+  }
+  return region;
+}
+
+VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapParallelogram& q,
+                           const VctSettings& s) {
+  const CubeDirections dirs = cube_directions(q, light);
+  const Linear* r = dirs.r;
+  const double er = dirs.er;
   const int size = map.cube[0].width;
   VisibilityRange out{1.0f, 0.0f};
   for (int home = 0; home < 6; ++home) {
     const CubeFaceAxes& axes = cube_face_axes(home);
     const Linear ma = dot_axis(r, axes.major_axis);
-    // Where this face may be selected: ma >= |r_k| of the other axes, within the rounding.
-    Polygon region = clip(unit_square(), ma);
-    for (int k = 0; k < 3 && !region.empty(); ++k) {
-      if (std::abs(axes.major_axis[k]) > 0.0f) continue;
-      region = clip(region, ma - r[k] + Linear{2.0 * er, 0.0, 0.0});
-      region = clip(region, ma + r[k] + Linear{2.0 * er, 0.0, 0.0});
-    }
+    const Polygon region = face_region(dirs, home);
     if (region.empty()) continue;
     double ma_min = 1e300;
     for (const Point& p : region) ma_min = std::min(ma_min, ma.at(p));
@@ -297,23 +317,10 @@ bool offset_parallelogram(const mat4& m, const SnapParallelogram& q, const vec3&
 
 /// The cube faces some point of q may select (range_cube's regions, before the lookup).
 std::vector<int> faces_over(const SnapParallelogram& q, const vec3& light) {
-  const Linear r[3] = {axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)};
-  double largest = 0.0;
-  for (const Point& p : unit_square())
-    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(r[k].at(p)));
-  const double er = 2.0 * kU * largest + q.margin;
+  const CubeDirections dirs = cube_directions(q, light);
   std::vector<int> out;
-  for (int home = 0; home < 6; ++home) {
-    const CubeFaceAxes& axes = cube_face_axes(home);
-    const Linear ma = dot_axis(r, axes.major_axis);
-    Polygon region = clip(unit_square(), ma);
-    for (int k = 0; k < 3 && !region.empty(); ++k) {
-      if (std::abs(axes.major_axis[k]) > 0.0f) continue;
-      region = clip(region, ma - r[k] + Linear{2.0 * er, 0.0, 0.0});
-      region = clip(region, ma + r[k] + Linear{2.0 * er, 0.0, 0.0});
-    }
-    if (!region.empty()) out.push_back(home);
-  }
+  for (int home = 0; home < 6; ++home)
+    if (!face_region(dirs, home).empty()) out.push_back(home);
   return out;
 }
 
