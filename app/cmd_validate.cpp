@@ -102,13 +102,36 @@ nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
   return j;
 }
 
-// One sweep: re-render ref (and gl) per value, bias against the PT of that light model.
-nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::string& spec, const PtRun& pt,
-                         bool gl_available, const GlFlags& gl_flags, PhaseProgress& progress) {
+// A sweep of exposure or exposure_ev100 re-exposes the scene as loaded for each value (docs/scenes.md,
+// "Light units and exposure").
+bool sweep_exposes(const std::string& key) { return key == "exposure" || key == "exposure_ev100"; }
+
+// The base run's path tracer AOVs at another exposure: every AOV is radiance, linear in the sources,
+// so it scales by the ratio of the scales and its variance by the ratio's square.
+PtRun rescaled(const PtRun& pt, double ratio) {
+  PtRun out = pt;
+  for (auto& [name, img] : out.aovs) {
+    const bool variance = name.size() > 4 && name.compare(name.size() - 4, 4, "_var") == 0;
+    const float k = float(variance ? ratio * ratio : ratio);
+    for (float& v : img.data) v *= k;
+  }
+  return out;
+}
+
+// One sweep: re-render ref (and gl) per value, bias against the PT of that light model (and exposure).
+// `unexposed` is the scene as loaded, `scene` as the base settings expose it.
+nlohmann::json run_sweep(const Scene& unexposed, const Scene& base_scene, const Settings& base, const std::string& spec,
+                         const PtRun& pt, bool gl_available, const GlFlags& gl_flags, PhaseProgress& progress) {
   const auto [key, values] = parse_sweep(spec);
   nlohmann::json rows = nlohmann::json::array();
   for (const std::string& value : values) {
     const Settings s = apply_sweep_value(base, key, value);
+    Scene exposed;
+    if (sweep_exposes(key)) {
+      exposed = unexposed;
+      expose_scene(exposed, s.vct);
+    }
+    const Scene& scene = sweep_exposes(key) ? exposed : base_scene;
     std::printf("  sweep %s=%s ...\n", key.c_str(), value.c_str());
     std::fflush(stdout);
     progress.begin("sweep " + key + "=" + value + (gl_available ? ": gl, ref, compare, bias" : ": ref, bias"));
@@ -119,9 +142,12 @@ nlohmann::json run_sweep(const Scene& scene, const Settings& base, const std::st
     row["ref_status"] = ref.status;
     row["ref_ms"] = ref.ms;
     if (ref.ok()) row["ref_timings_ms"] = ref.frame->timings_ms;
+    row["exposure"] = exposure_json(scene.exposure);
     PtRun pt_here;
     const PtRun* p = &pt;
     if (key == "light_model" && s.pt.light_model != base.pt.light_model) p = &(pt_here = run_pt_backend(scene, s));
+    if (sweep_exposes(key) && scene.exposure.scale != base_scene.exposure.scale && pt.ok())
+      p = &(pt_here = rescaled(pt, double(scene.exposure.scale) / double(base_scene.exposure.scale)));
     if (ref.ok() && p->ok()) {
       const auto bias = cmp::measure_bias(cmp::stage_set_from_frame(*ref.frame, s.vct), p->aovs);
       row["bias"] = bias_json(bias);
@@ -198,13 +224,16 @@ int run_sweep_rows(const ValidateOptions& o) {
   if (o.pt_from.empty()) throw InputError("--sweep-rows", "needs --pt-from RUN_DIR (the base validate run)");
   if (o.sweeps.empty()) throw InputError("--sweep-rows", "needs at least one --sweep KEY=V1,...");
   const Settings s = resolve(o.common);
-  const Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);
+  const Scene unexposed = load_scene_and_warn(o.scene, o.common.scene_load);
+  Scene scene = unexposed;
+  expose_scene(scene, s.vct);  // as the base run exposed it
   check_sweeps(scene, s, o);
   bool gl_available = false;
   const PtRun pt = load_base_pt(o.pt_from, gl_available);
   PhaseProgress progress(false, "validate", 0);
   nlohmann::json sweeps = nlohmann::json::array();
-  for (const auto& spec : o.sweeps) sweeps.push_back(run_sweep(scene, s, spec, pt, gl_available, o.gl, progress));
+  for (const auto& spec : o.sweeps)
+    sweeps.push_back(run_sweep(unexposed, scene, s, spec, pt, gl_available, o.gl, progress));
   write_text_atomically(o.sweep_rows, sweeps.dump(1) + "\n");
   return kExitOk;
 }
@@ -243,7 +272,9 @@ int run(const ValidateOptions& o) {
   if (!o.sweep_rows.empty()) return run_sweep_rows(o);
   PhaseTimes phases;
   const Settings resolved = resolve(o.common);
-  Scene loaded = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load, resolved.vct); });
+  Scene loaded = phases.time("load scene", [&] { return load_scene_and_warn(o.scene, o.common.scene_load); });
+  const Scene unexposed = loaded;  // an exposure sweep re-exposes it per value
+  expose_scene(loaded, resolved.vct);
   const Settings s = fit_image_to_camera_and_warn(resolved, loaded, o.common);
   const Scene scene = std::move(loaded);
   const std::string out = o.common.out.empty() ? default_out_dir("validate", o.scene) : o.common.out;
@@ -323,7 +354,7 @@ int run(const ValidateOptions& o) {
   if (!o.sweeps.empty()) {
     nlohmann::json sweeps = nlohmann::json::array();
     for (const auto& spec : o.sweeps)
-      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(scene, s, spec, pt, gl.ok(), o.gl, progress)); });
+      phases.time("sweep " + spec, [&] { sweeps.push_back(run_sweep(unexposed, scene, s, spec, pt, gl.ok(), o.gl, progress)); });
     run.json()["sweeps"] = sweeps;
     run.save();
   }

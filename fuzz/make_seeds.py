@@ -3,13 +3,16 @@
 gltf: the committed scenes (but tiny_triangles), minified, plus each as a .glb (buffer moved into the
 BIN chunk), and inputs at the limits of issue 19 (nesting, a URI leaving the folder, a huge PNG header).
 stage_set: a small run dir's manifest (two stages) + a NRRD + an EXR, joined as fuzz_inputs.h says.
-scene_compare: whole stage sets of the built-in scene at the sizes of scene_compare_steps.h: the ref/
-of two validate runs (`vct render --dump` writes no manifest),
-  vct validate --no-report --width 16 --height 16 --grid 16 --spp 1 --config C --out ISO
-with C = {"vct": {"shadow_map_size": 64}}, and again with "anisotropic": true added (ANISO), joined
+scene_compare: whole stage sets of the built-in scene at the settings of scene_compare_steps.h
+(scene_compare_seed_settings), the stages/ of two reference renders,
+  vct render --backend ref --width 16 --height 16 --grid 16 --config C --set voxelizer=gpu
+             --set reduction=fixed --stage-set --out ISO
+with C = {"vct": {"shadow_map_size": 64}}, and again with "anisotropic": true added (ANISO) (not a
+validate run's ref/: that emulates the GL driver's MSAA sample count, 4 on llvmpipe, where the
+fixture renders the default 8), joined
 as named files (fuzz_inputs.h: write_named_stage_set): the isotropic set exact (float volumes: its
 frame is A's), the anisotropic one with uint8 (UNORM) volumes to stay small.
-  fuzz/make_seeds.py [RUN_DIR/ref] [--scene-compare ISO/ref ANISO/ref]"""
+  fuzz/make_seeds.py [RUN_DIR/ref] [--scene-compare ISO/stages ANISO/stages]"""
 import argparse, base64, json, pathlib, struct
 
 root = pathlib.Path(__file__).resolve().parent.parent

@@ -45,7 +45,7 @@ void main() {
       vis = cone_visibility(i, g.position);
       vis_sum += vis;
     } else {
-      vis = shadow_visibility(i, g.position);
+      vis = surface_visibility(i, g.position, g.normal);
     }
     if (n_dot_l <= 0.0f) continue;
     sum += cook_torrance(g.pbr, g.normal, v, l) * light_irradiance(i, g.position) * n_dot_l * vis;

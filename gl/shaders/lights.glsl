@@ -21,6 +21,7 @@ uniform mat4 u_shadow_view_proj[MAX_SHADOW_LAYERS];
 uniform int u_shadow_size;
 uniform int u_pcf_kernel;
 uniform float u_shadow_bias;
+uniform float u_shadow_normal_offset;  // in units of the least offset that keeps a plane unshadowed
 layout(binding = 4) uniform sampler2DArray u_shadow_maps;
 
 // Irradiance on a surface facing light i at world point p (before n.l and shadowing).
@@ -139,3 +140,30 @@ float shadow_visibility(int i, vec3 p) {
   if (u_light_kind[i] == LIGHT_KIND_POINT) return shadow_visibility_cube(i, p);
   return shadow_visibility_2d(u_light_layer[i], p);
 }
+
+// Normal-offset bias (ref/stages/shadow_map.h, shadow_lookup_point; docs/pipeline.md "Normal
+// offset"): the surface point p with unit normal n is looked up at p + K w n, w = p's clip w
+// through its map (a point light: the cube face p's direction selects), K = offset x (2 / S) x
+// (R |n.r0| / |r0|^2 + R |n.r1| / |r1|^2), r0, r1 the matrix's rows 0 and 1, R = k / 2 the
+// reach of k x k nearest taps in texels.
+vec3 shadow_lookup_point(int i, vec3 p, vec3 n) {
+  if (u_shadow_normal_offset == 0.0f) return p;
+  int layer = u_light_layer[i];
+  if (u_light_kind[i] == LIGHT_KIND_POINT) {
+    vec3 r = p - u_light_position[i];
+    if (r == vec3(0.0f)) return p;
+    layer += cube_face_of(r);
+  }
+  mat4 m = u_shadow_view_proj[layer];
+  float w = (m * vec4(p, 1.0f)).w;
+  if (!(w > 0.0f)) return p;
+  vec3 r0 = vec3(m[0][0], m[1][0], m[2][0]);
+  vec3 r1 = vec3(m[0][1], m[1][1], m[2][1]);
+  float reach = 0.5f * float(max(u_pcf_kernel, 1));
+  float k = u_shadow_normal_offset * (2.0f / float(u_shadow_size)) *
+            (reach * abs(dot(n, r0)) / dot(r0, r0) + reach * abs(dot(n, r1)) / dot(r1, r1));
+  return p + (k * w) * n;
+}
+
+// The PCF visibility of light i at surface point p with unit normal n: direct light and injection.
+float surface_visibility(int i, vec3 p, vec3 n) { return shadow_visibility(i, shadow_lookup_point(i, p, n)); }

@@ -17,7 +17,7 @@ vec3 voxel_radiance(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1
     float n_dot_l = dot(n, l);
     vec3 e = light_irradiance(i, position);
     if (n_dot_l <= 0.0f || e == vec3(0.0f)) continue;
-    irradiance += e * n_dot_l * shadow_visibility(i, position);
+    irradiance += e * n_dot_l * surface_visibility(i, position, n);
   }
   vec3 radiance = m.albedo * irradiance * SH_INV_PI + m.emission;
   if (u_bounce > 0) radiance += u_restitution * m.albedo * trace_diffuse(tex, n, 0.0f, 1.0f);

@@ -72,6 +72,9 @@ struct VctSettings {
   int shadow_map_size = 2048;
   int pcf_kernel = 3;            // PCF taps per side (seed report: 3x3)
   float shadow_bias = 0.0005f;   // constant depth bias in NDC-depth [0,1] units
+  // Normal-offset bias in units of the least offset that keeps a plane from shadowing itself
+  // under the PCF footprint (stages/shadow_map.h, normal_offset_per_w; 0 = off).
+  float shadow_normal_offset = 1.0f;
   // A spot light's shadow frustum (an engine's convention, issue 21): 0 = the oracle's own choice
   // (fov twice the outer cone angle; far = farthest scene corner x1.01, near = far/20).
   float shadow_fov_deg = 0.0f;

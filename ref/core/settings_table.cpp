@@ -263,6 +263,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_map_size", &V::shadow_map_size, closed(16, 16384), "shadow map side in texels", "u_shadow_size"),
     field("pcf_kernel", &V::pcf_kernel, closed(1, 9), "PCF taps per side (seed report: 3)", "u_pcf_kernel"),
     field("shadow_bias", &V::shadow_bias, any(), "constant depth bias in window-depth [0,1] units", "u_shadow_bias"),
+    field("shadow_normal_offset", &V::shadow_normal_offset, at_least(0), "normal-offset bias: the lookup point moves along the surface normal by this many times the least offset that keeps a plane from shadowing itself under the PCF footprint (0 = off; docs/pipeline.md, \"Normal offset\")", "u_shadow_normal_offset"),
     field("shadow_fov_deg", &V::shadow_fov_deg, closed(0, 179), "spot shadow map field of view, degrees (0 = twice the outer cone)"),
     field("shadow_near", &V::shadow_near, at_least(0), "spot shadow map near plane (0 = far / 20)"),
     field("shadow_far", &V::shadow_far, at_least(0), "spot shadow map far plane (0 = farthest scene corner x1.01)"),

@@ -16,24 +16,12 @@ namespace {
 
 constexpr const char* kGroups[2] = {"image.direct", "image.emission"};
 
-// A hard spot's edge (docs/compare.md, "Hard spots"): cos_axis = dot(-l, normalize(axis)) with
-// l = normalize(light - p) is computed by each backend from the same p; two GLSL normalizes
-// (inversesqrt 2 ULP, GLSL 4.50 §4.7.1), their products and the dot's sums move it by at most
-// ~16 ULP of 1, 2^-20. Within that of cos outer the step may go either way.
-constexpr float kHardSpotCosTie = 1.0f / 1048576.0f;
-
 // The light's term with its hard-spot step taken as lit, when p is within the tie band of the
 // edge; zero otherwise (no alternative).
 vec3 hard_spot_lit_alternative(const Light& light, LightModel model, const vec3& p, const vec3& n, const vec3& v,
                                const sh::SurfacePbr& pbr) {
-  if (!light.is_spot() || light.inner_cone_angle < light.outer_cone_angle) return vec3(0.0f);
-  const float cos_outer = std::cos(light.outer_cone_angle);
-  const float cos_axis = glm::dot(-glm::normalize(light.position - p), glm::normalize(light.direction));
-  if (std::fabs(cos_axis - cos_outer) > kHardSpotCosTie) return vec3(0.0f);
-  Light lit = light;  // the same light with the edge just outside p: the step's lit side
-  lit.inner_cone_angle = lit.outer_cone_angle = std::min(std::acos(std::max(cos_axis - 2.0f * kHardSpotCosTie, -1.0f)),
-                                                         0.5f * kPi);
-  const LightSample ls = sample_light(lit, model, p);
+  const LightSample ls = hard_spot_lit_sample(light, model, p);
+  if (ls.irradiance == vec3(0.0f)) return vec3(0.0f);
   const float n_dot_l = glm::dot(n, ls.l);
   if (n_dot_l <= 0.0f) return vec3(0.0f);
   return sh::cook_torrance(pbr, n, v, ls.l) * ls.irradiance * n_dot_l;
@@ -53,7 +41,8 @@ void direct_range_at(const Scene& scene, const GBuffer& g, const std::vector<Sha
     const vec3 edge = hard_spot_lit_alternative(scene.lights[i], s.light_model, p, m.shading_normal, v, pbr);
     if (c == vec3(0.0f) && edge == vec3(0.0f)) continue;
     const VisibilityRange r =
-        i < maps.size() ? light_visibility_range(maps[i], scene.lights[i], p, s) : VisibilityRange{};
+        i < maps.size() ? surface_visibility_range(maps[i], scene.lights[i], p, m.shading_normal, s)
+                        : VisibilityRange{};
     const bool tie = edge != vec3(0.0f);
     lo += (tie ? vec3(0.0f) : c) * r.lo;
     hi += (tie ? glm::max(c, edge) : c) * r.hi;
@@ -61,6 +50,21 @@ void direct_range_at(const Scene& scene, const GBuffer& g, const std::vector<Sha
 }
 
 }  // namespace
+
+// A hard spot's edge (docs/compare.md, "Hard spots"): cos_axis = dot(-l, normalize(axis)) with
+// l = normalize(light - p) is computed by each backend from the same p; two GLSL normalizes
+// (inversesqrt 2 ULP, GLSL 4.50 §4.7.1), their products and the dot's sums move it by at most
+// ~16 ULP of 1, 2^-20. Within that of cos outer the step may go either way.
+LightSample hard_spot_lit_sample(const Light& light, LightModel model, const vec3& p) {
+  if (!light.is_spot() || light.inner_cone_angle < light.outer_cone_angle) return {};
+  const float cos_outer = std::cos(light.outer_cone_angle);
+  const float cos_axis = glm::dot(-glm::normalize(light.position - p), glm::normalize(light.direction));
+  if (std::fabs(cos_axis - cos_outer) > kHardSpotCosTie) return {};
+  Light lit = light;  // the same light with the edge just outside p: the step's lit side
+  lit.inner_cone_angle = lit.outer_cone_angle = std::min(std::acos(std::max(cos_axis - 2.0f * kHardSpotCosTie, -1.0f)),
+                                                         0.5f * kPi);
+  return sample_light(lit, model, p);
+}
 
 Image shading_tie_range(const Scene& scene, const GBuffer& g, const std::vector<ShadowMap>& maps,
                         const VctSettings& settings, const Image& direct, const Image& emission) {

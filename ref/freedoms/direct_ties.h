@@ -12,9 +12,19 @@
 #include "core/image.h"
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "stages/light_sample.h"
 #include "stages/stage_types.h"
 
 namespace vct {
+
+/// Float rounding of a spot's cos_axis on either backend (docs/compare.md, "Hard spots"): 2^-20.
+inline constexpr float kHardSpotCosTie = 1.0f / 1048576.0f;
+
+/// A hard spot's step tie: where p's cos_axis lies within kHardSpotCosTie of the cone's edge, the
+/// light's sample with the step taken as lit (a correct GL may light p, or not); else a sample with
+/// zero irradiance (no alternative). image.direct's ranges and the voxel fragments' shading slack
+/// (freedoms/fragment_slack.h) read it.
+LightSample hard_spot_lit_sample(const Light& light, LightModel model, const vec3& p);
 
 /// Per pixel, the lower and upper end of image.direct and image.emission a correct GL may give
 /// from G-buffer `g` and shadow maps `maps` (with their matrices), as channels

@@ -6,6 +6,7 @@
 
 #include "core/parallel.h"
 #include "freedoms/direct_slack.h"
+#include "freedoms/direct_ties.h"
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/snap_visibility.h"
@@ -118,9 +119,9 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
     const float n_dot_l = glm::dot(m.shading_normal, ls.l);
     if (n_dot_l <= 0.0f || ls.irradiance == vec3(0.0f)) continue;
     const float open = largest_channel(m.albedo * ls.irradiance * n_dot_l * kInvPi);
-    const float vis = light_visibility(maps[i], light, f.position, settings);
+    const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
     // A sliver's shift has no bound: any visibility.
-    const VisibilityRange r = w.bounded ? snap_visibility_range(maps[i], light, q, settings) : VisibilityRange{0.0f, 1.0f};
+    const VisibilityRange r = w.bounded ? snap_surface_visibility_range(maps[i], light, q, m.shading_normal, settings) : VisibilityRange{0.0f, 1.0f};
     slack += open * std::max(r.hi - vis, vis - r.lo);
   }
   return slack;
@@ -187,7 +188,32 @@ float linear_compare_slack(const Scene& scene, const VoxelFragment& f, const Slo
   return kLinearCompareWeightStep * largest_channel(open);
 }
 
+/// A hard spot whose edge passes within float rounding of the fragment (direct_ties.h,
+/// hard_spot_lit_sample): GL's step may light it or not, so its light from that spot may be the lit
+/// side's diffuse light (unshadowed: an upper bound) or none, as image.direct's tie admits.
+float hard_spot_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const VctSettings& settings) {
+  const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
+  float slack = 0.0f;
+  for (const Light& light : scene.lights) {
+    const LightSample ls = hard_spot_lit_sample(light, settings.light_model, f.position);
+    const float n_dot_l = glm::dot(m.shading_normal, ls.l);
+    if (ls.irradiance == vec3(0.0f) || n_dot_l <= 0.0f) continue;
+    slack += largest_channel(m.albedo * ls.irradiance * n_dot_l * kInvPi);
+  }
+  return slack;
+}
+
+bool has_hard_spot(const Scene& scene) {
+  for (const Light& l : scene.lights)
+    if (l.is_spot() && l.inner_cone_angle >= l.outer_cone_angle) return true;
+  return false;
+}
+
 }  // namespace
+
+float hard_spot_slack(const Scene& scene, int n, const VoxelFragment& f, const VctSettings& settings) {
+  return hard_spot_slack(scene, f, voxel_lods_per_triangle(scene, n)[f.triangle].exact, settings);
+}
 
 double voxel_snap_reach(const Scene& scene, int n, const VoxelFragment& f) {
   SnapWindow w;
@@ -218,6 +244,7 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
                                           const VctSettings& settings,
                                           const BounceLight* bounce) {
   const std::vector<SurfaceLods> lods = voxel_lods_per_triangle(scene, vox.n);
+  const bool hard_spots = has_hard_spot(scene);
   std::vector<float> out(vox.fragments.size(), 0.0f);
   parallel_for(int64_t(out.size()), [&](int64_t i) {
     const VoxelFragment& f = vox.fragments[size_t(i)];
@@ -232,6 +259,7 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     if (m.normal_texture.present())
       slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     if (settings.shadow_compare == ShadowCompare::Linear) slack += linear_compare_slack(scene, f, l.exact, settings);
+    if (hard_spots) slack += hard_spot_slack(scene, f, l.exact, settings);
     out[size_t(i)] = slack;
   });
   return out;

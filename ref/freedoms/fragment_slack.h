@@ -49,13 +49,18 @@ VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f)
 /// (fragment_radiance): the largest over the four corners of the snap's reach at the reference's
 /// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel
 /// shift at the fragment itself, plus, with a normal map, the largest over the normal texel's
-/// 8-bit precision (the freedoms are independent; the sum bounds their combination by the
+/// 8-bit precision, plus hard_spot_slack (the freedoms are independent; the sum bounds their combination by the
 /// triangle inequality, each term taken where the reference sits).
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
                                           const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,
                                           const VctSettings& settings,
                                           const BounceLight* bounce = nullptr);
+
+/// The hard-spot term of a fragment's slack (grid n): where a hard spot's edge passes within its
+/// float tie of the fragment (direct_ties.h, hard_spot_lit_sample), the lit side's unshadowed
+/// diffuse light, summed over such spots; 0 elsewhere. fragment_shading_slack adds it.
+float hard_spot_slack(const Scene& scene, int n, const VoxelFragment& f, const VctSettings& settings);
 
 /// Per voxel, the mean of its fragments' slacks: the voxel's mean moves by at most that.
 Volume voxel_shading_slack(const Voxelization& vox, const std::vector<float>& slack);

@@ -74,14 +74,14 @@ VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, cons
   return {float(std::max(0.0, lo / n - w)), float(std::min(1.0, hi / n + w))};
 }
 
-VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings& s) {
+VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings& s, double e_world) {
   const vec4 c = map.view_proj * vec4(p, 1.0f);
   if (c.w <= 0.0f) return {};
   const vec3 ndc = vec3(c) / c.w;
   double e[3];
   bool near_border = false;
   for (int i = 0; i < 3; ++i) {
-    e[i] = ndc_error(map.view_proj, p, i);
+    e[i] = ndc_error(map.view_proj, p, i, e_world);
     near_border = near_border || std::abs(std::abs(double(ndc[i])) - 1.0) <= e[i];
   }
   const bool inside = std::abs(ndc.x) <= 1.0f && std::abs(ndc.y) <= 1.0f && std::abs(ndc.z) <= 1.0f;
@@ -101,12 +101,13 @@ VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings&
 
 // A point light's cube: every face its direction may select (a near tie of the largest
 // coordinates), each with the taps and the past-the-edge reprojection of cube_shadow_visibility.
-VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, const vec3& p, const VctSettings& s) {
+VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, const vec3& p, const VctSettings& s,
+                           double e_world) {
   const vec3 r = p - light_position;
   if (r == vec3(0.0f)) return {};
   const int size = map.cube[0].width;
-  // The subtraction rounds once on each side.
-  const double er = 2.0 * kU * double(std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)}));
+  // The subtraction rounds once on each side; p itself is known within e_world.
+  const double er = 2.0 * kU * double(std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)})) + e_world;
   const double largest = std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)});
   VisibilityRange out{1.0f, 0.0f};
   for (int home = 0; home < 6; ++home) {
@@ -123,7 +124,7 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
       const mat4& m = map.cube_view_proj[size_t(face)];
       const vec4 c = m * vec4(p, 1.0f);
       const float z = c.z / c.w * 0.5f + 0.5f;
-      const double ez = c.w > 0.0f ? depth_margin(ndc_error(m, p, 2)) : 0.0;
+      const double ez = c.w > 0.0f ? depth_margin(ndc_error(m, p, 2, e_world)) : 0.0;
       const double zd = z;
       if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return zd + ez < 0.0 || zd - ez > 1.0 || !(c.w > 0.0f) ? 2 : 1;
       const int st_ = compare_state(z, ez, map.cube[size_t(face)].at(tx, size - 1 - ty, 0), s.shadow_bias);
@@ -137,13 +138,75 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
   return out;
 }
 
+// The faces a correct GL may select for direction r (the largest coordinate within the
+// subtraction's rounding of the largest), as range_cube's home loop.
+std::vector<int> faces_may_select(const vec3& r) {
+  const double largest = std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)});
+  const double er = 2.0 * kU * largest;
+  std::vector<int> out;
+  for (int f = 0; f < 6; ++f) {
+    const double ma = double(glm::dot(r, cube_face_axes(f).major_axis));
+    if (f == cube_face(r) || (ma > 0.0 && ma >= largest - 2.0 * er)) out.push_back(f);
+  }
+  return out;
+}
+
+VisibilityRange unite(VisibilityRange a, const VisibilityRange& b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+
+// The reference's lookup point through matrix m (shadow_lookup_point's arithmetic).
+vec3 offset_point(const mat4& m, const vec3& p, const vec3& n, const VctSettings& s) {
+  const float w = (m * vec4(p, 1.0f)).w;
+  if (!(w > 0.0f) || s.shadow_normal_offset == 0.0f) return p;
+  return p + (normal_offset_per_w(m, n, s) * w) * n;
+}
+
 }  // namespace
+
+double lookup_point_margin(const mat4& m, const vec3& p, const vec3& n, const VctSettings& s) {
+  if (s.shadow_normal_offset == 0.0f) return 0.0;
+  constexpr double g3 = 3.0 * kU / (1.0 - 3.0 * kU);
+  const vec2 reach = pcf_reach(s);
+  double k_lo = 0.0, k_hi = 0.0;
+  for (int row = 0; row < 2; ++row) {
+    double dot = 0.0, mag = 0.0, rr = 0.0;
+    for (int j = 0; j < 3; ++j) {
+      const double r = double(m[j][row]);
+      dot += double(n[j]) * r, mag += std::abs(double(n[j]) * r), rr += r * r;
+    }
+    k_hi += double(reach[row]) * (std::abs(dot) + g3 * mag) / (rr * (1.0 - g3));
+    k_lo += double(reach[row]) * std::max(0.0, std::abs(dot) - g3 * mag) / (rr * (1.0 + g3));
+  }
+  const double scale = double(s.shadow_normal_offset) * 2.0 / double(s.shadow_map_size);
+  k_hi *= scale * (1.0 + 12.0 * kU), k_lo *= scale * (1.0 - 12.0 * kU);
+  double w = double(m[3][3]), s_w = std::abs(w);
+  for (int j = 0; j < 3; ++j) w += double(m[j][3]) * double(p[j]), s_w += std::abs(double(m[j][3]) * double(p[j]));
+  const double w_hi = w + kG4 * s_w, w_lo = w - kG4 * s_w;
+  if (!(w_hi > 0.0)) return 0.0;  // no offset on either side
+  const double d_hi = k_hi * w_hi * (1.0 + kU), d_lo = w_lo > 0.0 ? k_lo * w_lo * (1.0 - kU) : 0.0;
+  const double largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) + d_hi;
+  return (d_hi - d_lo) + 2.0 * kU * (d_hi + largest);
+}
+
+VisibilityRange surface_visibility_range(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
+                                         const VctSettings& s) {
+  if (light.is_point()) {
+    if (!map.is_cube() || p == light.position) return {};
+    VisibilityRange out{1.0f, 0.0f};
+    for (int f : faces_may_select(p - light.position)) {
+      const mat4& m = map.cube_view_proj[size_t(f)];
+      out = unite(out, range_cube(map, light.position, offset_point(m, p, n, s), s, lookup_point_margin(m, p, n, s)));
+    }
+    return out;
+  }
+  if (map.depth.empty()) return {};
+  return range_2d(map, offset_point(map.view_proj, p, n, s), s, lookup_point_margin(map.view_proj, p, n, s));
+}
 
 double texel_margin(double e_ndc, int size) { return 0.5 * double(size) * e_ndc + 4.0 * kU * double(size); }
 
 double depth_margin(double e_ndc) { return 0.5 * e_ndc + 2.0 * kU; }
 
-double ndc_error(const mat4& m, const vec3& p, int row) {
+double ndc_error(const mat4& m, const vec3& p, int row, double e_world) {
   const vec4 q(p, 1.0f);
   double s_row = 0.0, s_w = 0.0, c_row = 0.0, c_w = 0.0;
   for (int j = 0; j < 4; ++j) {
@@ -154,13 +217,15 @@ double ndc_error(const mat4& m, const vec3& p, int row) {
   }
   if (c_w == 0.0) return 1e30;
   const double ndc = std::abs(c_row / c_w);
-  return 2.0 * kG4 * (s_row + ndc * s_w) / std::abs(c_w) + 3.0 * kU * ndc;
+  double a_row = 0.0, a_w = 0.0;  // how fast clip row and w move per world unit
+  for (int j = 0; j < 3; ++j) a_row += std::abs(double(m[j][row])), a_w += std::abs(double(m[j][3]));
+  return 2.0 * kG4 * (s_row + ndc * s_w) / std::abs(c_w) + 3.0 * kU * ndc + (a_row + ndc * a_w) * e_world / std::abs(c_w);
 }
 
 VisibilityRange light_visibility_range(const ShadowMap& map, const Light& light, const vec3& p,
                                        const VctSettings& settings) {
-  if (light.is_point()) return map.is_cube() ? range_cube(map, light.position, p, settings) : VisibilityRange{};
-  return map.depth.empty() ? VisibilityRange{} : range_2d(map, p, settings);
+  if (light.is_point()) return map.is_cube() ? range_cube(map, light.position, p, settings, 0.0) : VisibilityRange{};
+  return map.depth.empty() ? VisibilityRange{} : range_2d(map, p, settings, 0.0);
 }
 
 }  // namespace vct

@@ -65,7 +65,7 @@ std::vector<vec3> points_of(const SnapParallelogram& q) {
 /// The largest NDC rounding margin (shadow_ties.h) of row `row` over the centre and corners.
 double ndc_margin(const mat4& m, const SnapParallelogram& q, int row) {
   double e = 0.0;
-  for (const vec3& p : points_of(q)) e = std::max(e, ndc_error(m, p, row));
+  for (const vec3& p : points_of(q)) e = std::max(e, ndc_error(m, p, row, q.margin));
   return e;
 }
 
@@ -235,25 +235,46 @@ Linear dot_axis(const Linear r[3], const vec3& axis) {
   return out;
 }
 
-VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapParallelogram& q,
-                           const VctSettings& s) {
-  const Linear r[3] = {axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)};
+/// The direction r = point - light over q, per world axis, and how far a lookup's may be off:
+/// p - light rounds once on each side, and p itself is known within q.margin.
+struct CubeDirections {
+  Linear r[3];
+  double er = 0.0;
+};
+
+CubeDirections cube_directions(const SnapParallelogram& q, const vec3& light) {
+  CubeDirections d{{axis_of(q, light, 0), axis_of(q, light, 1), axis_of(q, light, 2)}, 0.0};
   double largest = 0.0;
   for (const Point& p : unit_square())
-    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(r[k].at(p)));
-  const double er = 2.0 * kU * largest;  // the lookup's p - light rounds once on each side
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(d.r[k].at(p)));
+  d.er = 2.0 * kU * largest + q.margin;
+  return d;
+}
+
+/// Where face `home` may be selected: ma >= |r_k| of the other axes, within the rounding.
+Polygon face_region(const CubeDirections& d, int home) {
+  const CubeFaceAxes& axes = cube_face_axes(home);
+  const Linear ma = dot_axis(d.r, axes.major_axis);
+  Polygon region = clip(unit_square(), ma);
+  for (int k = 0; k < 3 && !region.empty(); ++k) {
+    if (std::abs(axes.major_axis[k]) > 0.0f) continue;
+    region = clip(region, ma - d.r[k] + Linear{2.0 * d.er, 0.0, 0.0});
+    region = clip(region, ma + d.r[k] + Linear{2.0 * d.er, 0.0, 0.0});
+  }
+  return region;
+}
+
+VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapParallelogram& q,
+                           const VctSettings& s) {
+  const CubeDirections dirs = cube_directions(q, light);
+  const Linear* r = dirs.r;
+  const double er = dirs.er;
   const int size = map.cube[0].width;
   VisibilityRange out{1.0f, 0.0f};
   for (int home = 0; home < 6; ++home) {
     const CubeFaceAxes& axes = cube_face_axes(home);
     const Linear ma = dot_axis(r, axes.major_axis);
-    // Where this face may be selected: ma >= |r_k| of the other axes, within the rounding.
-    Polygon region = clip(unit_square(), ma);
-    for (int k = 0; k < 3 && !region.empty(); ++k) {
-      if (std::abs(axes.major_axis[k]) > 0.0f) continue;
-      region = clip(region, ma - r[k] + Linear{2.0 * er, 0.0, 0.0});
-      region = clip(region, ma + r[k] + Linear{2.0 * er, 0.0, 0.0});
-    }
+    const Polygon region = face_region(dirs, home);
     if (region.empty()) continue;
     double ma_min = 1e300;
     for (const Point& p : region) ma_min = std::min(ma_min, ma.at(p));
@@ -275,7 +296,55 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapPa
   return out.lo > out.hi ? VisibilityRange{} : out;
 }
 
+// The parallelogram of lookup points p + K w(p) n through matrix m (w affine in a, b), with its
+// margin taken at the corner that needs the widest.
+// False where w <= 0 somewhere on q (behind the light's plane: no bound here).
+bool offset_parallelogram(const mat4& m, const SnapParallelogram& q, const vec3& n, const VctSettings& s,
+                          SnapParallelogram& out) {
+  const float k = normal_offset_per_w(m, n, s);
+  const Linear w = clip_row(m, q, 3);
+  for (const Point& p : unit_square())
+    if (!(w.at(p) > 0.0)) return false;
+  out = q;
+  out.centre = q.centre + (k * float(w.c)) * n;
+  out.du = q.du + (k * float(w.a)) * n;
+  out.dv = q.dv + (k * float(w.b)) * n;
+  for (const vec3& p : points_of(q)) out.margin = std::max(out.margin, q.margin + lookup_point_margin(m, p, n, s));
+  // The parallelogram's own float corners against the lookup's float point: one more rounding.
+  out.margin += 2.0 * kU * double(glm::length(out.du) + glm::length(out.dv) + glm::length(out.centre));
+  return true;
+}
+
+/// The cube faces some point of q may select (range_cube's regions, before the lookup).
+std::vector<int> faces_over(const SnapParallelogram& q, const vec3& light) {
+  const CubeDirections dirs = cube_directions(q, light);
+  std::vector<int> out;
+  for (int home = 0; home < 6; ++home)
+    if (!face_region(dirs, home).empty()) out.push_back(home);
+  return out;
+}
+
 }  // namespace
+
+VisibilityRange snap_surface_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
+                                              const vec3& n, const VctSettings& settings) {
+  if (settings.shadow_normal_offset == 0.0f) return snap_visibility_range(map, light, q, settings);
+  if (light.is_point()) {
+    if (!map.is_cube()) return {};
+    VisibilityRange out{1.0f, 0.0f};
+    SnapParallelogram lookup;
+    for (int f : faces_over(q, light.position)) {
+      if (!offset_parallelogram(map.cube_view_proj[size_t(f)], q, n, settings, lookup)) return {0.0f, 1.0f};
+      const VisibilityRange one = range_cube(map, light.position, lookup, settings);
+      out.lo = std::min(out.lo, one.lo), out.hi = std::max(out.hi, one.hi);
+    }
+    return out.lo > out.hi ? VisibilityRange{} : out;
+  }
+  if (map.depth.empty()) return {};
+  SnapParallelogram lookup;
+  if (!offset_parallelogram(map.view_proj, q, n, settings, lookup)) return {0.0f, 1.0f};
+  return range_2d(map, lookup, settings);
+}
 
 VisibilityRange snap_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
                                       const VctSettings& settings) {

@@ -27,6 +27,9 @@ namespace vct {
 struct SnapParallelogram {
   vec3 centre{0.0f};
   vec3 du{0.0f}, dv{0.0f};
+  /// How far (per world axis) a correct GL's point may lie from the parallelogram's (a
+  /// normal-offset lookup point's float arithmetic, shadow_ties.h's lookup_point_margin).
+  double margin = 0.0;
 };
 
 /// [lo, hi] of one light's PCF visibility over every point of `q`: lo counts a tap lit only where
@@ -35,5 +38,12 @@ struct SnapParallelogram {
 /// weights' 8-bit freedom is a term of its own (freedoms/fragment_slack.cpp, linear_compare_slack).
 VisibilityRange snap_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
                                       const VctSettings& settings);
+
+/// The same for surface points with unit normal n, each looked up at its normal-offset point
+/// (stages/shadow_map.h): p + K w(p) n is affine in (a, b) like p, since w is, so the lookup points
+/// form a parallelogram too (through each cube face the points may select for a point light),
+/// with lookup_point_margin as its margin.
+VisibilityRange snap_surface_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
+                                              const vec3& n, const VctSettings& settings);
 
 }  // namespace vct

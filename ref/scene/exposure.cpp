@@ -3,20 +3,42 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shared/vct_shared.h"
+
 namespace vct {
 
 namespace {
 
 double luminance(const vec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
 
+// The share of a spot's axis intensity the meter counts: its cone at the meter (KHR_lights_punctual's
+// attenuation toward the centre), but never less than its flux spread over the whole sphere.
+double spot_meter_share(const Light& l, const vec3& centre) {
+  const vec3 to_centre = centre - l.position;
+  const float len = glm::length(to_centre);
+  const double at_meter =
+      len > 0.0f ? double(sh::spot_cone_gltf(glm::dot(to_centre / len, glm::normalize(l.direction)),
+                                              std::cos(l.inner_cone_angle), std::cos(l.outer_cone_angle)))
+                 : 1.0;
+  return std::max(at_meter, spot_flux_share(l));
+}
+
 double light_illuminance(const Light& l, const vec3& centre, double min_distance) {
-  const double flux = luminance(l.color) * double(l.intensity);
+  const double flux = luminance(l.color) * double(l.intensity) * (l.is_spot() ? spot_meter_share(l, centre) : 1.0);
   if (l.is_directional()) return flux;
   const double d = std::max(double(glm::length(l.position - centre)), min_distance);
   return flux / (d * d);
 }
 
 }  // namespace
+
+double spot_flux_share(const Light& l) {
+  const double ci = std::cos(double(l.inner_cone_angle)), co = std::cos(double(l.outer_cone_angle));
+  // 2 pi int f(c) dc over the cone: 1 from cos_inner to 1, the squared ramp t^2 (t linear in c) over
+  // [cos_outer, cos_inner] integrates to (cos_inner - cos_outer) / 3; a hard spot has no ramp.
+  const double solid_angle = 2.0 * M_PI * ((1.0 - ci) + std::max(ci - co, 0.0) / 3.0);
+  return solid_angle / (4.0 * M_PI);
+}
 
 double key_illuminance(const Scene& scene) {
   const vec3 centre = 0.5f * (scene.bounds.lo + scene.bounds.hi);

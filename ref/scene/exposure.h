@@ -21,10 +21,16 @@ inline constexpr double kIncidentMeterC = 250.0;
 /// Auto exposure keeps scale 1 while the meter's scale is within this many stops of 1 (docs/scenes.md).
 inline constexpr double kAutoExposureDeadBandStops = 4.0;
 
+/// A spot's flux as a share of an isotropic point light's of the same intensity: the solid angle of
+/// its glTF cone (KHR_lights_punctual's squared ramp between the outer and inner cones) over 4 pi.
+/// 20 degree hard spot: (1 - cos 20 deg) / 2 = 0.0302.
+double spot_flux_share(const Light& light);
+
 /// Illuminance (lux) a light meter at the centre of the scene's bounds reads from its sources: the sum
 /// over punctual lights of the Rec. 709 luminance of colour x intensity, over d^2 for point and spot
-/// lights (d at least 5 % of the bounds' diagonal, the spot's cone ignored: spots are aimed at the
-/// subject), plus pi x the brightest material emission's luminance (an emitter seen over a hemisphere).
+/// lights (d at least 5 % of the bounds' diagonal; a spot as the isotropic source of its flux,
+/// intensity x spot_flux_share: it lights a part of the scene, and aimed anywhere it still counts),
+/// plus pi x the brightest material emission's luminance (an emitter seen over a hemisphere).
 double key_illuminance(const Scene& scene);
 
 /// Scale for a camera at `ev100` (saturation-based, Lagarde & de Rousiers 2014): 1 / (1.2 * 2^EV100).

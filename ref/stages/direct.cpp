@@ -12,8 +12,10 @@ namespace vct {
 
 namespace {
 
-float visibility(const Scene& scene, const std::vector<ShadowMap>& maps, size_t i, const VctSettings& s, const vec3& p) {
-  return i < maps.size() ? light_visibility(maps[i], scene.lights[i], p, s) : 1.0f;
+// The PCF visibility at the surface point's normal-offset lookup point (stages/shadow_map.h).
+float visibility(const Scene& scene, const std::vector<ShadowMap>& maps, size_t i, const VctSettings& s, const vec3& p,
+                 const vec3& n) {
+  return i < maps.size() ? surface_visibility(maps[i], scene.lights[i], p, n, s) : 1.0f;
 }
 
 }  // namespace
@@ -38,7 +40,7 @@ vec3 direct_radiance(const Scene& scene, const std::vector<ShadowMap>& maps, con
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const vec3 c = unshadowed_light(scene, i, settings, p, n, view_dir, pbr);
     // ((brdf * E) * n.l) * visibility, the product's order as before (and as direct.frag).
-    if (c != vec3(0.0f)) sum += c * visibility(scene, maps, i, settings, p);
+    if (c != vec3(0.0f)) sum += c * visibility(scene, maps, i, settings, p, n);
   }
   return sum;
 }
@@ -51,7 +53,7 @@ vec3 diffuse_outgoing_radiance(const Scene& scene, const std::vector<ShadowMap>&
     const vec3 l = ls.l, e = ls.irradiance;
     const float n_dot_l = glm::dot(n, l);
     if (n_dot_l <= 0.0f || e == vec3(0.0f)) continue;
-    irradiance += e * n_dot_l * visibility(scene, maps, i, settings, p);
+    irradiance += e * n_dot_l * visibility(scene, maps, i, settings, p, n);
   }
   return albedo * irradiance * kInvPi;
 }

@@ -87,7 +87,7 @@ json lights_json(const Scene& scene, const FrameResult& f, const VctSettings& s,
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     const LightSample ls = sample_light(light, s.light_model, p);
-    const float pcf = i < f.shadow_maps.size() ? light_visibility(f.shadow_maps[i], light, p, s) : 1.0f;
+    const float pcf = i < f.shadow_maps.size() ? surface_visibility(f.shadow_maps[i], light, p, n, s) : 1.0f;
     arr.push_back({{"light", i},
                    {"name", light.name},
                    {"kind", light_kind_name(light.kind)},

@@ -256,6 +256,43 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
   return sum / float(taps.size());
 }
 
+vec2 pcf_reach(const VctSettings& settings) {
+  vec2 reach(0.0f);
+  for (const vec2& t : tap_positions(0.0f, 0.0f, settings)) reach = glm::max(reach, glm::abs(t));
+  return reach + (settings.shadow_compare == ShadowCompare::Nearest ? 0.5f : 1.0f);
+}
+
+const mat4* offset_matrix(const ShadowMap& map, const Light& light, const vec3& p) {
+  if (light.is_point()) {
+    const vec3 r = p - light.position;
+    return map.is_cube() && r != vec3(0.0f) ? &map.cube_view_proj[size_t(cube_face(r))] : nullptr;
+  }
+  return map.depth.empty() ? nullptr : &map.view_proj;
+}
+
+float normal_offset_per_w(const mat4& m, const vec3& n, const VctSettings& settings) {
+  const vec3 r0(m[0][0], m[1][0], m[2][0]), r1(m[0][1], m[1][1], m[2][1]);
+  const vec2 reach = pcf_reach(settings);
+  const float per_texel = 2.0f / float(settings.shadow_map_size);
+  return settings.shadow_normal_offset * per_texel *
+         (reach.x * std::abs(glm::dot(n, r0)) / glm::dot(r0, r0) + reach.y * std::abs(glm::dot(n, r1)) / glm::dot(r1, r1));
+}
+
+vec3 shadow_lookup_point(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
+                         const VctSettings& settings) {
+  if (settings.shadow_normal_offset == 0.0f) return p;
+  const mat4* m = offset_matrix(map, light, p);
+  if (!m) return p;
+  const float w = ((*m) * vec4(p, 1.0f)).w;
+  if (!(w > 0.0f)) return p;
+  return p + (normal_offset_per_w(*m, n, settings) * w) * n;
+}
+
+float surface_visibility(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
+                         const VctSettings& settings) {
+  return light_visibility(map, light, shadow_lookup_point(map, light, p, n, settings), settings);
+}
+
 float light_visibility(const ShadowMap& map, const Light& light, const vec3& world_pos, const VctSettings& settings) {
   if (light.is_point()) return map.is_cube() ? cube_shadow_visibility(map, light.position, world_pos, settings) : 1.0f;
   return map.depth.empty() ? 1.0f : shadow_visibility(map, world_pos, settings);

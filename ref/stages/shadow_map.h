@@ -84,4 +84,32 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
 /// else the 2D map's.
 float light_visibility(const ShadowMap& map, const Light& light, const vec3& world_pos, const VctSettings& settings);
 
+/// Normal-offset bias (docs/pipeline.md, "Normal offset"). How far, in texels, the PCF footprint
+/// reaches from the lookup coordinate along each axis: the largest |tap offset| + 1/2 (nearest
+/// reads the texel the tap falls in) or + 1 (linear blends the four around it). 3x3 nearest: 1.5.
+vec2 pcf_reach(const VctSettings& settings);
+
+/// The matrix whose texels the normal offset of a surface point at `p` is measured in: the 2D
+/// map's, or the cube face the direction p - light selects (nullptr: the light has no map).
+const mat4* offset_matrix(const ShadowMap& map, const Light& light, const vec3& p);
+
+/// The normal offset per unit of clip w through world -> clip matrix m for unit normal n:
+/// K = shadow_normal_offset x (2 / S) x (R.x |n.r0| / |r0|^2 + R.y |n.r1| / |r1|^2), r0 and r1 the
+/// xyz of the matrix's rows 0 and 1, R = pcf_reach, S = shadow_map_size. The lookup point is
+/// p + K w n: for a plane through p with normal n, every texel the footprint reads then stores
+/// a depth at or behind the lookup point's (docs/pipeline.md derives it); GL's lights.glsl
+/// repeats this arithmetic.
+float normal_offset_per_w(const mat4& m, const vec3& n, const VctSettings& settings);
+
+/// Where a surface point p with unit normal n (facing the camera) is looked up in `light`'s map:
+/// p + K w n (above) with w = the clip w of p through offset_matrix; p itself when the matrix is
+/// missing, w <= 0 or the offset is 0.
+vec3 shadow_lookup_point(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
+                         const VctSettings& settings);
+
+/// light_visibility at the surface point's lookup point: what direct light and light injection
+/// use (ref and GL alike).
+float surface_visibility(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
+                         const VctSettings& settings);
+
 }  // namespace vct

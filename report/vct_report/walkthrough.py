@@ -6,7 +6,8 @@ STAGES = [
     ("shadow", "Shadow map", "Each light renders the scene's depth from its own point of view into D32F depth maps: "
      "a spot one perspective square map, a directional light one orthographic map fitted to the voxel volume, "
      "a point light a cube of six 90-degree faces (shadow_map_cube.<light x 6 + face>). Later, a surface point is lit if its depth seen from the light is not "
-     "behind the stored depth plus a constant bias; PCF averages a k x k block of such tests for soft edges.",
+     "behind the stored depth plus a constant bias, looked up a little off the surface along its normal (the normal offset, "
+     "which keeps a surface from shadowing itself); PCF averages a k x k block of such tests for soft edges.",
      ["shadow_map_size", "pcf_kernel", "shadow_bias"], "shadow_maps"),
     ("gbuffer", "G-buffer", "The camera pass rasterizes the scene once and stores, per pixel centre, everything shading needs: "
      "world position, shading normal (after normal mapping), base colour, metallic/roughness/specular, "
@@ -15,7 +16,7 @@ STAGES = [
     ("direct", "Direct light", "Cook-Torrance (GGX, Schlick, Smith) from every light, with the shadow-map visibility (or the "
      "cone-traced visibility when soft shadows are on). The light model decides the falloff: glTF "
      "(candela, inverse square; a directional light's lux has no falloff) or the seed's smoothstep x 1/(1+d).",
-     ["light_model", "pcf_kernel", "shadow_bias", "soft_shadows"], "direct"),
+     ["light_model", "pcf_kernel", "shadow_bias", "shadow_normal_offset", "soft_shadows"], "direct"),
     ("voxelize", "Voxelization", "Every triangle is projected along its dominant axis and rasterized into an N^3 grid; each covered "
      "sample becomes a fragment in one voxel. The CPU reference also computes the exact conservative set "
      "(triangle-box overlap) so that holes of the sample rule can be told apart from GPU bugs.",

@@ -27,9 +27,10 @@ json render(const std::string& mode, const std::string& size, test::VctOutput& r
 TEST(BlenderExportCli, StandardIsAutoExposedAndUnitlessIsNot) {
   test::VctOutput r;
   const json standard = render("standard", "--height 18", r);
-  // Meter 8150 lx at the centre: EV100 11.67, scale 2.08 / 8150 = 2^-11.93 -> -12 stops.
-  EXPECT_EQ(standard["exposure"]["stops"], -12);
-  EXPECT_EQ(standard["exposure"]["scale"].get<double>(), std::ldexp(1.0, -12));
+  // Meter 2100 lx at the centre (the hard spot aimed away from it counts by its flux share):
+  // EV100 9.71, scale 2.08 / 2100 = 2^-9.97 -> -10 stops.
+  EXPECT_EQ(standard["exposure"]["stops"], -10);
+  EXPECT_EQ(standard["exposure"]["scale"].get<double>(), std::ldexp(1.0, -10));
   EXPECT_NE(r.err.find("vct: exposure: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("material 4 'Glass': KHR_materials_transmission ignored, rendered opaque with its base colour"),
             std::string::npos);
@@ -38,6 +39,29 @@ TEST(BlenderExportCli, StandardIsAutoExposedAndUnitlessIsNot) {
   EXPECT_EQ(unitless["exposure"]["stops"], 0);  // 683x less light: inside the dead band
   EXPECT_EQ(unitless["exposure"]["scale"], 1.0);
   EXPECT_EQ(r.err.find("vct: exposure: "), std::string::npos) << r.err;
+}
+
+// `validate --sweep exposure=...` re-exposes the scene per value (docs/scenes.md, "Light units and
+// exposure"): each row records its own exposure, and the path tracer's AOVs are scaled with it, so
+// the direct light's relative bias is the same at -10 stops and unexposed.
+TEST(BlenderExportCli, AnExposureSweepReExposesEachRow) {
+  const auto out = test::fresh_dir("blender_sweep");
+  const test::VctOutput r = test::run_vct_captured("validate " + blender("standard") +
+                                                   " --height 18 --grid 16 --spp 2 --no-report --set shadow_map_size=128"
+                                                   " --sweep exposure=auto,none --out '" + out.string() + "'");
+  ASSERT_NE(r.exit_code, 2) << r.err;
+  const json run = json::parse(test::slurp(out / "run.json"));
+  const json& rows = run["sweeps"][0]["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["exposure"]["scale"].get<double>(), std::ldexp(1.0, -10));
+  EXPECT_EQ(rows[1]["exposure"]["mode"], "none");
+  EXPECT_EQ(rows[1]["exposure"]["scale"].get<double>(), 1.0);
+  for (const json& b : rows[1]["bias"])
+    if (b["component"] == "direct") {
+      for (const json& a : rows[0]["bias"])
+        if (a["component"] == "direct")
+          EXPECT_NEAR(b["relative_bias"].get<double>(), a["relative_bias"].get<double>(), 1e-3);
+    }
 }
 
 TEST(BlenderExportCli, ForcingBothSizesWarnsThatTheFramingChanges) {

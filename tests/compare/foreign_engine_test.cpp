@@ -192,7 +192,7 @@ namespace {
 // voxelcone.frag shadow()) give off-centre offsets i/n*2-1 = {-1,-1/3,+1/3} (n = 3) and
 // {-1,-1/2,0,+1/2} (n = 4), added before the projective divide so they scale with 1/w. Its frame is the reference rendered with those settings; undeclared
 // (judged by a reference that runs the oracle's 3x3 nearest PCF) it fails where the taps act --
-// image.direct first, and light injection (voxel.radiance) -- with the shadow map itself passing; declared (its manifest
+// light injection (voxel.radiance), with image.direct's shadow edges beyond the bound -- with the shadow map itself passing; declared (its manifest
 // "settings" carry shadow_compare and pcf_taps, so the reference reproduces them) it passes; and a
 // real fault under the declared PCF still fails at voxel.radiance.
 constexpr const char* kGidemoTaps =
@@ -233,12 +233,14 @@ StageSet oracle_default_reference() {
 }
 
 TEST(ForeignEngine, EnginePcfUndeclaredFailsWhereTheTapsAct) {
-  // The map itself is the oracle's; the first stage that looks up through it (image.direct, in
-  // pipeline order) fails, and so does light injection (voxel.radiance).
+  // The map itself is the oracle's; light injection (voxel.radiance) fails, and image.direct shows
+  // the taps at the shadow's edges. Since the normal offset (docs/pipeline.md) neither side has
+  // acne, so the two kernels differ only at edges: on image.direct 34 of 1 638 edge pixels, under
+  // the 2.5 % edge share (it failed first while the constant bias alone left acne to differ on).
   const Report r = compare_stage_sets(oracle_default_reference(), pcf_engine().engine);
   EXPECT_EQ(test::find(r, "shadow_map.0").verdict, Verdict::Pass);
-  EXPECT_EQ(r.first_failing(), "image.direct") << test::find(r, "image.direct").note;
-  EXPECT_EQ(test::find(r, "voxel.radiance").verdict, Verdict::Fail) << test::find(r, "voxel.radiance").note;
+  EXPECT_EQ(r.first_failing(), "voxel.radiance") << test::find(r, "image.direct").note;
+  EXPECT_GT(test::find(r, "image.direct").out_of_bound, 20u) << test::find(r, "image.direct").note;
 }
 
 TEST(ForeignEngine, EnginePcfDeclaredPasses) {

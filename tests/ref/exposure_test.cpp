@@ -40,6 +40,20 @@ TEST(Exposure, MeterReadsCandelaOverDistanceSquared) {
   EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela / 4.0, 1e-3);
 }
 
+TEST(Exposure, MeterCountsASpotByItsConeAtTheCentreButAtLeastItsFlux) {
+  // A hard 20 degree spot 2 m above the centre: aimed at it, E = N / 4 (the cone is 1 there);
+  // aimed sideways (the centre outside its cone), its flux over the sphere, N (1 - cos 20 deg) / 2 / 4.
+  Scene s = lamp_over_floor(kBlenderStandardCandela, 2.0f);
+  Light& l = s.lights[0];
+  l.kind = LightKind::Spot;
+  l.inner_cone_angle = l.outer_cone_angle = 20.0f * kPi / 180.0f;
+  l.direction = vec3(0.0f, -1.0f, 0.0f);
+  EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela / 4.0, 1e-3);
+  l.direction = vec3(1.0f, 0.0f, 0.0f);
+  EXPECT_NEAR(spot_flux_share(l), (1.0 - std::cos(20.0 * M_PI / 180.0)) / 2.0, 1e-6);
+  EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela * (1.0 - std::cos(20.0 * M_PI / 180.0)) / 2.0 / 4.0, 1e-2);
+}
+
 TEST(Exposure, AutoPreExposesAPhotometricExportByWholeStops) {
   Scene s = lamp_over_floor(kBlenderStandardCandela, 2.0f);
   const ExposureApplied e = resolve_exposure(s, ExposureMode::Auto, 0.0f);

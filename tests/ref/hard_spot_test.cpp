@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "freedoms/direct_ties.h"
+#include "freedoms/fragment_slack.h"
 #include "freedoms/gbuffer_freedoms.h"
 #include "shared/vct_shared.h"
 #include "stage_test_scene.h"
 #include "stages/direct.h"
 #include "stages/gbuffer.h"
 #include "stages/shadow_map.h"
+#include "stages/voxelize.h"
 
 namespace vct {
 namespace {
@@ -95,6 +97,27 @@ TEST(HardSpot, TheEdgePixelMayBeLitOrDarkAndOnlyIt) {
   EXPECT_GT(range.at(4, 4, 0), 0.0f);
   EXPECT_EQ(range.at(5, 5, 0), 0.0f);                            // outside: dark only
   EXPECT_EQ(range.at(5, 5, 1), 0.0f);
+}
+
+// The voxel stages' tie (freedoms/fragment_slack.h, hard_spot_slack): a fragment on the edge may
+// carry the lit side's diffuse light on GL, so its slack term is that light; a fragment inside or
+// outside the cone has none.
+TEST(HardSpot, AVoxelFragmentOnTheEdgeMayBeLitOrDark) {
+  const Scene s = hard_spot_floor();
+  VctSettings st;
+  st.grid = 16;
+  const Voxelization vox = voxelize(s, st);
+  ASSERT_FALSE(vox.fragments.empty());
+  VoxelFragment f = vox.fragments[0];
+  const float r = std::tan(kOuter);
+  f.position = vec3(r, 0.0f, 0.0f);  // on the edge (radius tan(outer) at 1 m)
+  const float d = std::sqrt(1.0f + r * r);
+  const float lit_edge = 0.5f / kPi * 3.0f * (1.0f / d) / (d * d);  // albedo / pi x I cos / d^2
+  EXPECT_NEAR(hard_spot_slack(s, st.grid, f, st), lit_edge, 1e-4f * lit_edge);
+  f.position = vec3(0.3f * r, 0.0f, 0.0f);
+  EXPECT_EQ(hard_spot_slack(s, st.grid, f, st), 0.0f);
+  f.position = vec3(1.5f * r, 0.0f, 0.0f);
+  EXPECT_EQ(hard_spot_slack(s, st.grid, f, st), 0.0f);
 }
 
 }  // namespace
