@@ -45,6 +45,7 @@ enum class Rule : uint8_t {
   ConservativeHole,
   RadianceWithinBound,
   ShadingShare,
+  EnergyWithinBound,
   OwnInputs,
   MarchEnd,
   kCount

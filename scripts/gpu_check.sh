@@ -114,7 +114,9 @@ render() {
     case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero) continue ;; esac  # need their scenes: below
     # needs soft shadows, which the runner does not switch on: tests/gl/gl_faults_test.cpp judges it
     [ "$fault" = soft_shadow_direction ] && continue
-    one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa --gl-fault "$fault"
+    local bounces=()
+    [ "$fault" = bounce_reads_current_frame ] && bounces=(--bounces 3)  # lives in the bounce frames
+    one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa "${bounces[@]}" --gl-fault "$fault"
   done
   one "fault.racy_average.cas" "$box" --reduction cas --max-msaa --gl-fault racy_average
   one "fault.lost_update.cas" "$box" --reduction cas --max-msaa --gl-fault lost_update
@@ -136,6 +138,7 @@ render() {
       esac
       local extra=()
       [ "$fault" = alpha_unclamped ] && extra=(--aniso)
+      [ "$fault" = bounce_reads_current_frame ] && extra=(--bounces 3)
       one "fault.$fault.$stem" "$scene" --reduction fixed --max-msaa "${extra[@]}" --gl-fault "$fault"
     done
   done
