@@ -111,7 +111,7 @@ render() {
   local fault
   for fault in $("$runner" --list-faults); do  # the table of gl/gl_faults.h
     if [ "$fault" = alpha_unclamped ]; then continue; fi  # needs aniso mips: below
-    case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero) continue ;; esac  # need their scenes: below
+    case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero|srgb_decode_step) continue ;; esac  # need their scenes: below
     # needs soft shadows, which the runner does not switch on: tests/gl/gl_faults_test.cpp judges it
     [ "$fault" = soft_shadow_direction ] && continue
     local bounces=()
@@ -126,6 +126,8 @@ render() {
   done
   one "fault.texture_level_zero.fixed" "$here/scenes/tiled_floor.gltf" --reduction fixed --max-msaa \
     --gl-fault texture_level_zero
+  one "fault.srgb_decode_step.fixed" "$here/scenes/regressions/seed-9-small/scene.gltf" --reduction fixed --max-msaa \
+    --gl-fault srgb_decode_step
   local stem scene
   for stem in ${fault_scenes//,/ }; do
     scene="$here/scenes/$stem.gltf"
@@ -134,7 +136,7 @@ render() {
       [ "$fault" = soft_shadow_direction ] && continue  # needs soft shadows (above)
       case "$fault" in
         alpha_shadow|alpha_voxel) grep -q '"MASK"' "$scene" || continue ;;
-        texture_level_zero) grep -q '"textures"' "$scene" || continue ;;
+        texture_level_zero|srgb_decode_step) grep -q '"textures"' "$scene" || continue ;;
       esac
       local extra=()
       [ "$fault" = alpha_unclamped ] && extra=(--aniso)

@@ -9,7 +9,8 @@
 //     it may reach (stages/snap_visibility.h), not only at its corners;
 //   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
 //   - sub-texel weights: filter weights with 8 fractional bits (stages/texture_slack.h);
-//   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off.
+//   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off, and
+//     an sRGB texel's decode half a step of its encoding (core/precision.h, srgb-decode).
 #pragma once
 
 #include <vector>
