@@ -190,15 +190,11 @@ void write_explain(RunDir& run, const Scene& scene, const FrameResult& frame, co
   write_png_linear(run.file(stem + ".png"), e.picture, 0.0f, 1.0f);
 }
 
-// What the shared dump writer has no slot for: each diffuse cone's image and the multibounce
-// frames before the last (the last one is the dumped base level).
-void write_ref_extras(RunDir& run, const FrameResult& frame, const Scene& scene, const VctSettings& s) {
+// What the shared dump writer has no slot for: each diffuse cone's image (the multibounce frames
+// before the last are the registry's voxel.frame.<frame>, dumped as multibounce_frame_<frame>).
+void write_ref_extras(RunDir& run, const FrameResult& frame) {
   for (size_t i = 0; i < frame.images.diffuse_cones.size(); ++i) {
     run.write_color("diffuse_cone_" + std::to_string(i), frame.images.diffuse_cones[i]);
-  }
-  const float spacing = scene.volume.size / float(s.grid);
-  for (size_t k = 0; k < frame.multibounce_frames.size(); ++k) {
-    run.write_volume("multibounce_frame_" + std::to_string(k + 1), frame.multibounce_frames[k], spacing);
   }
 }
 
@@ -236,7 +232,7 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   run.write_color("final", frame.images.final_image);
   if (flags.dump) {
     write_frame_dumps(run, frame, scene);
-    write_ref_extras(run, frame, scene, settings.vct);
+    write_ref_extras(run, frame);
     cmp::write_dump_manifest(run.path(), frame, settings.vct);  // a dumped run is a stage set too
   }
   if (flags.stage_set) {

@@ -76,6 +76,11 @@ constexpr std::array<AdmissionRow, kRuleCount> kRows = {{
     {Rule::ShadingShare, "shading-share", F::Radiance, K::CountedShare, "",
      "any value: shadow-test ties the slack does not see (hardware conservative modes only on the test's maps)",
      kShadingTieShare.denominator, "Voxel radiance on the test's own shadow maps", {255, 105, 180}},
+    {Rule::EnergyWithinBound, "energy-within-bound", F::Radiance, K::Bound,
+     "each frame's voxel.radiance judgement on the test's own inputs (voxel.frame.<frame>, the last frame's voxel.radiance)",
+     "per frame, the sum over the voxels of each one's admitted width (its actual difference where a share or the "
+     "occupancy stage admitted it) plus the double sums' rounding",
+     "", "Every multibounce frame is judged", {0, 0, 0}},
     {Rule::OwnInputs, "own-inputs", F::Cones, K::Rejudge,
      "the test's G-buffer, direct light, mips, shadow maps and bounce input (with a scene)",
      "the stage's verdict on the reference re-run on the test's own inputs replaces the end-to-end one", "",
@@ -99,7 +104,8 @@ const std::array<AdmissionRow, kRuleCount>& admission_table() { return kRows; }
 const AdmissionRow& admission_row(Rule r) { return kRows[size_t(r)]; }
 
 bool within_bound_rule(Rule r) {
-  return r == Rule::WithinBound || r == Rule::VolumeWithinBound || r == Rule::RadianceWithinBound;
+  return r == Rule::WithinBound || r == Rule::VolumeWithinBound || r == Rule::RadianceWithinBound ||
+         r == Rule::EnergyWithinBound;
 }
 
 std::string to_string(Family f) {

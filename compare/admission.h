@@ -46,6 +46,7 @@ enum class Rule : uint8_t {
   ConservativeHole,
   RadianceWithinBound,
   ShadingShare,
+  EnergyWithinBound,
   OwnInputs,
   MarchEnd,
   kCount

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compare/bounce_frames.h"
 #include "compare/tie_range.h"
 #include "compare/tolerance.h"
+#include "freedoms/coverage_ties.h"
 #include "freedoms/direct_ties.h"
 #include "freedoms/voxel_freedoms.h"
 #include "stages/cube_map.h"
@@ -87,26 +89,50 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
   return r;
 }
 
+bool has_own_shadow_maps(const Scene& scene, const FrameResult& test, const VctSettings& s) {
+  return !scene.lights.empty() && !test_maps_with_matrices(scene, test, s).empty();
+}
+
+VoxelInjection::VoxelInjection(const Scene& scene, const FrameResult& test, const VctSettings& s)
+    : scene_(scene), s_(s) {
+  maps_ = scene.lights.empty() ? std::vector<ShadowMap>() : test_maps_with_matrices(scene, test, s);
+  if (maps_.empty()) maps_ = render_shadow_maps(scene, s);  // the reference's own, as its frame used them
+  // The reference's own voxelization (stages/pipeline.cpp), with its coverage ties.
+  const std::vector<vec2> positions = test.facts.sample_positions.empty()
+                                          ? standard_sample_positions(s.msaa_samples)
+                                          : test.facts.sample_positions;
+  vox_ = s.voxelizer == Voxelizer::Conservative ? voxelize_conservative(scene, s.grid)
+                                                 : voxelize_gpu_rule(scene, s.grid, positions);
+  add_coverage_ties(scene, vox_);
+}
+
+VoxelGrid VoxelInjection::frame(const Volume* bounce_input) const {
+  if (!bounce_input) return judged_voxels(scene_, vox_, maps_, s_);
+  const VoxelMips previous = build_mips(*bounce_input, s_.anisotropic);
+  const BounceLight bounce = make_bounce_light(scene_, previous, s_);
+  return judged_voxels(scene_, vox_, maps_, s_, &bounce);
+}
+
 std::optional<VoxelGrid> reference_voxels_on_test_inputs(const Scene& scene, const FrameResult& test,
                                                          const VctSettings& s) {
   const bool bounce_input = s.bounces >= 2 && test.bounce_input.voxel_count() > 0 && test.bounce_input.nx == s.grid;
   // The running mean's interval is computed beside the frame (freedoms/reference_freedoms.cpp), not
   // re-derived here.
   if (s.reduction == Reduction::RunningMeanHalf) return std::nullopt;
-  std::vector<ShadowMap> maps = scene.lights.empty() ? std::vector<ShadowMap>() : test_maps_with_matrices(scene, test, s);
-  const bool own_maps = !maps.empty();
-  if (!bounce_input && !own_maps) return std::nullopt;
-  if (!own_maps) maps = render_shadow_maps(scene, s);  // the reference's own, as its frame used them
-  // The reference's own voxelization (stages/pipeline.cpp).
-  const std::vector<vec2> positions = test.facts.sample_positions.empty()
-                                          ? standard_sample_positions(s.msaa_samples)
-                                          : test.facts.sample_positions;
-  Voxelization vox = s.voxelizer == Voxelizer::Conservative ? voxelize_conservative(scene, s.grid)
-                                                             : voxelize_gpu_rule(scene, s.grid, positions);
-  if (!bounce_input) return judged_voxels(scene, vox, maps, s);
-  const VoxelMips previous = build_mips(test.bounce_input, s.anisotropic);
-  const BounceLight bounce = make_bounce_light(scene, previous, s);
-  return judged_voxels(scene, vox, maps, s, &bounce);
+  if (!bounce_input && !has_own_shadow_maps(scene, test, s)) return std::nullopt;
+  return VoxelInjection(scene, test, s).frame(bounce_input ? &test.bounce_input : nullptr);
+}
+
+JudgeContext voxels_on_own_inputs_context(const VctSettings& s) {
+  // On the test's own maps no shadow-map tie is left to share. The coverage ties cover the
+  // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
+  // by what its driver reports, which only the occupancy judge reads, so those modes keep the
+  // share (docs/compare.md, "Voxel shading slack").
+  JudgeContext own_maps;
+  const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
+                                     s.conservative_raster == ConservativeRaster::Intel;
+  if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
+  return own_maps;
 }
 
 namespace {
@@ -278,15 +304,7 @@ void judge_radiance_on_test_inputs(Report& end_to_end, const Scene& scene, const
     FrameResult r = test;
     r.backend = "ref-on-" + test.backend + "-voxel-inputs";
     r.voxels = std::move(*grid);
-    // On the test's own maps no shadow-map tie is left to share. The coverage ties cover the
-    // sample rule and the gs mode's box arithmetic; a hardware conservative raster over-estimates
-    // by what its driver reports, which only the occupancy judge reads, so those modes keep the
-    // share (docs/compare.md, "Voxel shading slack").
-    JudgeContext own_maps;
-    const bool hardware_conservative = s.conservative_raster == ConservativeRaster::Nv ||
-                                       s.conservative_raster == ConservativeRaster::Intel;
-    if (!hardware_conservative) own_maps.shading_tie_fraction = 0.0;
-    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, own_maps);
+    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, voxels_on_own_inputs_context(s));
     const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
     for (StageVerdict& e : end_to_end.stages)
       if (v && e.stage == stage_names::kVoxelRadiance && v->verdict != Verdict::Missing)
@@ -331,6 +349,7 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
       if (v.stage == stage_names::kImageFinal) v.verdict = Verdict::Missing;  // end-to-end verdict stays
   apply_isolated_verdicts(end_to_end, isolated, s.soft_shadows);
   judge_radiance_on_test_inputs(end_to_end, scene, test, s, test_set, opt);
+  judge_bounce_frames(end_to_end, scene, test, s, test_set, opt);  // reads voxel.radiance's verdict
 }
 
 }  // namespace vct::cmp

@@ -17,6 +17,7 @@
 #include "core/settings.h"
 #include "scene/scene.h"
 #include "stages/stage_types.h"
+#include "stages/voxelize.h"
 
 namespace vct::cmp {
 
@@ -61,6 +62,30 @@ FrameResult closest_march_end(const FrameResult& plain, const FrameResult& short
 /// there is neither (no lights or no test maps, one frame), or with the running-mean reduction.
 std::optional<VoxelGrid> reference_voxels_on_test_inputs(const Scene& scene, const FrameResult& test,
                                                          const VctSettings& s);
+
+/// True when `test` holds a shadow map for every light of `scene` (none when it has no lights).
+bool has_own_shadow_maps(const Scene& scene, const FrameResult& test, const VctSettings& s);
+
+/// The reference's voxel injection on a test's inputs, one frame at a time: its own voxelization
+/// (at the test's sample positions) and the test's shadow maps (the reference's own where the test
+/// has none), built once for every frame judged (compare/bounce_frames.h).
+class VoxelInjection {
+ public:
+  VoxelInjection(const Scene& scene, const FrameResult& test, const VctSettings& s);
+  /// One frame: injected with the bounce light traced in mips built from `bounce_input` (none:
+  /// frame 1), particles added, the shading slack taken on those inputs.
+  VoxelGrid frame(const Volume* bounce_input) const;
+
+ private:
+  const Scene& scene_;
+  const VctSettings& s_;
+  std::vector<ShadowMap> maps_;
+  Voxelization vox_;
+};
+
+/// How voxels re-injected on the test's own inputs are counted: no share of shading ties, except
+/// under a hardware conservative raster (docs/compare.md, "Voxel shading slack").
+JudgeContext voxels_on_own_inputs_context(const VctSettings& s);
 
 /// True for the shading stages judged on the test's own G-buffer and shadow maps: image.emission,
 /// and image.direct unless soft shadows cone-trace it.

@@ -9,6 +9,7 @@
 #include "compare/rule_masks.h"
 #include "compare/tolerance.h"
 #include "compare/volume_judges.h"
+#include "stages/multibounce.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {
@@ -73,7 +74,10 @@ float channel0(const Volume* v, size_t i) { return v->data[i * size_t(v->channel
 // (opaque with no fragments: solid voxelization, surface thickening) reduced no fragments, so the
 // interval of the fragment orders says nothing about it (it holds 0): its value is the fill's, judged
 // by the model's bound whatever the reduction (scenes/regressions/seed-27-small).
-WorstChannel radiance_worst(const RadianceInputs& in, size_t i, bool exact_voxel, double& se, double& max_abs) {
+// `admitted_rgb` receives the sum over RGB of how far the bound lets the test's value lie from the
+// reference's (the voxel's term of the energy bound, compare/bounce_frames.h).
+WorstChannel radiance_worst(const RadianceInputs& in, size_t i, bool exact_voxel, double& se, double& max_abs,
+                            double& admitted_rgb) {
   const double n = in.fragments ? std::max(1.0, double(channel0(in.fragments, i))) : 8.0;
   const bool filled = in.fragments && channel0(in.fragments, i) == 0.0f && in.ref.data[i * size_t(in.ref.channels) +
                                                                                          size_t(in.ref.channels - 1)] > 0.0f;
@@ -84,15 +88,39 @@ WorstChannel radiance_worst(const RadianceInputs& in, size_t i, bool exact_voxel
     const double r = in.ref.data[k], t = in.test.data[i * size_t(in.test.channels) + size_t(c)];
     const double slack = in.slack && c < 3 ? double(channel0(in.slack, i)) : 0.0;
     double d = std::abs(t - r), bound = exact_voxel ? 0.0 : m.bound(r, n) + slack;
+    double admitted = bound;
     if (interval) {
       const double l = double(in.lo->data[k]) - m.abs - slack, h = double(in.hi->data[k]) + m.abs + slack;
       d = t < l ? l - t : t > h ? t - h : 0.0;
       bound = m.abs + slack;
+      admitted = std::max(h - r, r - l);
     }
+    if (c < 3) admitted_rgb += admitted;
     se += (t - r) * (t - r);
     max_abs = std::max(max_abs, std::abs(t - r));
     return ChannelDistance{d, bound, std::abs(t - r)};
   });
+}
+
+// The energy (sum of RGB over the base level, stages/multibounce.h total_energy) of both sides and
+// how far apart the admitted voxels let them lie: each within-bound voxel its admitted width, each
+// voxel a share or the occupancy stage admits its actual difference, each beyond voxel its width.
+struct EnergyTally {
+  double bound = 0.0;
+  std::vector<std::pair<size_t, double>> beyond;  // voxel, its |t - r| over RGB minus its width
+  nlohmann::json json(const RadianceInputs& in, const std::vector<Rule>& rules) const {
+    double b = bound;
+    for (const auto& [i, excess] : beyond)
+      if (rules[i] != Rule::Beyond) b += excess;
+    return {{"reference", total_energy(in.ref)}, {"test", total_energy(in.test)}, {"bound", b}};
+  }
+};
+
+double rgb_difference(const Volume& r, const Volume& t, size_t i) {
+  double d = 0.0;
+  for (int c = 0; c < std::min({3, r.channels, t.channels}); ++c)
+    d += std::abs(double(t.data[i * size_t(t.channels) + size_t(c)]) - double(r.data[i * size_t(r.channels) + size_t(c)]));
+  return d;
 }
 
 struct RadianceCounts {
@@ -161,8 +189,12 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   const size_t explained_index = explained_voxel(opt, in.ref);
   WorstChannel explained;
   double se = 0;
+  EnergyTally energy;
   for (size_t i = 0; i < ro.size(); ++i) {
-    if (ro[i] != to[i]) continue;  // occupied on one side only: the occupancy stage judges it
+    if (ro[i] != to[i]) {  // occupied on one side only: the occupancy stage judges it
+      energy.bound += rgb_difference(in.ref, in.test, i);
+      continue;
+    }
     // Transparent voxels holding light (the particles' additive light has opacity 0) are judged
     // like occupied ones: a backend that loses that light must fail here, not one stage later.
     if (!ro[i] && !carries_light(in.ref, i) && !carries_light(in.test, i)) continue;
@@ -173,11 +205,14 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     const bool count_tie = in.test_fragments && channel0(in.fragments, i) != channel0(in.test_fragments, i);
     const bool exact_voxel = in.exact && !count_tie && channel0(in.exact, i) > 0.0f;
     n.exact_checked += exact_voxel;
-    const WorstChannel w = radiance_worst(in, i, exact_voxel, se, v.max_abs);
+    double width = 0.0;
+    const WorstChannel w = radiance_worst(in, i, exact_voxel, se, v.max_abs, width);
+    energy.bound += width;
     if (i == explained_index) explained = w;
     ++v.checked;
     if (count_tie) ++n.count_ties, taint[i] = 1;
     if (w.within()) continue;
+    energy.beyond.push_back({i, std::max(0.0, rgb_difference(in.ref, in.test, i) - width)});
     ++v.out_of_bound;
     (exact_voxel ? n.exact_differ : n.shading_ties)++;  // an exact voxel has no freedom: never a tie
     rules[i] = exact_voxel ? Rule::Beyond : Rule::ShadingShare;
@@ -187,6 +222,7 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
   v.rms = std::sqrt(se / double(std::max<size_t>(1, v.checked * size_t(std::max(std::min(in.ref.channels, in.test.channels), 1)))));
   decide_radiance(v, rules, n, ctx.shading_tie_fraction);
   radiance_note(v, in, n, ctx.shading_tie_fraction);
+  v.extra["energy"] = energy.json(in, rules);
   keep_worst(offenders, opt.worst_n);
   v.worst = std::move(offenders);
   explain_voxel(v, in.ref, in.test, explained_index, rules, explained);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "compare/bounce_frames.h"
 #include "compare/tie_range.h"
 #include "compare/volume_judges.h"
 #include "stages/shadow_map.h"
@@ -108,7 +109,13 @@ Report compare_stage_sets(const StageSet& rs, const StageSet& ts, const CompareO
     const auto ref = find_stage(stage);
     const ToleranceModel model = ref ? ref->row->model : ToleranceModel::None;
     const bool r_has = rs.has(stage), t_has = ts.has(stage);
-    if (model == ToleranceModel::VoxelOccupancy || model == ToleranceModel::VoxelRadiance)
+    if (model == ToleranceModel::VoxelFrame || model == ToleranceModel::VoxelEnergy)
+      // A multibounce frame's voxels depend on its previous frame: judged only on the test's own
+      // (compare/bounce_frames.h, the judge's third pass); here it waits for that pass.
+      rep.stages.push_back(missing_stage(stage, t_has || model == ToleranceModel::VoxelEnergy
+                                                    ? kBounceFramesNeedTheScene
+                                                    : "not produced by " + ts.backend));
+    else if (model == ToleranceModel::VoxelOccupancy || model == ToleranceModel::VoxelRadiance)
       rep.stages.push_back(judge_voxel_stage(model, rs, ts, opt, ctx, taint));
     else if (model == ToleranceModel::VoxelHoles)
       rep.stages.push_back(compare_holes(rs, ts, opt));

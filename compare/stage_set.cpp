@@ -216,6 +216,8 @@ std::vector<std::string> pipeline_order(const StageSet& a, const StageSet& b) {
   namespace st = stage_names;
   if (names.count(st::kVoxelRadiance)) names.insert(st::kVoxelOccupancy);
   if (names.count(st::kVoxelConservative)) names.insert(st::kVoxelHoles);
+  for (const std::string& n : std::set<std::string>(names))
+    if (const auto ref = find_stage(n); ref && ref->row->index == StageIndex::Frame) names.insert(st::kVoxelEnergy);
   // Registry order; family members by number; then names the registry does not know, sorted.
   // With soft shadows, direct light is traced through the mips: it is judged after them (just
   // before the first cone stage), so a voxel or mip bug is blamed where it is, not on direct.

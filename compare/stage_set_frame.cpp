@@ -70,7 +70,9 @@ void fill_everything(const StageSet& set, FrameResult& f) {
   }
   for (const auto& [name, vol] : set.volumes) {
     const auto ref = find_stage(name);
-    if (ref && ref->row->volume && ref->row->index == StageIndex::None) *ref->row->volume(f, 0, true) = vol;
+    // Single volumes and the multibounce frames (mips are filled by level below).
+    if (ref && ref->row->volume && (ref->row->index == StageIndex::None || ref->row->index == StageIndex::Frame))
+      *ref->row->volume(f, ref->index, true) = vol;
   }
   for (const auto& [k, v] : set.info.items()) {
     if (k == "multibounce_energy" && all_numbers(v)) f.multibounce_energy = v.get<std::vector<double>>();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "compare/counted_shares.h"
+#include "core/precision.h"
 #include "freedoms/texture_slack.h"
 #include "stages/raster.h"
 
@@ -59,10 +60,10 @@ std::vector<ImageModel> make_image_models() {
       // arithmetic (plane equations evaluated far from the vertices lose bits), so allow 2^-14
       // (6.1e-5), 1/8 of the default constant shadow bias (5e-4): a difference inside the bound
       // cannot flip a shadow test except at exact ties.
-      {T::Depth, "d32f-depth", std::ldexp(1.0, -14), 0.0, 0.0, e, 0.0, kVertexSnapStep,
+      {T::Depth, "d32f-depth", precision(Precision::DepthInterpolation), 0.0, 0.0, e, 0.0, kVertexSnapStep,
        "float depth interpolation, subpixel snapping; coverage and fill-rule ties at edges"},
       {T::Coverage, "coverage-exact", 0.0, 0.0, 0.0, e, 0.0, 0.0, "same fill rule; ties at edges"},
-      {T::Position, "interpolated-attribute", 1e-4, std::ldexp(1.0, -12), 0.0, e, i, kVertexSnapStep,
+      {T::Position, "interpolated-attribute", 1e-4, precision(Precision::AttributeInterpolation), 0.0, e, i, kVertexSnapStep,
        "float interpolation, subpixel snapping"},
       // As the textured attributes below, but a normal map's [0,1] texels become [-1,1] (twice
       // the error) and renormalising a filtered (shortened) tangent-space normal scales it further.
@@ -74,7 +75,7 @@ std::vector<ImageModel> make_image_models() {
        "8-bit sub-texel + LOD weights"},
       // Shared BRDF in float on G-buffer inputs (which carry 2^-7) and PCF shadow tests whose
       // ties flip at shadow edges.
-      {T::Shading, "shading-float", 1e-5, std::ldexp(1.0, -6), std::ldexp(1.0, -10), e, i, 0.0,
+      {T::Shading, "shading-float", 1e-5, precision(Precision::ShadingArithmetic), std::ldexp(1.0, -10), e, i, 0.0,
        "G-buffer bound through the BRDF; shadow and silhouette ties at edges"},
       {T::ConeVisibility, "cone-visibility", std::ldexp(1.0, -5), 0.0, 0.0, e, i, 0.0,
        "8-bit weights over the cone's samples"},
@@ -164,7 +165,7 @@ VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
   using V = VoxelModelId;
   // Storage rounding of a value both sides computed alike: 1/255 for RGBA8 UNORM (rounding vs
   // truncation), two half-ulps for RGBA16F (binary16, any rounding mode), none for RGBA32F here.
-  const double unorm8 = storage == "rgba8" ? 1.0 / 255.0 : 0.0;
+  const double unorm8 = storage == "rgba8" ? precision(Precision::Unorm8) : 0.0;
   const double half_ulps = storage == "rgba16f" ? 2.0 : 0.0;
   if (reduction == "fixed_point" && ref_reduction != "fixed_point")
     // Fixed point (2^-14 quanta, rounded per fragment and at the resolve) against an exact float
@@ -185,14 +186,14 @@ VoxelModel voxel_model(const std::string& storage, const std::string& reduction,
             0.0, half_ulps, false,
             "exact reduction; each fragment's float shading and 8-bit texture filtering weights, then the storage rounding"};
   if (reduction == "cas_rgba8")
-    return {V::CasInterval, "cas-rgba8-interval", 1.0 / 255.0, 0.0, 0.0, 0.0, true, "any fragment order"};
+    return {V::CasInterval, "cas-rgba8-interval", precision(Precision::Unorm8), 0.0, 0.0, 0.0, true, "any fragment order"};
   if (reduction == "running_mean")
     // The interval (stages/running_mean.h) already holds binary16 rounding of every step in any
     // rounding mode; RGBA8 storage would round once more.
     return {V::RunningMeanInterval, "running-mean-half-interval", unorm8, 0.0, 0.0, 0.0, true,
             "non-atomic running mean: any order, any non-empty subset (lost updates), binary16 each step"};
   if (storage == "rgba8")
-    return {V::Rgba8Quantised, "rgba8-quantised", 1.0 / 255.0, 0.0, 0.0, 0.0, false, "8-bit UNORM: rounding vs truncation"};
+    return {V::Rgba8Quantised, "rgba8-quantised", precision(Precision::Unorm8), 0.0, 0.0, 0.0, false, "8-bit UNORM: rounding vs truncation"};
   if (storage == "rgba16f")
     return {V::Rgba16fUlp, "rgba16f-ulp", 0.0, 0.0, std::ldexp(1.0, -23), 2.0, false,
             "float atomics sum in any order, stored as binary16"};
@@ -203,7 +204,7 @@ MipBound mip_bound(const VoxelModel& base, const std::string& storage, int level
   // A base level's half-ulps are at most 2^-10 |ref| each.
   MipBound b{base.abs + cas_width, base.rel + base.half_ulps * std::ldexp(1.0, -10) + 2.0 * base.per_fragment_rel * 8.0};
   double q_abs = 0.0, q_rel = 0.0;  // one storage rounding per level (any rounding mode)
-  if (storage == "rgba8") q_abs = 1.0 / 255.0;
+  if (storage == "rgba8") q_abs = precision(Precision::Unorm8);
   else if (storage == "rgba16f") q_rel = std::ldexp(1.0, -10), q_abs = std::ldexp(1.0, -24);
   else q_rel = std::ldexp(1.0, -22);
   for (int l = 1; l <= level; ++l) {

@@ -9,6 +9,7 @@
 #include "gl_frame.h"
 #include "gl_resources.h"
 #include "gl_setting_uniforms.h"
+#include "core/memory_budget.h"
 #include "stages/cone_sets.h"
 #include "stages/multibounce.h"
 
@@ -176,12 +177,10 @@ void build_mips(GlFrame& f, GLuint radiance, const std::array<GLuint, 6>& aniso)
   check_gl("mips");
 }
 
-double total_radiance(const GlFrame& f, GLuint radiance, int n) {
-  const Volume v = f.voxel_format == GL_RGBA8 ? read_volume_unorm8(radiance, 0, n) : read_volume(radiance, 0, n, 4);
-  double sum = 0.0;
-  for (size_t i = 0; i < v.voxel_count(); ++i)
-    for (size_t c = 0; c < 3; ++c) sum += double(v.data[i * 4 + c]);
-  return sum;
+// The frame's base level as stored (the energy is summed from it, and the frames before the last
+// are kept for the judge: voxel.frame.<frame>, compare/bounce_frames.h).
+Volume read_base_level(const GlFrame& f, GLuint radiance, int n) {
+  return f.voxel_format == GL_RGBA8 ? read_volume_unorm8(radiance, 0, n) : read_volume(radiance, 0, n, 4);
 }
 
 }  // namespace
@@ -229,18 +228,26 @@ void voxel_passes(GlFrame& f) {
                            : f.programs.build({"voxelize.vert", "voxelize_conservative.geom", "voxelize_conservative.frag"});
   inject_particles(f);
   const int frames = std::max(f.s.bounces, 1);
+  // The frames before the last are read back under the reference's memory rule (core/memory_budget.h).
+  const bool keep = keeps_multibounce_frames(f.s);
   size_t cur = 0;
   for (int b = 0; b < frames; ++b) {
     cur = size_t(b % 2);
     const size_t prev = 1 - cur;
-    voxelize(f, prog, b, radiance[prev], aniso[prev]);
+    // The bounce_reads_current_frame fault traces the bounce light in the texture being written
+    // (its mips hold the frame before the previous one, or nothing in frame 2).
+    const size_t read = f.has_fault("bounce_reads_current_frame") ? cur : prev;
+    voxelize(f, prog, b, radiance[read], aniso[read]);
     resolve(f, radiance[cur]);
     fill(f, radiance[cur]);
     build_mips(f, radiance[cur], aniso[cur]);
-    f.out.multibounce_energy.push_back(total_radiance(f, radiance[cur], n));
+    Volume base = read_base_level(f, radiance[cur], n);
+    f.out.multibounce_energy.push_back(total_energy(base));
+    if (keep) f.out.multibounce_frames.push_back(std::move(base));
     f.bounce_input = b > 0 ? radiance[prev] : 0;
     if (multibounce_converged(f.out.multibounce_energy, f.s.convergence_tolerance)) break;
   }
+  if (!f.out.multibounce_frames.empty()) f.out.multibounce_frames.pop_back();  // the last is voxel.radiance
   f.radiance = radiance[cur];
   f.aniso = aniso[cur];
 }

@@ -326,6 +326,13 @@ def walkthrough(p):
             mb = j.get("multibounce_energy", {})
             figs.append(svg.line_plot("voxel energy per multibounce frame", list(range(1, 1 + max((len(v) for v in mb.values()), default=0))),
                                       [(k, v) for k, v in mb.items()], "frame", "total voxel radiance") if mb else missing("multibounce energy"))
+            # Every frame judged on the test's own previous frame (docs/compare.md, "Every multibounce
+            # frame is judged"): each earlier frame's voxels and the energy sequence, the frame named.
+            for st in sorted((s for s in verdicts if s.startswith("voxel.frame.")), key=lambda s: int(s.rsplit(".", 1)[1])) + \
+                    [s for s in ("voxel.energy",) if s in verdicts]:
+                v = verdicts[st]
+                figs.append('<div><table><tr><th>%s</th>%s</tr><tr><td colspan=2>%s<br>%s</td></tr></table></div>' % (
+                    E(st), verdict_cell(v["verdict"]), E(v.get("bound", "")), E(v.get("note", ""))))
         if not figs:
             figs.append(missing("%s (not produced in this run)" % title))
         body.append('<div class="row">%s</div></div>' % "".join(figs))

@@ -111,10 +111,12 @@ render() {
   local fault
   for fault in $("$runner" --list-faults); do  # the table of gl/gl_faults.h
     if [ "$fault" = alpha_unclamped ]; then continue; fi  # needs aniso mips: below
-    case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero) continue ;; esac  # need their scenes: below
+    case "$fault" in alpha_shadow|alpha_voxel|texture_level_zero|srgb_decode_step) continue ;; esac  # need their scenes: below
     # needs soft shadows, which the runner does not switch on: tests/gl/gl_faults_test.cpp judges it
     [ "$fault" = soft_shadow_direction ] && continue
-    one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa --gl-fault "$fault"
+    local bounces=()
+    [ "$fault" = bounce_reads_current_frame ] && bounces=(--bounces 3)  # lives in the bounce frames
+    one "fault.$fault.fixed" "$box" --reduction fixed --max-msaa "${bounces[@]}" --gl-fault "$fault"
   done
   one "fault.racy_average.cas" "$box" --reduction cas --max-msaa --gl-fault racy_average
   one "fault.lost_update.cas" "$box" --reduction cas --max-msaa --gl-fault lost_update
@@ -124,6 +126,8 @@ render() {
   done
   one "fault.texture_level_zero.fixed" "$here/scenes/tiled_floor.gltf" --reduction fixed --max-msaa \
     --gl-fault texture_level_zero
+  one "fault.srgb_decode_step.fixed" "$here/scenes/regressions/seed-9-small/scene.gltf" --reduction fixed --max-msaa \
+    --gl-fault srgb_decode_step
   local stem scene
   for stem in ${fault_scenes//,/ }; do
     scene="$here/scenes/$stem.gltf"
@@ -132,10 +136,11 @@ render() {
       [ "$fault" = soft_shadow_direction ] && continue  # needs soft shadows (above)
       case "$fault" in
         alpha_shadow|alpha_voxel) grep -q '"MASK"' "$scene" || continue ;;
-        texture_level_zero) grep -q '"textures"' "$scene" || continue ;;
+        texture_level_zero|srgb_decode_step) grep -q '"textures"' "$scene" || continue ;;
       esac
       local extra=()
       [ "$fault" = alpha_unclamped ] && extra=(--aniso)
+      [ "$fault" = bounce_reads_current_frame ] && extra=(--bounces 3)
       one "fault.$fault.$stem" "$scene" --reduction fixed --max-msaa "${extra[@]}" --gl-fault "$fault"
     done
   done

@@ -53,6 +53,19 @@ vec4 material_texture(sampler2D s, int slot, vec2 uv) {
 #endif
 }
 
+// An sRGB slot's decoded lookup (base colour, emissive). The srgb_decode_step fault decodes one
+// step of the 8-bit encoding high: twice the precision GL's decode is allowed (core/precision.h,
+// srgb-decode: half a step), so voxel.radiance must fail (IEC 61966-2-1 transfer functions).
+vec4 srgb_slot(vec4 v) {
+#ifdef VCT_FAULT_SRGB_DECODE_STEP
+  vec3 c = clamp(v.rgb, 0.0f, 1.0f);
+  vec3 e = mix(c * 12.92f, 1.055f * pow(c, vec3(1.0f / 2.4f)) - 0.055f, greaterThan(c, vec3(0.0031308f)));
+  e = clamp(e + 1.0f / 255.0f, 0.0f, 1.0f);
+  v.rgb = mix(e / 12.92f, pow((e + 0.055f) / 1.055f, vec3(2.4f)), greaterThan(e, vec3(0.04045f)));
+#endif
+  return v;
+}
+
 vec2 slot_uv(int slot, vec2 uv0, vec2 uv1) {
   vec2 uv = u_tex_coord[slot] == 1 ? uv1 : uv0;
   return (u_tex_transform[slot] * vec3(uv, 1.0f)).xy;
@@ -76,7 +89,7 @@ vec3 apply_normal_map(vec3 normal, vec4 tangent, vec3 tn, float scale) {
 SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec4 color) {
   SurfaceMaterial s;
   vec4 base = u_base_color_factor;
-  if (u_tex_present[0] != 0) base *= material_texture(u_tex_base, 0, slot_uv(0, uv0, uv1));
+  if (u_tex_present[0] != 0) base *= srgb_slot(material_texture(u_tex_base, 0, slot_uv(0, uv0, uv1)));
   if (u_vertex_colors != 0) base *= color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = base.rgb;
   s.metallic = u_metallic_factor;
@@ -89,7 +102,7 @@ SurfaceMaterial evaluate_material(vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1,
   s.specular_factor = u_specular_factor;
   s.specular_color = u_specular_color;
   s.emission = u_emission;
-  if (u_tex_present[3] != 0) s.emission *= material_texture(u_tex_emissive, 3, slot_uv(3, uv0, uv1)).rgb;
+  if (u_tex_present[3] != 0) s.emission *= srgb_slot(material_texture(u_tex_emissive, 3, slot_uv(3, uv0, uv1))).rgb;
   s.shading_normal = normal;
   if (u_tex_present[2] != 0) {
     vec4 texel = material_texture(u_tex_normal, 2, slot_uv(2, uv0, uv1));

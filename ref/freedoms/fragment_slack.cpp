@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/parallel.h"
+#include "core/precision.h"
 #include "freedoms/direct_slack.h"
 #include "freedoms/direct_ties.h"
 #include "freedoms/lod_candidates.h"
@@ -176,6 +177,23 @@ float normal_precision_slack(const Scene& scene, const VoxelFragment& f, const S
   return slack;
 }
 
+float srgb_precision_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const vec3& value,
+                           const std::vector<ShadowMap>& maps, const VctSettings& settings,
+                           const BounceLight* bounce) {
+  // The light grows with albedo and emission, so the two ends of the decode's precision are the
+  // extremes (core/precision.h, srgb-decode).
+  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
+  SlotLods s = lods;
+  float slack = 0.0f;
+  for (float sign : {-1.0f, 1.0f}) {
+    s.srgb_decode_steps = sign * float(precision(Precision::SrgbDecode));
+    const vec3 d =
+        glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) - value);
+    slack = std::max(slack, largest_channel(d));
+  }
+  return slack;
+}
+
 /// GL LINEAR's 8-bit sub-texel weights on a shadow sampler (an engine's shadow_compare = linear):
 /// each tap's bilinear blend of compares moves by at most 2^-8 + 2^-8 = 2^-7 (its derivative in
 /// each weight is at most 1), so does the mean over the taps, and the fragment's light from each
@@ -258,6 +276,8 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
     if (m.normal_texture.present())
       slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
+    if (m.base_color_texture.present() || m.emissive_texture.present())
+      slack += srgb_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     if (settings.shadow_compare == ShadowCompare::Linear) slack += linear_compare_slack(scene, f, l.exact, settings);
     if (hard_spots) slack += hard_spot_slack(scene, f, l.exact, settings);
     out[size_t(i)] = slack;

@@ -8,8 +8,9 @@
 //     triangle: the falloff and textures shift, and a PCF tap flips anywhere in the parallelogram
 //     it may reach (freedoms/snap_visibility.h), not only at its corners;
 //   - texture LOD: every lambda a correct GL may use (stages/voxel_lod.h);
-//   - sub-texel weights: filter weights with 8 fractional bits (freedoms/texture_slack.h);
-//   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off.
+//   - sub-texel weights: filter weights with 8 fractional bits (freedoms/lookup_precision.h);
+//   - lookup precision: a filtered normal-map texel (8-bit UNORM) may be one format step off, and
+//     an sRGB texel's decode half a step of its encoding (core/precision.h, srgb-decode).
 #pragma once
 
 #include <vector>

@@ -1,6 +1,6 @@
 #include "freedoms/voxel_freedoms.h"
 
-#include "freedoms/coverage_ties.h"
+#include "freedoms/coverage_ties.h"  // widen_for_coverage_ties
 #include "freedoms/fragment_exactness.h"
 #include "freedoms/fragment_slack.h"
 #include "freedoms/reduction_interval.h"
@@ -30,9 +30,8 @@ void add_particle_freedoms(const Scene& scene, const VctSettings& settings, cons
       if (g.radiance.data[i * 4 + size_t(c)] != before.data[i * 4 + size_t(c)]) g.exact.data[i] = 0.0f;
 }
 
-VoxelGrid judged_voxels(const Scene& scene, Voxelization& vox, const std::vector<ShadowMap>& maps,
+VoxelGrid judged_voxels(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                         const VctSettings& settings, const BounceLight* bounce) {
-  add_coverage_ties(scene, vox);
   std::vector<vec3> values;
   VoxelGrid g = inject_and_reduce(scene, vox, maps, settings, bounce, &values);
   add_voxel_freedoms(scene, vox, values, maps, settings, bounce, g);

@@ -31,9 +31,9 @@ void add_voxel_freedoms(const Scene& scene, const Voxelization& vox, const std::
 /// `cas-rgba8-interval` row).
 void add_particle_freedoms(const Scene& scene, const VctSettings& settings, const Volume& before, VoxelGrid& g);
 
-/// The grid as the judge reads it: coverage ties added to `vox`, inject_and_reduce, its
-/// freedoms, then the particles and theirs.
-VoxelGrid judged_voxels(const Scene& scene, Voxelization& vox, const std::vector<ShadowMap>& maps,
+/// The grid as the judge reads it: inject_and_reduce on `vox` (whose coverage ties
+/// add_coverage_ties has added), its freedoms, then the particles and theirs.
+VoxelGrid judged_voxels(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
                         const VctSettings& settings, const BounceLight* bounce = nullptr);
 
 }  // namespace vct

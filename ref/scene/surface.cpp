@@ -1,5 +1,7 @@
 #include "scene/surface.h"
 
+#include "io/srgb.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,13 +68,30 @@ vec3 apply_normal_map(const vec3& normal, const vec4& tangent, vec3 tn, float sc
   return nl > 1e-8f ? n / nl : normal;
 }
 
+vec3 shift_srgb_steps(const vec3& v, float steps) {
+  vec3 out;
+  for (int c = 0; c < 3; ++c)
+    out[c] = srgb_to_linear(std::clamp(linear_to_srgb(std::clamp(v[c], 0.0f, 1.0f)) + steps / 255.0f, 0.0f, 1.0f));
+  return out;
+}
+
+namespace {
+// An sRGB slot's lookup as a GL may decode it (SlotLods::srgb_decode_steps).
+vec4 decoded(vec4 v, const SlotLods& lods) {
+  if (lods.srgb_decode_steps == 0.0f) return v;
+  const vec3 rgb = shift_srgb_steps(vec3(v), lods.srgb_decode_steps);
+  return vec4(rgb, v.a);
+}
+}  // namespace
+
 SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, const SlotLods& lods) {
   const Material& m = scene.materials[scene.triangle_material[p.triangle]];
   SurfaceMaterial s;
   vec4 base = m.base_color_factor;
   if (m.base_color_texture.present())
-    base *= sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor],
-                       lods.srgb_after_filter, lods.texel_shift);
+    base *= decoded(sample_ref(scene, m.base_color_texture, p, true, lods.lambda[kSlotBaseColor],
+                               lods.srgb_after_filter, lods.texel_shift),
+                    lods);
   base *= p.color;  // glTF 2.0 §3.9.2: factor x texture x COLOR_0
   s.albedo = vec3(base);
   s.opacity = base.a;
@@ -88,8 +107,9 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   s.specular_color = m.specular_color_factor;
   s.emission = m.emission();
   if (m.emissive_texture.present())
-    s.emission *= vec3(sample_ref(scene, m.emissive_texture, p, true, lods.lambda[kSlotEmissive],
-                                  lods.srgb_after_filter, lods.texel_shift));
+    s.emission *= vec3(decoded(sample_ref(scene, m.emissive_texture, p, true, lods.lambda[kSlotEmissive],
+                                          lods.srgb_after_filter, lods.texel_shift),
+                               lods));
   s.shading_normal = p.normal;
   if (m.normal_texture.present()) {
     const vec4 sampled = sample_ref(scene, m.normal_texture, p, false, lods.lambda[kSlotNormal],

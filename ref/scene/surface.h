@@ -62,7 +62,14 @@ struct SlotLods {
   // of an 8-bit UNORM texture with that format's precision, one step 1/255 (freedoms/lookup_precision.h
   // kUnorm8Step); zero for the reference.
   vec3 normal_texel_offset{0.0f};
+  // The filtered sRGB slots (base colour, emissive) moved by this many steps of the 8-bit encoding
+  // (re-encoded, shifted, decoded): GL's sRGB decode is precise to half a step (core/precision.h,
+  // srgb-decode); zero for the reference.
+  float srgb_decode_steps = 0.0f;
 };
+
+/// `v` (linear, RGB) moved by `steps` steps of the 8-bit sRGB encoding, clamped to [0, 1].
+vec3 shift_srgb_steps(const vec3& v, float steps);
 
 /// A surface sample's lambdas: the reference's own (exact derivatives) and, per slot, every lambda
 /// a correct GL may use instead (docs/compare.md, "Texture LOD").

@@ -45,6 +45,15 @@ Image* cube_face_tie_range(FrameResult& f, int i, bool grow) {
 Volume* conservative(FrameResult& f, int, bool) { return &f.conservative_occupancy; }
 Volume* holes(FrameResult& f, int, bool) { return &f.holes; }
 Volume* bounce_input(FrameResult& f, int, bool) { return &f.bounce_input; }
+// Multibounce frame k >= 1 (before the last) is multibounce_frames[k - 1].
+Volume* bounce_frame(FrameResult& f, int frame, bool grow) {
+  if (frame < 1) return nullptr;
+  if (size_t(frame) > f.multibounce_frames.size()) {
+    if (!grow) return nullptr;
+    f.multibounce_frames.resize(size_t(frame));
+  }
+  return &f.multibounce_frames[size_t(frame) - 1];
+}
 // iso[0] is the base level itself (voxel.radiance); the family starts at level 1.
 Volume* iso_level(FrameResult& f, int level, bool grow) {
   if (level < 1) return nullptr;
@@ -111,8 +120,12 @@ const std::vector<StageRow> kRows = {
    "Cook-Torrance direct light with shadow-map (or cone) visibility", "G-buffer and direct light", "ref/stages/direct.cpp", "gl/gl_pass_shading.cpp (direct_pass), gl/shaders/direct.frag", "direct"},
   {st::kVoxelOccupancy,        "voxels_occupancy",              K::Volume, X::None,     R::Derived,   P::Volume,   T::VoxelOccupancy, false, C::No,                0, "",                     nullptr,                                           nullptr,
    "which voxels the voxelizer's coverage rule fills", "Voxelizers", "ref/stages/voxelize_gpu.cpp", "gl/gl_pass_voxel.cpp (voxelize), gl/shaders/voxelize.geom", ""},
+  {st::kVoxelFrame,            "multibounce_frame_{}",          K::Volume, X::Frame,    R::Judged,    P::Volume,   T::VoxelFrame,     false, C::No,                4, "",                     nullptr,                                           bounce_frame,
+   "multibounce: the base level after frame <frame> (1 = direct light only; every frame before the last), judged like voxel.radiance on the test's own previous frame (compare/bounce_frames.h)", "Temporal multibounce", "ref/stages/multibounce.cpp", "gl/gl_pass_voxel.cpp (voxel_passes)", ""},
   {st::kVoxelRadiance,         "voxels_radiance_L0",            K::Volume, X::None,     R::Judged,    P::Volume,   T::VoxelRadiance,  false, C::Always,            4, "",                     nullptr,                                           voxels<&VoxelGrid::radiance>,
    "injected voxel radiance (RGB) and opacity (A), averaged per voxel", "Reduction", "ref/stages/voxelize.cpp, ref/stages/inject.cpp, ref/stages/reduction.cpp", "gl/gl_pass_voxel.cpp (voxelize, resolve), gl/shaders/voxelize.frag, gl/shaders/voxel_resolve.comp", "inject"},
+  {st::kVoxelEnergy,           "",                              K::Volume, X::None,     R::Derived,   P::Volume,   T::VoxelEnergy,    false, C::No,                0, "",                     nullptr,                                           nullptr,
+   "multibounce: the total RGB radiance after each frame (run.json's multibounce_energy), each frame judged against the reference's frame on the test's own inputs within the sum of its voxels' bounds", "Temporal multibounce", "ref/stages/multibounce.cpp (total_energy)", "gl/gl_pass_voxel.cpp (voxel_passes)", ""},
   {st::kVoxelFragments,        "voxels_fragments",              K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::fragments>,
    "fragments (surface samples) per voxel", "Voxelizers", "ref/stages/voxelize_gpu.cpp", "gl/gl_pass_voxel.cpp (voxelize)", "voxelize"},
   {st::kVoxelCasLo,            "voxels_cas_lo",                 K::Volume, X::None,     R::Auxiliary, P::Volume,   T::None,           false, C::No,                0, "",                     nullptr,                                           voxels<&VoxelGrid::cas_lo>,
@@ -175,6 +188,11 @@ std::optional<int> parse_index(const std::string& s) {
   return v;
 }
 
+// Mip levels and multibounce frames count from 1 (level 0 / the last frame is voxel.radiance).
+int first_member(const StageRow& row) {
+  return row.index == StageIndex::MipLevel || row.index == StageIndex::Frame ? 1 : 0;
+}
+
 }  // namespace
 
 const std::vector<StageRow>& stage_rows() { return kRows; }
@@ -188,7 +206,7 @@ std::optional<StageRef> find_stage(const std::string& name) {
     const std::string prefix = std::string(row.name) + ".";
     if (name.compare(0, prefix.size(), prefix) != 0) continue;
     const auto i = parse_index(name.substr(prefix.size()));
-    if (!i || (row.index == StageIndex::MipLevel && *i < 1)) return std::nullopt;
+    if (!i || (first_member(row) == 1 && *i < 1)) return std::nullopt;
     return StageRef{&row, *i};
   }
   return std::nullopt;
@@ -257,7 +275,7 @@ const Volume* frame_volume(const FrameResult& f, const StageRow& row, int index)
 
 std::vector<int> frame_members(const FrameResult& f, const StageRow& row) {
   std::vector<int> out;
-  const int first = row.index == StageIndex::MipLevel ? 1 : 0;
+  const int first = first_member(row);
   for (int i = first;; ++i) {
     const bool held = row.kind == StageKind::Image ? row.image && row.image(const_cast<FrameResult&>(f), i, false)
                                                    : row.volume && row.volume(const_cast<FrameResult&>(f), i, false);

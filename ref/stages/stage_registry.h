@@ -36,6 +36,8 @@ inline constexpr char kGbufferTextureSlack[] = "gbuffer.texture_slack";
 inline constexpr char kGbufferTieRange[] = "gbuffer.tie_range";
 inline constexpr char kImageDirect[] = "image.direct";
 inline constexpr char kVoxelOccupancy[] = "voxel.occupancy";
+inline constexpr char kVoxelFrame[] = "voxel.frame";
+inline constexpr char kVoxelEnergy[] = "voxel.energy";
 inline constexpr char kVoxelRadiance[] = "voxel.radiance";
 inline constexpr char kVoxelFragments[] = "voxel.fragments";
 inline constexpr char kVoxelCasLo[] = "voxel.cas_lo";
@@ -67,7 +69,7 @@ enum class StageKind { Image, Volume };
 
 /// How a family's members are numbered (None: a single stage). CubeFace: light x 6 + face, the
 /// faces in GL's order (kCubeFaceNames); dump stems spell the member "<light>_<face>".
-enum class StageIndex { None, Light, MipLevel, CubeFace };
+enum class StageIndex { None, Light, MipLevel, CubeFace, Frame };
 
 /// Judged: compared on its own. Auxiliary: a reference input that other stages' verdicts use
 /// (fragment counts, CAS intervals, texture slack). Derived: made by the judge from other stages.
@@ -97,6 +99,8 @@ enum class ToleranceModel {
   Filtered,           // cone-traced radiance
   VoxelOccupancy,     // same coverage rule, ties
   VoxelRadiance,      // chosen by the test's storage and reduction (voxel_model)
+  VoxelFrame,         // a multibounce frame before the last: voxel_radiance on the test's own inputs
+  VoxelEnergy,        // the multibounce energy sequence: per frame, the sum of the voxels' bounds
   VoxelHoles,         // reported, never failed
   Mip,                // propagated from the voxel radiance model
 };

@@ -16,6 +16,7 @@ const char* index_name(StageIndex i) {
     case StageIndex::Light: return "light";
     case StageIndex::MipLevel: return "mip_level";
     case StageIndex::CubeFace: return "cube_face";
+    case StageIndex::Frame: return "frame";
   }
   return nullptr;
 }
@@ -42,6 +43,8 @@ const char* model_name(ToleranceModel m) {
     case ToleranceModel::Filtered: return "filtered";
     case ToleranceModel::VoxelOccupancy: return "voxel_occupancy";
     case ToleranceModel::VoxelRadiance: return "voxel_radiance";
+    case ToleranceModel::VoxelFrame: return "voxel_frame";
+    case ToleranceModel::VoxelEnergy: return "voxel_energy";
     case ToleranceModel::VoxelHoles: return "voxel_holes";
     case ToleranceModel::Mip: return "mip";
   }
@@ -66,6 +69,7 @@ std::string display_name(const StageRow& row) {
     case StageIndex::Light: return std::string(row.name) + ".<light>";
     case StageIndex::MipLevel: return std::string(row.name) + ".<level>";
     case StageIndex::CubeFace: return std::string(row.name) + ".<light x 6 + face>";
+    case StageIndex::Frame: return std::string(row.name) + ".<frame>";
   }
   return row.name;
 }
@@ -75,6 +79,7 @@ std::string display_stem(const StageRow& row) {
   const size_t at = s.find("{}");
   const char* member = row.index == StageIndex::Light      ? "<light>"
                        : row.index == StageIndex::CubeFace ? "<light>_<face>"
+                       : row.index == StageIndex::Frame    ? "<frame>"
                                                            : "<level>";
   if (at != std::string::npos) s.replace(at, 2, member);
   return s;

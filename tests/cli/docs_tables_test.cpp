@@ -9,6 +9,7 @@
 
 #include "compare/admission.h"
 #include "compare/counted_shares.h"
+#include "core/precision.h"
 #include "core/settings_table.h"
 #include "stages/stage_registry_text.h"
 
@@ -42,6 +43,13 @@ TEST(DocsTables, CompareMdHoldsTheAdmissionTableAndCountedShares) {
       << "docs/compare.md is out of date: regenerate its admission table with `vct stages --rules`";
   EXPECT_NE(doc.find(vct::cmp::counted_shares_markdown()), std::string::npos)
       << "docs/compare.md is out of date: regenerate its counted shares with `vct stages --rules`";
+}
+
+TEST(DocsTables, CompareMdHoldsThePrecisionTable) {
+  const std::string doc = read_doc("compare.md");
+  ASSERT_FALSE(doc.empty());
+  EXPECT_NE(doc.find(vct::precision_table_markdown()), std::string::npos)
+      << "docs/compare.md is out of date: regenerate its precision table with `vct stages --rules`";
 }
 
 TEST(DocsTables, EveryVctSettingHasARowAndRoundTrips) {

@@ -36,7 +36,8 @@ FaultRun fault_settings(const std::string& fault, Reduction reduction, bool anis
 const FrameResult& reference(const Settings& s) {
   static std::map<std::string, FrameResult> cache;
   const std::string key =
-      to_string(s.vct.reduction) + (s.vct.anisotropic ? "/aniso" : "/iso") + (s.vct.soft_shadows ? "/soft" : "");
+      to_string(s.vct.reduction) + (s.vct.anisotropic ? "/aniso" : "/iso") + (s.vct.soft_shadows ? "/soft" : "") +
+      "/b" + std::to_string(s.vct.bounces);
   auto it = cache.find(key);
   if (it == cache.end()) it = cache.emplace(key, render_ref_frame(cornell_box(), s)).first;
   return it->second;
@@ -208,6 +209,27 @@ TEST(GlFaults, SoftShadowDirectionFailsImageDirect) {
   // The same settings without the fault: no FAIL anywhere (the correct GL needs no range there).
   run.fault.clear();
   EXPECT_FIRST_FAILING(judge(*ctx, run), "");
+}
+
+// Issue 34 item 3: bounce frames that trace their bounce light in the texture being written (frame 2
+// reads an empty one, frame 3 frame 1's mips). The last frame is right on its own bounce input (the
+// test's frame 2), so before every frame was judged nothing failed; judged each on the test's own
+// previous frame, frame 2 fails first, and the energy sequence names it too.
+TEST(GlFaults, BounceReadsCurrentFrameFailsAtFrameTwo) {
+  VCT_REQUIRE_GL();
+  FaultRun run = fault_settings("bounce_reads_current_frame", Reduction::FixedPoint, false);
+  run.s.vct.bounces = 3;
+  const cmp::Report rep = judge(*ctx, run);
+  EXPECT_FIRST_FAILING(rep, "voxel.frame.2");
+  for (const cmp::StageVerdict& v : rep.stages) {
+    if (v.stage == "voxel.frame.1") EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;
+    if (v.stage == stage_names::kVoxelRadiance) EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;  // what hid it
+    if (v.stage == stage_names::kVoxelEnergy) {
+      std::printf("  voxel.energy: %s\n", v.note.c_str());
+      EXPECT_EQ(v.verdict, cmp::Verdict::Fail) << v.note;
+      EXPECT_EQ(v.extra.value("first_failing_frame", 0), 2) << v.note;
+    }
+  }
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Temporal multibounce on GL against the CPU reference.
 #include "compare/isolated_stages.h"
-#include "gl_test_util.h"
+#include "compare/judge.h"
 #include "freedoms/reference_frame.h"
+#include "gl_test_util.h"
+#include "stages/stage_registry.h"
 
 namespace vct::gl::test {
 
@@ -42,6 +44,32 @@ TEST(GlMultibounce, VoxelsAreJudgedOnTheTestsOwnBounceInput) {
       EXPECT_NE(v.verdict, cmp::Verdict::Fail);
       EXPECT_NE(v.note.find("the test's own shadow maps and bounce input"), std::string::npos);
     }
+}
+
+// Every frame judged (compare/bounce_frames.h): a correct GL fails no stage at 1, 2 or 3 bounces, and
+// with 2 or 3 every frame before the last (voxel.frame.<k>, GL's own earlier frames read back) and
+// the energy of every frame are judged, not left missing.
+TEST(GlMultibounce, EveryFrameOfACorrectGlPasses) {
+  VCT_REQUIRE_GL();
+  for (int bounces = 1; bounces <= 3; ++bounces) {
+    Settings s = small_settings();
+    s.vct.bounces = bounces;
+    const FrameResult g = render_gl_frame(*ctx, cornell_box(), s);
+    ASSERT_EQ(g.multibounce_frames.size(), size_t(bounces - 1));
+    const FrameResult r = render_ref_frame(cornell_box(), s, g.facts.sample_positions);
+    const cmp::Report rep =
+        cmp::judge(cmp::stage_set_from_frame(r, s.vct), cmp::stage_set_from_frame(g, s.vct), {&cornell_box(), &g, &s.vct});
+    EXPECT_EQ(rep.first_failing(), "") << bounces << " bounces: " << failing_stages(rep);
+    size_t frames_judged = 0;
+    for (const cmp::StageVerdict& v : rep.stages) {
+      if (v.stage.rfind("voxel.frame.", 0) != 0 && v.stage != stage_names::kVoxelEnergy) continue;
+      std::printf("  %d bounces, %s: %s (%s)\n", bounces, v.stage.c_str(), to_string(v.verdict).c_str(), v.note.c_str());
+      EXPECT_NE(v.verdict, cmp::Verdict::Missing) << v.stage;
+      if (v.stage == stage_names::kVoxelEnergy) EXPECT_EQ(v.checked, size_t(bounces)) << v.note;
+      else ++frames_judged;
+    }
+    EXPECT_EQ(frames_judged, size_t(bounces - 1));
+  }
 }
 
 }  // namespace vct::gl::test

@@ -6,8 +6,8 @@
 #include "../ref/lamp_near_a_wall.h"
 #include "compare/judge.h"
 #include "compare/stage_set.h"
+#include "freedoms/reference_frame.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
 
 namespace vct::gl::test {
 namespace {

@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 #include <random>
 
+#include "freedoms/reference_frame.h"
 #include "freedoms/shadow_ties.h"
 #include "freedoms/snap_visibility.h"
 #include "lamp_near_a_wall.h"
 #include "stage_test_scene.h"
 #include "stages/direct.h"
 #include "stages/gbuffer.h"
-#include "stages/pipeline.h"
 #include "stages/shadow_map.h"
 
 namespace vct {

@@ -154,8 +154,7 @@ TEST(Reduction, InjectTwoFragmentsInOneVoxel) {
   VctSettings st;
   st.reduction = Reduction::CasRgba8;
   st.storage = VoxelStorage::Rgba8;
-  Voxelization judged = v;
-  const VoxelGrid g = judged_voxels(s, judged, {}, st);  // the CAS interval is the judge's (freedoms/)
+  const VoxelGrid g = judged_voxels(s, v, {}, st);  // the CAS interval is the judge's (freedoms/)
   const vec4 lo = g.cas_lo.rgba(1, 1, 1), hi = g.cas_hi.rgba(1, 1, 1), r = g.radiance.rgba(1, 1, 1);
   // Red: (255, 127.5) either order -> 191; green: (0, 255) -> 127; blue (63.75, 191.25) -> 127.
   EXPECT_EQ(r, vec4(191.0f / 255.0f, 127.0f / 255.0f, 127.0f / 255.0f, 1.0f));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/parallel.h"
+#include "freedoms/coverage_ties.h"
 #include "freedoms/gbuffer_freedoms.h"
 #include "freedoms/shadow_map_ties.h"
 #include "freedoms/voxel_freedoms.h"
@@ -50,6 +51,7 @@ std::vector<uint8_t> run_all(const Scene& s, int threads) {
   for (Reduction r : {Reduction::ExactMean, Reduction::FixedPoint, Reduction::CasRgba8}) {
     st.reduction = r;
     Voxelization vox = r == Reduction::FixedPoint ? gp : c;
+    add_coverage_ties(s, vox);
     const VoxelGrid vg = judged_voxels(s, vox, maps, st);
     add(vg.radiance.data);
     add(vg.cas_lo.data);
