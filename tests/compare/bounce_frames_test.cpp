@@ -8,9 +8,9 @@
 #include "compare/bounce_frames.h"
 #include "compare/judge.h"
 #include "find_verdict.h"
+#include "freedoms/reference_frame.h"
 #include "scene/gltf_loader.h"
 #include "stages/multibounce.h"
-#include "stages/pipeline.h"
 
 namespace vct::cmp {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "compare/judge.h"
 #include "find_verdict.h"
+#include "freedoms/reference_frame.h"
 #include "io/srgb.h"
 #include "scene/gltf_loader.h"
-#include "stages/pipeline.h"
 #include "stages/stage_registry.h"
 
 namespace vct::cmp {

@@ -7,8 +7,8 @@
 #include <cstdio>
 
 #include "compare/judge.h"
+#include "freedoms/reference_frame.h"
 #include "gl_test_util.h"
-#include "stages/pipeline.h"
 
 namespace vct::gl::test {
 namespace {

@@ -1,17 +1,16 @@
 // The precision table (core/precision.h; docs/compare.md, "Precision table"): rows in order with a
 // source and consumers, the constants the freedom producers still define themselves equal to
 // their rows, and the sRGB decode's half step bracketing what llvmpipe was measured to do.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "core/precision.h"
+#include "freedoms/direct_slack.h"
+#include "freedoms/lookup_precision.h"
 #include "io/srgb.h"
 #include "scene/surface.h"
-#include "stages/direct_slack.h"
 #include "stages/raster.h"
-#include "stages/texture_slack.h"
 
 namespace vct {
 namespace {
