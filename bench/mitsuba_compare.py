@@ -204,9 +204,8 @@ def mitsuba_worker(spec_path, out):
     with open(spec_path) as f:
         s = json.load(f)
     mi.set_variant(s["variant"])
-    if s["variant"].startswith("scalar"):
-        import mitsuba_cook_torrance
-        mitsuba_cook_torrance.register()
+    import mitsuba_cook_torrance
+    mitsuba_cook_torrance.register()
     scene = mi.load_dict(mitsuba_scene(s["scene"], s["work"], s["size"], s["spp"], s["depth"], s["seed"], s["sampler"]))
     draw = render_centres if s["centres"] else render_box
     if s["warm"]:
@@ -377,9 +376,6 @@ def main(argv):
     except ImportError:
         print("mitsuba_compare: mitsuba is not installed in this Python (scripts/setup.sh puts it in .venv)")
         return 77 if a.test else 3
-    if not a.test and a.glossy and not a.variant.startswith("scalar"):
-        print("mitsuba_compare: --glossy needs --variant scalar_rgb (the Python Cook-Torrance is scalar)")
-        return 2
     with tempfile.TemporaryDirectory(prefix="vct-mitsuba-") as work:
         scene_path = os.path.join(work, "cornell_glossy.gltf" if a.glossy else "cornell_lambert.gltf")
         g = cornell_scene(scene_path, a.glossy)
