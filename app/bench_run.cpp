@@ -21,6 +21,7 @@
 #include "io/run_dir.h"
 #include "pt/ray_throughput.h"
 #include "stages/pipeline.h"
+#include "stages/scene_footprint.h"
 #include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
@@ -165,7 +166,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   j["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()}};
   j["settings"] = s;
   j["repeat"] = o.repeat;
-  j["memory"]["predicted"] = format_bytes(estimate_memory(s, shadow_map_layers(scene)).total());
+  j["memory"]["predicted"] = format_bytes(estimate_memory(s, scene_footprint(scene)).total());
   j["ref"] = ref_times(scene, s, o.repeat);
   std::string note, renderer;
   j["gl"] = o.gl ? gl_times(scene, s, o.repeat, note, renderer) : nlohmann::json(nullptr);

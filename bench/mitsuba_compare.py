@@ -179,14 +179,15 @@ def mitsuba_env(variant):
 
 
 def render_mitsuba(g, work, size, spp, depth, seed, centres=False, sampler="independent", variant="scalar_rgb",
-                   warm=False):
+                   warm=False, threads=0):
     """Mitsuba's image, wall and CPU seconds of the render alone, rendered in a worker process of its
     own (`--mitsuba-worker`: Dr.Jit's libLLVM and its thread pool apart from everything else).
     centres=True: every camera ray through the pixel centre, as ref/pt/camera_ray.cpp shoots them
     (the same estimand as ours); else mi.render with a box pixel filter. warm=True (LLVM): the
     render runs twice and the second is timed, so Dr.Jit's kernel compilation is not counted."""
     spec = {"scene": g, "work": work, "size": size, "spp": spp, "depth": depth, "seed": seed, "centres": centres,
-            "sampler": sampler, "variant": variant, "warm": warm}
+            "sampler": sampler, "variant": variant, "warm": warm,
+            "threads": threads}
     tag = "%s_%s_%d_%d_%d" % (variant, sampler, spp, seed, int(centres))
     spec_path, out = os.path.join(work, "mi_%s.json" % tag), os.path.join(work, "mi_%s" % tag)
     with open(spec_path, "w") as f:
@@ -204,6 +205,9 @@ def mitsuba_worker(spec_path, out):
     with open(spec_path) as f:
         s = json.load(f)
     mi.set_variant(s["variant"])
+    if s.get("threads") and not s["variant"].startswith("scalar"):
+        import drjit as dr
+        dr.set_thread_count(s["threads"])  # Dr.Jit's pool (nanothread); default: every core
     import mitsuba_cook_torrance
     mitsuba_cook_torrance.register()
     scene = mi.load_dict(mitsuba_scene(s["scene"], s["work"], s["size"], s["spp"], s["depth"], s["seed"], s["sampler"]))
@@ -323,7 +327,8 @@ def benchmark(a, g, scene_path, work, size, spp):
 
     ours = {n: stats([render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, n) for seed in (1, 2)])
             for n in ours_samplers}
-    theirs = {n: stats([render_mitsuba(g, work, size, spp, a.depth, seed, centres, n, a.variant, warm=True)
+    theirs = {n: stats([render_mitsuba(g, work, size, spp, a.depth, seed, centres, n, a.variant, warm=True,
+                                       threads=a.threads)
                         for seed in (1, 2)]) for n in a.mitsuba_samplers.split(",")}
     print("  ref image mean %.5f" % ref.mean())
     for name, (err, wall, cpu, mean) in list(ours.items()) + [("mitsuba " + k, v) for k, v in theirs.items()]:
@@ -337,7 +342,8 @@ def benchmark(a, g, scene_path, work, size, spp):
     on, (oerr, owall, ocpu, _) = next(iter(ours.items()))
     for mn, (merr, mwall, mcpu, _) in theirs.items():
         spp_eq = max(1, int(round(spp * ocpu / mcpu)))
-        err, wall, cpu, _ = stats([render_mitsuba(g, work, size, spp_eq, a.depth, seed, centres, mn, a.variant, warm=True)
+        err, wall, cpu, _ = stats([render_mitsuba(g, work, size, spp_eq, a.depth, seed, centres, mn, a.variant, warm=True,
+                                                  threads=a.threads)
                                    for seed in (1, 2)])
         print("  RATIO equal time: mitsuba %s %s at %d spp (CPU %.2f s vs ours %.2f s): MSE mitsuba / ours %.2f, "
               "efficiency ours/mitsuba %.2f by CPU" % (a.variant, mn, spp_eq, cpu, ocpu, err / oerr,
@@ -355,7 +361,8 @@ def main(argv):
     ap.add_argument("--size", type=int)
     ap.add_argument("--spp", type=int)
     ap.add_argument("--depth", type=int, default=64)
-    ap.add_argument("--threads", type=int, default=2, help="ours (Mitsuba uses its own pool, every core)")
+    ap.add_argument("--threads", type=int, default=2,
+                    help="ours, and Dr.Jit's pool on the LLVM variant (1: no worker waits, the steadiest CPU times)")
     ap.add_argument("--vct", default=os.environ.get("VCT_BINARY", os.path.join(ROOT, "build", "bin", "vct")))
     ap.add_argument("--k", type=float, default=4.0, help="--test bound in standard errors")
     ap.add_argument("--pt-sampler", default="sobol",
