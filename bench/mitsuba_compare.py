@@ -1,20 +1,33 @@
 #!/usr/bin/env python3
-"""Our path tracer against Mitsuba 3 (scalar_rgb) on one Lambertian Cornell box with a spot and an
-area light (issue 16; derivation of the test's bound in docs/compare.md, "Path tracer against
-Mitsuba 3"; figures in docs/performance.md).
+"""Our path tracer against Mitsuba 3 on one Cornell box with a spot and an area light (issues 16
+and 37; derivation of the test's bound in docs/compare.md, "Path tracer against Mitsuba 3";
+figures in docs/performance.md).
 
-  bench/mitsuba_compare.py [--size 128] [--spp 256] [--depth 64] [--vct build/bin/vct]
-                           [--pt-sampler sobol|independent] [--mitsuba-samplers independent,ldsampler,multijitter]
-      benchmark, run by hand: time, per-pixel variance (from two independent seeds of each
-      renderer) and efficiency 1 / (time x variance), ours over Mitsuba's, for each Mitsuba sampler
-      (ours: pt.sampler, default sobol: scrambled Sobol replicates, docs/pathtracer.md);
+  bench/mitsuba_compare.py [--glossy] [--size 128] [--spp 256] [--depth 64] [--threads 2]
+                           [--variant llvm_ad_rgb|scalar_rgb] [--estimand centres|box]
+                           [--pt-sampler sobol,independent] [--mitsuba-samplers independent,stratified,multijitter]
+                           [--ref-parts 16] [--vct build/bin/vct]
+      benchmark, run by hand: efficiency 1 / (MSE x CPU seconds of the render itself), ours over
+      Mitsuba's, each MSE against a converged reference (Mitsuba's independent sampler at
+      ref-parts x spp through pixel centres, its own variance subtracted), two seeds each, at
+      equal spp and at equal CPU time (Mitsuba's spp scaled to our CPU time); prints RATIO lines
+      and the load average. Each Mitsuba render runs in a worker process of its own
+      (--mitsuba-worker); on llvm_ad_rgb it is rendered twice and the second timed (no kernel
+      compilation counted), with Dr.Jit's pool at --threads. --estimand centres (default): Mitsuba's
+      camera rays through pixel centres as ours; box: mi.render with a box filter (another image).
+      Ours: pt.sampler (default sobol: scrambled Sobol replicates, docs/pathtracer.md), its CPU
+      time from run.json pathtrace.render_cpu_seconds. Not ldsampler: biased here (docs/performance.md).
   bench/mitsuba_compare.py --test [--size 32] [--spp 64]
-      correctness (ctest pt_mitsuba_agreement): the image means of the two renderers agree per
-      channel within 4 standard errors; exit 0 pass, 1 fail, 77 skipped (no mitsuba in the venv).
+      correctness (ctest pt_mitsuba_agreement): the image means of the two renderers (Mitsuba
+      scalar_rgb, pixel centres) agree per channel within 4 standard errors; exit 0 pass, 1 fail,
+      77 skipped (no mitsuba in the venv).
   bench/mitsuba_compare.py --test --glossy
       the same with the scene's glossy metal box and glossy dielectric sphere kept, Mitsuba shading
       them with our Cook–Torrance as a Python BSDF (bench/mitsuba_cook_torrance.py; ctest
-      pt_mitsuba_glossy_agreement).
+      pt_mitsuba_glossy_agreement); the benchmark's --glossy is the built-in scene's materials.
+
+The LLVM variant needs LLVM >= 17 for drjit 1.5: Debian's libllvm19 (scripts/setup.sh), found
+through DRJIT_LIBLLVM_PATH (set for the worker when unset).
 
 The scene is scenes/cornell_box.gltf with flat normals, the camera moved off its symmetry plane
 (cornell_scene says why), its two glossy objects made Lambertian (kept with --glossy) and its spot made
@@ -22,8 +35,8 @@ hard-edged (inner 0.75 rad, outer 0.7505 rad): glTF's cone falloff (KHR_lights_p
 Mitsuba's (linear in angle) differ inside the transition, so the transition is made 0.5 mrad wide.
 Both renderers get the same triangles, albedos, emission (front faces only), camera and light
 (radiant intensity in W/sr; glTF candela are read as such by ref/pt). Our path tracer shoots every
-camera ray through the pixel centre (so its pixels are the VCT frame's), so the test traces
-Mitsuba's camera rays through pixel centres too; the benchmark uses mi.render (box filter).
+camera ray through the pixel centre (so its pixels are the VCT frame's), so the test and the
+benchmark trace Mitsuba's camera rays through pixel centres too (--estimand box: mi.render).
 """
 import argparse
 import base64
