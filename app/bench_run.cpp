@@ -22,7 +22,6 @@
 #include "pt/ray_throughput.h"
 #include "stages/pipeline.h"
 #include "stages/scene_footprint.h"
-#include "stages/shadow_map.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
