@@ -254,6 +254,7 @@ def render_centres(mi, scene, size, spp, seed):
     x, y = mi.Float(pixel % size), mi.Float(pixel // size)
     ray, weight = sensor.sample_ray(0.0, 0.5, mi.Point2f((x + 0.5) / size, (y + 0.5) / size), mi.Point2f(0.5, 0.5))
     spec = integrator.sample(scene, sampler, ray)[0] * weight
+    dr.eval(spec)  # one kernel for the three channels: block_sum evaluates its input, channel by channel
     channels = [np.array(dr.block_sum(spec[c], spp), dtype=np.float64) / spp for c in range(3)]
     return np.stack(channels, axis=-1).reshape(size, size, 3)
 
