@@ -1,7 +1,5 @@
 #include "bench_run.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
@@ -10,18 +8,19 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 #include "compare/stage_timings.h"
 #include "core/error.h"
-#include "interrupt.h"
-#include "io/bounded_json.h"
 #include "core/memory_budget.h"
 #include "core/parallel.h"
+#include "freedoms/reference_frame.h"
+#include "interrupt.h"
+#include "io/bounded_json.h"
 #include "io/run_dir.h"
 #include "pt/ray_throughput.h"
-#include "freedoms/reference_frame.h"
-#include "stages/shadow_map.h"
+#include "stages/scene_footprint.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
@@ -165,7 +164,7 @@ nlohmann::json run_bench(const Scene& scene, const Settings& s, const BenchOptio
   j["scene"] = {{"source", scene.source}, {"triangles", scene.triangle_count()}};
   j["settings"] = s;
   j["repeat"] = o.repeat;
-  j["memory"]["predicted"] = format_bytes(estimate_memory(s, shadow_map_layers(scene)).total());
+  j["memory"]["predicted"] = format_bytes(estimate_memory(s, scene_footprint(scene)).total());
   j["ref"] = ref_times(scene, s, o.repeat);
   std::string note, renderer;
   j["gl"] = o.gl ? gl_times(scene, s, o.repeat, note, renderer) : nlohmann::json(nullptr);

@@ -6,29 +6,28 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
+#include "camera_aspect.h"
 #include "commands.h"
 #include "compare/dump_manifest.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
 #include "core/memory_budget.h"
+#include "freedoms/reference_frame.h"
 #include "io/atomic_file.h"
 #include "io/bounded_json.h"
 #include "io/image_io.h"
 #include "io/run_dir.h"
 #include "options.h"
-#include "scene/gltf_loader.h"
 #include "scene/exposure.h"
-#include "camera_aspect.h"
+#include "scene/gltf_loader.h"
 #include "scene_warnings.h"
 #include "stages/dumps.h"
 #include "stages/explain.h"
-#include "freedoms/reference_frame.h"
-#include "stages/shadow_map.h"
+#include "stages/scene_footprint.h"
 
 #ifdef VCT_HAVE_GL  // the GL backend is a build option (VCT_BUILD_GL)
 #include "gl/gl_context.h"
@@ -213,6 +212,9 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     }
   }
   if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
+  // Predicted with the loaded scene (triangles, textures, alpha masks) before anything is rendered.
+  const MemoryEstimate predicted = estimate_memory(settings, scene_footprint(scene));
+  warn_if_memory_short(predicted, "vct render");
   const std::function<FrameResult()> render_frame = prepare_frame(scene, settings, flags);
   // Locked before rendering, so a second process writing the same --out is refused at once.
   RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);
@@ -243,15 +245,17 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     write_explain(run, scene, frame, settings.vct, *explain);
   }
   // Predicted up front (validate_settings refuses what cannot fit) beside what the run used.
-  const MemoryEstimate predicted = estimate_memory(settings, shadow_map_layers(scene));
   run.json()["memory"] = {{"predicted_bytes", predicted.total()},
                           {"predicted_voxel_bytes", predicted.voxels},
+                          {"predicted_scene_bytes", predicted.scene},
                           {"predicted", format_bytes(predicted.total())},
                           {"peak_rss_bytes", peak_rss_bytes()},
                           {"peak_rss", format_bytes(peak_rss_bytes())}};
   run.finish();
-  std::printf("vct render: %s frame of %s in %.0f ms -> %s\n", frame.backend.c_str(), scene.source.c_str(),
-              frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0, run.path().c_str());
+  std::printf("vct render: %s frame of %s in %.0f ms, memory predicted %s, peak RSS %s -> %s\n",
+              frame.backend.c_str(), scene.source.c_str(),
+              frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0,
+              format_bytes(predicted.total()).c_str(), format_bytes(peak_rss_bytes()).c_str(), run.path().c_str());
 }
 
 }  // namespace

@@ -8,13 +8,15 @@ sample is Mitsuba's: a mixture of its cosine-hemisphere warp and its GGX visible
 (mi.MicrofacetDistribution), not ref/pt/bsdf_sampling.cpp. Two-sided as our path tracer shades
 (ref/pt/integrator.cpp orient_normals: the normal is turned toward the viewer).
 
-Import it after mi.set_variant (its class derives from the variant's mi.BSDF).
+Import it after mi.set_variant (its class derives from the variant's mi.BSDF); it runs on scalar
+and vectorised (llvm_ad_rgb) variants alike.
 
 Parameters (floats): albedo_r, albedo_g, albedo_b, metallic, roughness, specular_factor.
 The KHR_materials_specular colour is taken as white (the scenes this is used on do not set it).
 """
 import math
 
+import drjit as dr
 import mitsuba as mi
 
 MIN_ROUGHNESS = 0.03  # vct_shared.h MIN_ROUGHNESS
@@ -39,9 +41,10 @@ class SurfacePbr:
 def ggx_distribution(n_dot_h, sin2, roughness):
     """vct_shared.h ggx_distribution, from cos and sin² of the half vector's angle."""
     a2 = roughness ** 4
-    c2, s2 = (n_dot_h * n_dot_h, sin2) if n_dot_h > 0.0 else (0.0, 1.0)
+    up = n_dot_h > 0.0
+    c2, s2 = dr.select(up, n_dot_h * n_dot_h, 0.0), dr.select(up, sin2, 1.0)
     d = c2 * a2 + s2
-    return a2 / max(math.pi * d * d, 1e-12)
+    return a2 / dr.maximum(math.pi * d * d, 1e-12)
 
 
 def schlick_ggx_g1(n_dot_x, roughness):
@@ -50,18 +53,18 @@ def schlick_ggx_g1(n_dot_x, roughness):
 
 
 def cook_torrance(s, v, l):
-    """f(l, v) per channel, local frame (z = normal), v and l pointing away from the surface."""
-    if l[2] <= 0.0 or v[2] <= 0.0:
-        return [0.0, 0.0, 0.0]
-    h = [v[i] + l[i] for i in range(3)]
-    norm = math.sqrt(sum(c * c for c in h))
-    h = [c / norm for c in h]
-    m5 = min(max(1.0 - max(sum(h[i] * v[i] for i in range(3)), 0.0), 0.0), 1.0) ** 5
-    fresnel = [f0 + (s.f90 - f0) * m5 for f0 in s.f0]
-    d = ggx_distribution(h[2], h[0] * h[0] + h[1] * h[1], s.roughness)
-    g = schlick_ggx_g1(l[2], s.roughness) * schlick_ggx_g1(v[2], s.roughness)
-    spec = d * g / (4.0 * l[2] * v[2])
-    return [fresnel[i] * spec + (1.0 - fresnel[i]) * (1.0 - s.metallic) * s.albedo[i] / math.pi for i in range(3)]
+    """f(l, v) per channel (mi.Color3f), local frame (z = normal), v and l pointing away from the
+    surface; written with Dr.Jit selects so that one definition runs per ray (scalar variants)
+    and per wavefront (llvm_ad_rgb)."""
+    active = (l.z > 0.0) & (v.z > 0.0)
+    h = dr.normalize(v + l)
+    m5 = dr.clip(1.0 - dr.maximum(dr.dot(h, v), 0.0), 0.0, 1.0) ** 5
+    fresnel = mi.Color3f(s.f0) + (s.f90 - mi.Color3f(s.f0)) * m5
+    d = ggx_distribution(h.z, h.x * h.x + h.y * h.y, s.roughness)
+    g = schlick_ggx_g1(l.z, s.roughness) * schlick_ggx_g1(v.z, s.roughness)
+    spec = d * g / dr.select(active, 4.0 * l.z * v.z, 1.0)
+    f = fresnel * spec + (1.0 - fresnel) * ((1.0 - s.metallic) / math.pi) * mi.Color3f(s.albedo)
+    return dr.select(active, f, 0.0)
 
 
 class VctCookTorrance(mi.BSDF):
@@ -79,57 +82,51 @@ class VctCookTorrance(mi.BSDF):
         self.m_flags = flags
 
     @staticmethod
-    def _upper(wi, wo):
-        """Both directions turned to the side wi is on (two-sided shading)."""
-        sign = 1.0 if wi[2] >= 0.0 else -1.0
-        return [wi[0], wi[1], wi[2] * sign], [wo[0], wo[1], wo[2] * sign]
+    def _sign(wi):
+        """+1 or -1: both directions are turned to the side wi is on (two-sided shading)."""
+        return dr.select(wi.z >= 0.0, 1.0, -1.0)
 
     def _pdf(self, v, l):
-        if l[2] <= 0.0 or v[2] <= 0.0:
-            return 0.0
-        pdf = (1.0 - self.p_specular) * l[2] / math.pi
-        h = mi.ScalarVector3f(v[0] + l[0], v[1] + l[1], v[2] + l[2])
-        h = h / math.sqrt(h[0] ** 2 + h[1] ** 2 + h[2] ** 2)
-        l_dot_h = l[0] * h[0] + l[1] * h[1] + l[2] * h[2]
-        if self.p_specular > 0.0 and l_dot_h > 0.0:
-            pdf += self.p_specular * self.distribution.pdf(mi.Vector3f(v), mi.Vector3f(h)) / (4.0 * l_dot_h)
-        return pdf
+        active = (l.z > 0.0) & (v.z > 0.0)
+        pdf = (1.0 - self.p_specular) * l.z / math.pi
+        if self.p_specular > 0.0:
+            h = dr.normalize(v + l)
+            l_dot_h = dr.dot(l, h)
+            spec = self.p_specular * self.distribution.pdf(v, h) / dr.select(l_dot_h > 0.0, 4.0 * l_dot_h, 1.0)
+            pdf = pdf + dr.select(l_dot_h > 0.0, spec, 0.0)
+        return dr.select(active, pdf, 0.0)
 
     def _value(self, v, l):
-        f = cook_torrance(self.surface, v, l)
-        return mi.Color3f(f[0] * l[2], f[1] * l[2], f[2] * l[2])  # Mitsuba's eval includes cos(wo)
+        return cook_torrance(self.surface, v, l) * l.z  # Mitsuba's eval includes cos(wo)
 
     def sample(self, ctx, si, sample1, sample2, active=True):
-        v, _ = self._upper(si.wi, si.wi)
-        if sample1 < self.p_specular:
-            m, _ = self.distribution.sample(mi.Vector3f(v), sample2)
-            v_dot_m = v[0] * m[0] + v[1] * m[1] + v[2] * m[2]
-            l = [2.0 * v_dot_m * m[i] - v[i] for i in range(3)]
-        else:
-            w = mi.warp.square_to_cosine_hemisphere(sample2)
-            l = [w[0], w[1], w[2]]
-        bs = mi.BSDFSample3f()
+        sign = self._sign(si.wi)
+        v = mi.Vector3f(si.wi.x, si.wi.y, si.wi.z * sign)
+        m, _ = self.distribution.sample(v, sample2)
+        l = dr.select(sample1 < self.p_specular, 2.0 * dr.dot(v, m) * m - v,
+                      mi.Vector3f(mi.warp.square_to_cosine_hemisphere(sample2)))
         pdf = self._pdf(v, l)
-        if pdf <= 0.0:
-            return bs, mi.Color3f(0.0)
-        sign = 1.0 if si.wi[2] >= 0.0 else -1.0
-        bs.wo = mi.Vector3f(l[0], l[1], l[2] * sign)
-        bs.pdf = pdf
+        valid = pdf > 0.0
+        bs = dr.zeros(mi.BSDFSample3f)
+        bs.wo = mi.Vector3f(l.x, l.y, l.z * sign)
+        bs.pdf = dr.select(valid, pdf, 0.0)
         bs.eta = 1.0
-        bs.sampled_type = int(mi.BSDFFlags.GlossyReflection)
-        bs.sampled_component = 0
-        return bs, self._value(v, l) / pdf
+        bs.sampled_type = mi.UInt32(int(mi.BSDFFlags.GlossyReflection))
+        bs.sampled_component = mi.UInt32(0)
+        return bs, dr.select(valid, self._value(v, l) / dr.select(valid, pdf, 1.0), 0.0)
+
+    def _local(self, si, wo):
+        sign = self._sign(si.wi)
+        return mi.Vector3f(si.wi.x, si.wi.y, si.wi.z * sign), mi.Vector3f(wo.x, wo.y, wo.z * sign)
 
     def eval(self, ctx, si, wo, active=True):
-        v, l = self._upper(si.wi, wo)
-        return self._value(v, l)
+        return self._value(*self._local(si, wo))
 
     def pdf(self, ctx, si, wo, active=True):
-        v, l = self._upper(si.wi, wo)
-        return self._pdf(v, l)
+        return self._pdf(*self._local(si, wo))
 
     def eval_pdf(self, ctx, si, wo, active=True):
-        v, l = self._upper(si.wi, wo)
+        v, l = self._local(si, wo)
         return self._value(v, l), self._pdf(v, l)
 
     def traverse(self, callback):

@@ -16,6 +16,9 @@ APT_PACKAGES=(
   libglm-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   chromium ccache
+  # Dr.Jit's LLVM backend (Mitsuba's llvm_ad_rgb in bench/mitsuba_compare.py) needs LLVM >= 17;
+  # Mesa keeps its own LLVM 15. A library only: nothing links against it.
+  libllvm19
 )
 
 missing=()

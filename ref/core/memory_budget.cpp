@@ -90,14 +90,15 @@ bool keeps_multibounce_frames(const VctSettings& v) {
   return v.bounces > 1 && frame_bytes * uint64_t(v.bounces - 1) <= 256 * kMiB;
 }
 
-MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
+MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   const VctSettings& v = s.vct;
   MemoryEstimate e;
   e.baseline = kProcessBaseline;
   e.voxels = voxel_bytes(v);
-  e.images = image_bytes(v, shadow_layers);
+  e.images = image_bytes(v, scene.shadow_layers);
   // Besides the G-buffer's VisibilityBuffer (counted in the images: it is kept for the freedoms),
-  // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
+  // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel
+  // (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
   // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
   // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images. Before the G-buffer, one map (or face) at a time, its
@@ -106,14 +107,23 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   // masked front, the front that may be kept and the surfaces behind with their doubles: the
   // camera's VisibilityBuffer and two more, 3 x 22 + 16 B per texel of the map.
   const uint64_t camera = (2 * 22 + 16) * uint64_t(v.width) * uint64_t(v.height);
-  const uint64_t light = (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size);
+  // Without alpha masks a shadow map's ties need no more than its band of scratch per thread.
+  const uint64_t light =
+      scene.alpha_tested ? (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) : 0;
   e.raster_scratch = std::max(camera, light);
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each
   // pixel's first vertex while they fit in their budget.
   const uint64_t pt_pixels = uint64_t(s.pt.width) * uint64_t(s.pt.height);
   e.path_tracer = pt_pixels * 16 * 8;
   if (pt_pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget) e.path_tracer += pt_pixels * kPtFirstVertexBytes;
+  e.scene = scene.triangles * kBytesPerTriangle + scene.texture_bytes;
   return e;
+}
+
+MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
+  SceneFootprint unknown;
+  unknown.shadow_layers = shadow_layers;
+  return estimate_memory(s, unknown);
 }
 
 uint64_t physical_memory_bytes() {
@@ -134,6 +144,14 @@ std::string format_bytes(uint64_t bytes) {
   else if (b >= 1024.0 * 1024.0) std::snprintf(buf, sizeof buf, "%.1f MiB", b / (1024.0 * 1024.0));
   else std::snprintf(buf, sizeof buf, "%.1f KiB", b / 1024.0);
   return buf;
+}
+
+bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t available) {
+  if (available == 0 || e.total() <= available) return false;
+  std::fprintf(stderr, "%s: warning: this run needs about %s (scene %s, voxels %s, images %s), but this machine has %s\n",
+               who, format_bytes(e.total()).c_str(), format_bytes(e.scene).c_str(), format_bytes(e.voxels).c_str(),
+               format_bytes(e.images).c_str(), format_bytes(available).c_str());
+  return true;
 }
 
 void check_memory_budget(const Settings& s, uint64_t available, int shadow_layers) {

@@ -26,15 +26,33 @@ struct MemoryEstimate {
   uint64_t images = 0;    // shadow maps, G-buffer, frame component images
   uint64_t raster_scratch = 0;  // the G-buffer rasterizer's visibility buffer
   uint64_t path_tracer = 0;     // path tracer accumulation and AOV images
+  uint64_t scene = 0;           // triangles (loaded, built into the BVH and the rasterizers' set-ups)
+                                // and decoded textures; 0 when the scene is not known
   /// The rasterizer's scratch is freed before voxelization starts, so only the larger counts.
   uint64_t total() const {
-    return baseline + images + (voxels > raster_scratch ? voxels : raster_scratch) + path_tracer;
+    return baseline + scene + images + (voxels > raster_scratch ? voxels : raster_scratch) + path_tracer;
   }
 };
+
+/// What a loaded scene adds to the estimate (stages/scene_footprint.h makes one from a Scene).
+/// The defaults are "not known yet": no scene term, and alpha masks assumed (their raster ties
+/// need the most scratch).
+struct SceneFootprint {
+  int shadow_layers = 1;        // shadow_map_layers(scene)
+  uint64_t triangles = 0;
+  uint64_t texture_bytes = 0;   // decoded texels of every texture and its mip levels
+  bool alpha_tested = true;     // any material with an alpha test (stages/raster_alternatives.h)
+};
+
+/// Bytes per triangle of `vct render` beyond the small-scene baseline, measured (bench/memory_bench.py,
+/// docs/performance.md "Scale: memory predicted and measured").
+constexpr uint64_t kBytesPerTriangle = 600;
 
 /// `shadow_layers`: square depth images the lights need (shadow_map_layers(scene): one per spot or
 /// directional light, six per point light); 1 when the scene is not known yet.
 MemoryEstimate estimate_memory(const Settings& s, int shadow_layers = 1);
+/// The same with a loaded scene's triangles, textures and alpha masks counted.
+MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene);
 
 /// Whether the ref pipeline keeps the base level of every multibounce frame before the last (for
 /// the dumps): only while they total at most 256 MiB. Shared so the estimate counts what is kept.
@@ -46,6 +64,10 @@ uint64_t physical_memory_bytes();
 /// Throws InputError saying how much is needed when the estimate exceeds `available` bytes
 /// (default: physical memory). Does nothing if `available` is 0 (unknown).
 void check_memory_budget(const Settings& s, uint64_t available = physical_memory_bytes(), int shadow_layers = 1);
+
+/// Prints "WHO: warning: ..." to stderr when `e` exceeds `available` bytes (default: physical
+/// memory; 0 = unknown: silent): the run may not fit. Returns whether it warned.
+bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t available = physical_memory_bytes());
 
 /// Peak resident set size of this process so far in bytes (getrusage); 0 if unknown.
 uint64_t peak_rss_bytes();

@@ -14,6 +14,18 @@ constexpr int kTile = 16;
 // The per-pixel first vertices are kept across passes up to kPtFirstVertexBudget (a 1024^2
 // image); larger images trace each sample's first vertex anew. estimate_memory counts them.
 static_assert(sizeof(Integrator::FirstVertex) <= kPtFirstVertexBytes, "core/memory_budget.h's size");
+// Pixel samples per parallel loop: a small image runs several passes per tile in one loop, so the
+// workers meet at a barrier (and spin there, libgomp's default) once per batch, not once per pass.
+constexpr uint64_t kBatchSamples = uint64_t(1) << 18;
+
+// Passes in the batch starting at pass s: the first pass of a call alone (it traces the first
+// vertices, and a caller polling for a stop sees it early), then enough for kBatchSamples, at
+// least 1, not past target.
+uint32_t batch_passes(size_t pixels, uint32_t first_pass, uint32_t s, uint32_t target) {
+  if (s == first_pass) return 1;
+  const uint64_t want = std::max<uint64_t>(1, (kBatchSamples + pixels - 1) / std::max<size_t>(pixels, 1));
+  return uint32_t(std::min<uint64_t>(want, target - s));
+}
 }  // namespace
 
 PathTracer::PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles)
@@ -40,7 +52,10 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
   const bool keep_first = pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget;
   std::vector<Integrator::FirstVertex> first(keep_first ? pixels : 0);
   const uint32_t first_pass = acc.samples();
-  for (uint32_t s = acc.samples(); s < target_spp; ++s) {
+  for (uint32_t s = acc.samples(); s < target_spp;) {
+    // Passes [s, s_end) in one loop; each pixel takes its samples in order, so its sums are the
+    // same floats as one pass per loop (docs/pathtracer.md "Passes in batches").
+    const uint32_t s_end = s + (keep_first ? batch_passes(pixels, first_pass, s, target_spp) : 1u);
     parallel_for(tiles, [&](int64_t t) {
       const int x0 = int(t % tiles_x) * kTile, y0 = int(t / tiles_x) * kTile;
       const int x1 = std::min(x0 + kTile, acc.width()), y1 = std::min(y0 + kTile, acc.height());
@@ -52,12 +67,15 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
             continue;
           }
           Integrator::FirstVertex& f = first[size_t(y) * size_t(acc.width()) + size_t(x)];
-          if (s == first_pass) f = integrator_.first_vertex(x, y, counts);
-          acc.add(x, y, s, integrator_.trace(f, x, y, s, counts));
+          for (uint32_t p = s; p < s_end; ++p) {
+            if (p == first_pass) f = integrator_.first_vertex(x, y, counts);
+            acc.add(x, y, p, integrator_.trace(f, x, y, p, counts));
+          }
         }
       per_tile[size_t(t)] = counts;
     });
-    acc.set_samples(s + 1);
+    s = s_end;
+    acc.set_samples(s);
     for (const RayCounts& c : per_tile) total.add(c);
     if (after_pass && !after_pass(acc, total)) break;
   }

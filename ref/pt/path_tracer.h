@@ -21,8 +21,9 @@ class PathTracer {
   /// Keeps a reference to `scene`; it must outlive the tracer.
   PathTracer(const Scene& scene, const PtSettings& settings, const ParticleOptions& particles = {});
 
-  /// Called after each pass with the accumulators and the rays traced so far by this call;
-  /// returning false stops the render there (acc stays a whole number of passes).
+  /// Called after each batch of passes (one parallel loop: several passes per tile on small
+  /// images, docs/pathtracer.md "Passes in batches") with the accumulators and the rays traced so
+  /// far by this call; returning false stops the render there (acc stays a whole number of passes).
   using AfterPass = std::function<bool(const Accumulator&, const RayCounts&)>;
 
   /// Adds passes acc.samples() .. target_spp-1 to acc.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +59,7 @@ void write_run_json(RunDir& dir, const Scene& scene, const Settings& settings, c
                               {"total", result.rays.total()}}},
                     {"nonfinite_samples_dropped", result.rays.nonfinite_samples},
                     {"render_seconds", result.render_seconds},
+                    {"render_cpu_seconds", result.render_cpu_seconds},
                     {"rays_per_second", result.render_seconds > 0.0 ? rays / result.render_seconds : 0.0},
                     {"aovs", std::vector<std::string>(kAovNames, kAovNames + kAovCount)}};
   dir.add_timing("pt", "setup", build_ms);  // BVH, emitter tables, particle layer
@@ -104,6 +106,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
 
   ProgressBar bar(opt.progress, acc.samples(), uint32_t(ps.spp));
   const Stopwatch render_clock;
+  const std::clock_t render_cpu = std::clock();  // process CPU time, every thread
   auto last_checkpoint = std::chrono::steady_clock::now();
   bool stopped = false;
   result.rays = tracer.render(acc, uint32_t(ps.spp), [&](const Accumulator& a, const RayCounts& rays) {
@@ -121,6 +124,7 @@ PathtraceRunResult run_pathtrace(const Scene& scene, const Settings& settings, c
   });
   bar.finish();
   result.render_seconds = render_clock.ms() * 1e-3;
+  result.render_cpu_seconds = double(std::clock() - render_cpu) / CLOCKS_PER_SEC;
   result.spp = acc.samples();
   result.completed = !stopped && acc.samples() >= uint32_t(ps.spp);
   save_checkpoint(ckpt_path, key, acc);

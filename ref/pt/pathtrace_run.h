@@ -31,6 +31,7 @@ struct PathtraceRunResult {
   bool completed = false;     // false if stopped before reaching settings.pt.spp
   RayCounts rays;             // rays traced by this run (not by the resumed part)
   double render_seconds = 0.0;
+  double render_cpu_seconds = 0.0;  // process CPU time of the passes (all threads; bench/mitsuba_compare.py)
 };
 
 /// The hashes a checkpoint or partial-sums file of this scene and these settings carries.

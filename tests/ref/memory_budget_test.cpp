@@ -75,6 +75,38 @@ TEST(MemoryBudget, ShadowMapsFollowTheLights) {
   EXPECT_EQ(estimate_memory(s, 0).images, one - 512ull * 512 * 12);
 }
 
+// A loaded scene adds kBytesPerTriangle (600 B, measured: bench/memory_bench.py) per triangle and
+// its decoded texels; without alpha masks a shadow map's ties need no full-map scratch.
+TEST(MemoryBudget, SceneTermsFollowTrianglesTexturesAndMasks) {
+  Settings s;
+  s.vct.grid = 16;  // voxels below either scratch: the larger scratch is what the total counts
+  s.vct.width = s.vct.height = 100;
+  s.vct.shadow_map_size = 2048;
+  SceneFootprint scene;
+  scene.triangles = 1000000;
+  scene.texture_bytes = 4ull * 1024 * 1024;
+  const MemoryEstimate masked = estimate_memory(s, scene);
+  EXPECT_EQ(masked.scene, 600000000ull + 4194304ull);
+  EXPECT_EQ(masked.raster_scratch, 2048ull * 2048 * 82);
+  scene.alpha_tested = false;
+  const MemoryEstimate opaque = estimate_memory(s, scene);
+  EXPECT_EQ(opaque.raster_scratch, 100ull * 100 * 82);  // the camera's visibility buffer only
+  ASSERT_LT(opaque.voxels, opaque.raster_scratch);
+  EXPECT_EQ(masked.total() - opaque.total(), 2048ull * 2048 * 82 - 100ull * 100 * 82);
+  // Without a scene: no scene term, masks assumed (the estimate validate_settings checks).
+  EXPECT_EQ(estimate_memory(s).scene, 0u);
+  EXPECT_EQ(estimate_memory(s).raster_scratch, 2048ull * 2048 * 82);
+}
+
+// The warning before a run that may not fit: said when the estimate exceeds the machine, not otherwise.
+TEST(MemoryBudget, WarnsWhenTheEstimateExceedsTheMachine) {
+  Settings s;
+  const MemoryEstimate e = estimate_memory(s);
+  EXPECT_FALSE(warn_if_memory_short(e, "test", e.total()));
+  EXPECT_TRUE(warn_if_memory_short(e, "test", e.total() - 1));
+  EXPECT_FALSE(warn_if_memory_short(e, "test", 0));  // unknown machine size
+}
+
 // Multibounce keeps two mip pyramids (or two grids) and, while small, every earlier frame.
 TEST(MemoryBudget, MultibounceAnisotropicHandCount) {
   Settings s;
