@@ -10,7 +10,9 @@
 #include "gl_facts.h"
 #include "gl_faults.h"
 #include "gl_frame.h"
+#include "gl_labels.h"
 #include "gl_program.h"
+#include "gl_renderdoc.h"
 #include "stages/cube_map.h"
 #include "stages/shadow_map.h"
 
@@ -107,15 +109,20 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     result.info["voxelizer"] = "conservative (" + result.facts.conservative_params + ")";
   else if (settings.vct.voxelizer == Voxelizer::Conservative)
     result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; conservative_raster = gs | nv | intel for a conservative GL mode)";
-  glCreateVertexArrays(1, &f.empty_vao);
-  upload_diffuse_cone_block(f);
-  shadow_pass(f);
-  gbuffer_pass(f);
-  voxel_passes(f);
-  direct_pass(f);
-  indirect_pass(f);
-  particle_pass(f);
-  glFinish();
+  {
+    RenderDocFrame capture;  // one capture of the frame when RenderDoc is injected (gl_renderdoc.h)
+    glCreateVertexArrays(1, &f.empty_vao);
+    upload_diffuse_cone_block(f);
+    shadow_pass(f);
+    gbuffer_pass(f);
+    voxel_passes(f);
+    direct_pass(f);
+    indirect_pass(f);
+    particle_pass(f);
+    label_frame_textures(f);
+    glFinish();
+    capture.end();
+  }
   result.timings_ms = f.timers.collect();
   double total = 0.0;
   for (const auto& [name, ms] : result.timings_ms) total += ms;

@@ -123,17 +123,21 @@ def scalar_reader(rd, fmt):
 def to_floats(rd, fmt, data, texels):
     """The texture's bytes as floats, texels * channels, and the channel count."""
     if fmt.type == rd.ResourceFormatType.D32S8:  # float depth, 8-bit stencil, 24 bits padding
-        return [v for v in struct.unpack_from(f"<{texels * 2}f", data)[0::2]], 1
+        return array.array("f", struct.unpack_from(f"<{texels * 2}f", data)[0::2]), 1
     if fmt.type == rd.ResourceFormatType.D24S8:  # GL packs depth in the high 24 bits (GL 4.5 §8.4.4.2)
-        return [(v >> 8) / 16777215.0 for v in struct.unpack_from(f"<{texels}I", data)], 1
+        return array.array("f", [(v >> 8) / 16777215.0 for v in struct.unpack_from(f"<{texels}I", data)]), 1
     if fmt.type != rd.ResourceFormatType.Regular:
         raise Failure(EXIT_BAD_INPUT, f"format {fmt.Name()} is not one vct import-capture converts")
     code, scale = scalar_reader(rd, fmt)
     if code is None:
         raise Failure(EXIT_BAD_INPUT, f"format {fmt.Name()} is not one vct import-capture converts")
     n = texels * fmt.compCount
-    values = struct.unpack_from(f"<{n}{code}", data)
-    out = [float(v) * scale for v in values] if scale != 1.0 else [float(v) for v in values]
+    if code == "f":  # float32 as stored: no per-value work (a 256^3 RGBA volume is 67 M values)
+        out = array.array("f")
+        out.frombytes(data[: n * 4])
+    else:
+        values = struct.unpack_from(f"<{n}{code}", data)
+        out = array.array("f", [float(v) * scale for v in values])
     if fmt.BGRAOrder() and fmt.compCount >= 3:
         for i in range(0, n, fmt.compCount):
             out[i], out[i + 2] = out[i + 2], out[i]
@@ -159,7 +163,7 @@ def read_stage(rd, controller, stage):
     if mip >= tex.mips or (tex.depth == 1 and layer >= tex.arraysize) or sample >= max(1, tex.msSamp):
         raise Failure(EXIT_BAD_INPUT, f"{where}: '{stage['resource']}' has {tex.mips} levels, {tex.arraysize} layers, "
                                       f"{tex.msSamp} samples; asked level {mip}, layer {layer}, sample {sample}")
-    controller.SetFrameEvent(eid, True)
+    controller.SetFrameEvent(eid, False)  # replayed only when the event differs from the last
     w, h = max(1, tex.width >> mip), max(1, tex.height >> mip)
     d = max(1, tex.depth >> mip) if tex.depth > 1 else 1
     data = bytes(controller.GetTextureData(rid, rd.Subresource(mip, layer if d == 1 else 0, sample)))
@@ -180,7 +184,7 @@ def main(argv):
         for i, stage in enumerate(stages):
             entry, values = read_stage(rd, controller, stage)
             with open(os.path.join(outdir, f"{i}.f32"), "wb") as f:
-                array.array("f", values).tofile(f)
+                values.tofile(f)
             index.append(entry)
         with open(os.path.join(outdir, "index.json"), "w") as f:
             json.dump(index, f)
