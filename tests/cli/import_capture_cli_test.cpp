@@ -56,19 +56,30 @@ TEST(ImportCaptureCli, NotACaptureIsExit2) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The oracle's own settings for a GL run judged against the reference (app/validate_run.cpp: the
+// GPU's coverage rule, the deterministic reduction); the map's mip chain is the 64^3 grid's.
+const std::string kFrame = "--backend gl --width 64 --height 48 --grid 64 --shadow-map-size 256 --voxelizer gpu --reduction fixed ";
+
+// Renders `render_args` under renderdoccmd into dir/run and imports dir/frame_capture.rdc into
+// dir/imported; "" or why not.
+std::string capture_and_import(const fs::path& dir, const std::string& render_args) {
+  const std::string capture_cmd = "renderdoccmd capture -w -d " + q(dir) + " -c " + q(dir / "frame") + " '" + std::string(VCT_BINARY) +
+                                  "' render " + render_args + " --out " + q(dir / "run") + " > " + q(dir / "capture.log") + " 2>&1";
+  // Not its exit code: renderdoccmd reports "Couldn't connect to target program" when a short run
+  // exits before its target-control handshake, though the capture is written (the library is
+  // preloaded into the program, which captures itself, gl_renderdoc.h).
+  (void)std::system(capture_cmd.c_str());
+  const fs::path rdc = dir / "frame_capture.rdc";  // RenderDoc appends "_capture" to the template
+  if (!fs::exists(rdc)) return "no capture written: " + test::slurp(dir / "capture.log");
+  const auto r = test::run_vct_captured("import-capture " + q(rdc) + " --map " + q(gl_map()) + " --out " + q(dir / "imported"));
+  return r.exit_code == 0 ? "" : "import-capture: " + r.err;
+}
+
 TEST(ImportCaptureCli, OurGlFrameImportsToItsOwnDump) {
   if (const std::string why = renderdoc_missing(); !why.empty()) GTEST_SKIP() << why;
   const fs::path dir = test::fresh_dir("import_gl");
-  // The map's mip chain is the 64^3 grid's (levels 1..6).
-  const std::string render = "render --backend gl --width 64 --height 48 --grid 64 --shadow-map-size 256 --dump --out ";
-  if (test::run_vct(render + q(dir / "probe")) == 3) GTEST_SKIP() << "no GL context";
-  const std::string capture_cmd = "renderdoccmd capture -w -c " + q(dir / "frame") + " '" + std::string(VCT_BINARY) + "' " + render +
-                                  q(dir / "run") + " > " + q(dir / "capture.log") + " 2>&1";
-  ASSERT_EQ(std::system(capture_cmd.c_str()), 0) << test::slurp(dir / "capture.log");
-  const fs::path rdc = dir / "frame_capture.rdc";  // RenderDoc appends "_capture" to the template
-  ASSERT_TRUE(fs::exists(rdc)) << test::slurp(dir / "capture.log");
-  const auto r = test::run_vct_captured("import-capture " + q(rdc) + " --map " + q(gl_map()) + " --out " + q(dir / "imported"));
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  if (test::run_vct("render " + kFrame + "--out " + q(dir / "probe")) == 3) GTEST_SKIP() << "no GL context";
+  ASSERT_EQ(capture_and_import(dir, kFrame + "--dump"), "");
   const cmp::StageSet dumped = cmp::read_stage_set((dir / "run").string());
   const cmp::StageSet imported = cmp::read_stage_set((dir / "imported").string());
   EXPECT_EQ(imported.images.size() + imported.volumes.size(), 25u);
@@ -85,8 +96,30 @@ TEST(ImportCaptureCli, OurGlFrameImportsToItsOwnDump) {
     ASSERT_EQ(d.channels, vol.channels) << name;
     EXPECT_EQ(d.data, vol.data) << name;
   }
-  // And vct compare judges the pair identical.
-  EXPECT_EQ(test::run_vct("compare " + q(dir / "run") + " " + q(dir / "imported")), 0);
+}
+
+// The docs' worked example (docs/external_format.md, "From a RenderDoc capture"): capture, import,
+// render the reference with the run's facts, compare. A correct frame passes; a frame with a bug
+// compiled in (gl_faults.h: iso mip l built from level l-2) fails first at mip.iso.2.
+TEST(ImportCaptureCli, ACapturedFrameIsJudgedAndItsBugFoundAtItsStage) {
+  if (const std::string why = renderdoc_missing(); !why.empty()) GTEST_SKIP() << why;
+  const fs::path root = test::fresh_dir("import_judged");
+  if (test::run_vct("render " + kFrame + "--out " + q(root / "probe")) == 3) GTEST_SKIP() << "no GL context";
+  for (const std::string fault : {"", "wrong_mip"}) {
+    const fs::path dir = root / (fault.empty() ? "clean" : fault);
+    fs::create_directories(dir);
+    ASSERT_EQ(capture_and_import(dir, kFrame + (fault.empty() ? "" : "--gl-fault " + fault)), "");
+    const std::string ref_args = "render --backend ref --width 64 --height 48 --grid 64 --shadow-map-size 256 --voxelizer gpu "
+                                 "--reduction fixed --dump --facts-from " + q(dir / "run" / "run.json") + " --out " + q(dir / "ref");
+    ASSERT_EQ(test::run_vct(ref_args), 0);
+    const auto verdict = test::run_vct_captured("compare " + q(dir / "ref") + " " + q(dir / "imported"));
+    if (fault.empty()) {
+      EXPECT_EQ(verdict.exit_code, 0) << verdict.out;
+    } else {
+      EXPECT_EQ(verdict.exit_code, 1) << verdict.out;
+      EXPECT_NE(verdict.out.find("first failing stage: mip.iso.2"), std::string::npos) << verdict.out;
+    }
+  }
 }
 
 }  // namespace
