@@ -92,6 +92,7 @@ const Image& reference_in_linear(const std::string& stage, const StageSet& rs, I
   if (own.decodable()) {
     decoded = stored;
     decode_display_direct(own, decoded);
+    in.reference_quantisation = own.quantisation_allowance();
     return decoded;
   }
   if (in.display && to_json(*in.display) == to_json(own)) in.display = nullptr;
