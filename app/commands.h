@@ -18,5 +18,6 @@ void register_stages(CLI::App& app, int& exit_code);
 void register_metamorphic(CLI::App& app, int& exit_code);
 void register_attribute(CLI::App& app, int& exit_code);
 void register_import_capture(CLI::App& app, int& exit_code);
+void register_config_from_manifest(CLI::App& app, int& exit_code);
 
 }  // namespace vct::app

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/reduction_names.h"
 
 namespace vct::cmp {
 namespace fs = std::filesystem;
@@ -69,7 +70,7 @@ void fill_header(const CaptureMap& map, StageSet& set) {
   const nlohmann::json& m = map.manifest;
   set.backend = string_or(m, "backend", "capture");
   set.storage = string_or(m, "storage", "rgba32f");
-  set.reduction = string_or(m, "reduction", "exact_mean");
+  set.reduction = manifest_reduction_name(reduction_from_name(string_or(m, "reduction", "exact_mean")).value_or(Reduction::ExactMean));
   if (m.contains("settings")) set.settings = m["settings"];
   if (m.contains("info")) set.info = m["info"];
   if (m.contains("facts")) set.facts = m["facts"].get<BackendFacts>();

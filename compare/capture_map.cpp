@@ -4,6 +4,7 @@
 
 #include "compare/conventions.h"
 #include "core/error.h"
+#include "core/reduction_names.h"
 #include "io/bounded_json.h"
 #include "stages/backend_facts.h"
 #include "stages/stage_registry.h"
@@ -18,7 +19,6 @@ const std::set<std::string> kTopKeys = {"format", "version", "rows", "manifest",
 const std::set<std::string> kManifestKeys = {"backend", "storage", "reduction", "settings", "facts", "conventions", "info"};
 const std::set<std::string> kStageKeys = {"resource", "event", "mip", "slice", "sample", "channels", "rows", "kind"};
 const std::set<std::string> kStorages = {"rgba8", "rgba16f", "rgba32f"};
-const std::set<std::string> kReductions = {"exact_mean", "fixed_point", "cas_rgba8", "running_mean"};
 
 void check_keys(const json& j, const std::set<std::string>& allowed, const std::string& where, const std::string& path) {
   if (!j.is_object()) throw InputError(path, where + " must be an object");
@@ -92,9 +92,9 @@ void check_manifest(const json& m, const std::string& path) {
   check_keys(m, kManifestKeys, "\"manifest\"", path);
   if (m.contains("storage") && !kStorages.count(m["storage"].get<std::string>()))
     throw InputError(path, "unknown storage '" + m["storage"].get<std::string>() + "' (rgba8, rgba16f, rgba32f)");
-  if (m.contains("reduction") && !kReductions.count(m["reduction"].get<std::string>()))
+  if (m.contains("reduction") && !reduction_from_name(m["reduction"].get<std::string>()))
     throw InputError(path, "unknown reduction '" + m["reduction"].get<std::string>() +
-                               "' (exact_mean, fixed_point, cas_rgba8, running_mean)");
+                               "' (exact_mean | fixed_point | cas_rgba8 | running_mean, or the settings' exact | fixed | cas)");
   for (const char* key : {"settings", "info"})
     if (m.contains(key) && !m[key].is_object()) throw InputError(path, std::string("\"manifest\".\"") + key + "\" must be an object");
   if (m.contains("facts")) (void)m["facts"].get<BackendFacts>();

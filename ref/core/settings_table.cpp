@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/reduction_names.h"
 #include "io/bounded_json.h"
 
 namespace vct {
@@ -56,9 +57,29 @@ const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
 }
 template <>
 const std::vector<std::pair<Reduction, const char*>>& enum_names() {
-  static const std::vector<std::pair<Reduction, const char*>> m{
-      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"},
-      {Reduction::RunningMeanHalf, "running_mean"}};
+  static const std::vector<std::pair<Reduction, const char*>> m = [] {
+    std::vector<std::pair<Reduction, const char*>> names;
+    for (const ReductionName& r : kReductionNames) names.emplace_back(r.value, r.setting);
+    return names;
+  }();
+  return m;
+}
+
+// Other spellings a choice also accepts (read, never written): the manifest's reduction names
+// (core/reduction_names.h), so a stage set's "reduction" can be given to --set / --config as is.
+template <typename Enum>
+const std::vector<std::pair<Enum, const char*>>& enum_aliases() {
+  static const std::vector<std::pair<Enum, const char*>> none;
+  return none;
+}
+template <>
+const std::vector<std::pair<Reduction, const char*>>& enum_aliases() {
+  static const std::vector<std::pair<Reduction, const char*>> m = [] {
+    std::vector<std::pair<Reduction, const char*>> names;
+    for (const ReductionName& r : kReductionNames)
+      if (std::string(r.manifest) != r.setting) names.emplace_back(r.value, r.manifest);
+    return names;
+  }();
   return m;
 }
 template <>
@@ -190,13 +211,16 @@ SettingField<S> choice(const char* key, E S::*member, const char* help) {
   f.set = [member, key](S& s, const nlohmann::json& j, const std::string& scope) {
     if (!j.is_string()) throw InputError("", "setting '" + scope + key + "' must be a string");
     const std::string name = j.get<std::string>();
-    for (const auto& [value, n] : enum_names<E>())
-      if (name == n) {
-        s.*member = value;
-        return;
-      }
+    for (const auto* names : {&enum_names<E>(), &enum_aliases<E>()})
+      for (const auto& [value, n] : *names)
+        if (name == n) {
+          s.*member = value;
+          return;
+        }
+    std::vector<std::string> aliases;
+    for (const auto& [value, n] : enum_aliases<E>()) aliases.push_back(n);
     throw InputError("", "setting '" + scope + key + "' is '" + name + "', expected one of " +
-                             join(choice_names<E>(), "|"));
+                             join(choice_names<E>(), "|") + (aliases.empty() ? "" : " (or " + join(aliases, "|") + ")"));
   };
   return f;
 }
