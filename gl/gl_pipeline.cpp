@@ -76,6 +76,10 @@ void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOpti
     throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
                                  "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
                                  "shadow_ortho_box are for the reference");
+  if (settings.vct.n_dot_v != NdotV::Zero)
+    // direct.frag calls the shared cook_torrance (NV_ZERO); an engine's view cosine (issue 39) is
+    // the reference's only.
+    throw InputError("settings", "the GL backend runs the oracle's view cosine; n_dot_v = abs | clamp is for the reference");
   if (settings.vct.indirect_fresnel != IndirectFresnel::Schlick)
     // The composite's Fresnel is the shared sh::fresnel_schlick in indirect.frag; an engine's
     // other one (issue 21) is the reference's only.
