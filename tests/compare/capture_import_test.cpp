@@ -88,8 +88,8 @@ TEST(CaptureMap, RefusesWhatItCannotRead) {
   no_kind["stages"]["my.debug"] = {{"resource", "x"}};
   EXPECT_NE(problem_of(no_kind).find("say \"kind\""), std::string::npos);
   json bad_reduction = good_map();
-  bad_reduction["manifest"]["reduction"] = "exact";
-  EXPECT_NE(problem_of(bad_reduction).find("unknown reduction 'exact'"), std::string::npos);
+  bad_reduction["manifest"]["reduction"] = "exactly";
+  EXPECT_NE(problem_of(bad_reduction).find("unknown reduction 'exactly'"), std::string::npos);
   json bad_convention = good_map();
   bad_convention["manifest"]["conventions"]["mip_scael"] = 2;
   EXPECT_NE(problem_of(bad_convention).find("mip_scael"), std::string::npos) << problem_of(bad_convention);
@@ -150,6 +150,11 @@ TEST(CaptureImport, FlipsGlRowsKeepsChannelsAndCarriesTheManifest) {
   const Image& shadow = set.images.at("shadow_map.0");
   EXPECT_EQ(shadow.at(0, 0, 0), 0.1f);
   EXPECT_EQ(shadow.channel_names, std::vector<std::string>{"Z"});
+  // The settings' spelling of a reduction is read too and written in the manifest's.
+  json settings_spelling = good_map();
+  settings_spelling["manifest"]["reduction"] = "fixed";
+  EXPECT_EQ(stage_set_from_capture(parse_capture_map(settings_spelling, "map.json"), textures_for_good_map()).reduction,
+            "fixed_point");
   // Volumes keep the API's order (voxel coordinates, every API).
   const Volume& v = set.volumes.at("voxel.radiance");
   ASSERT_EQ(v.data.size(), 32u);
