@@ -433,7 +433,9 @@ ElementCase cook_torrance_case() {
 // The view cosine's modes (issue 39): exact operations, so bit-exact on both sides.
 ElementCase view_cosine_case() {
   ElementCase c{"view_cosine", "f", 1, "", nullptr, {}};
-  for (float x : {-1.0f, -0.5f, -1e-4f, -1e-7f, -0.0f, 0.0f, 1e-7f, 5e-5f, 1e-4f, 2e-4f, 0.3f, 1.0f})
+  // No -0: llvmpipe's abs gives +0 where the C++ comparison keeps -0, and the BRDF takes either
+  // as n.v <= 0 (a zero's sign is no value GLSL 4.50 §4.7.1 pins).
+  for (float x : {-1.0f, -0.5f, -1e-4f, -1e-7f, 0.0f, 1e-7f, 5e-5f, 1e-4f, 2e-4f, 0.3f, 1.0f})
     for (int mode : {sh::NV_ZERO, sh::NV_ABS, sh::NV_CLAMP}) c.inputs.push_back(words(vec4(x, float(mode), 0, 0)));
   c.glsl = "vec4 a = fin(0u);\nput(0u, vec4(view_cosine(a.x, int(a.y)), 0.0f, 0.0f, 0.0f));";
   c.cpu = [](const uvec4* in) {
