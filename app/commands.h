@@ -17,5 +17,7 @@ void register_settings(CLI::App& app, int& exit_code);
 void register_stages(CLI::App& app, int& exit_code);
 void register_metamorphic(CLI::App& app, int& exit_code);
 void register_attribute(CLI::App& app, int& exit_code);
+void register_import_capture(CLI::App& app, int& exit_code);
+void register_config_from_manifest(CLI::App& app, int& exit_code);
 
 }  // namespace vct::app

@@ -56,6 +56,8 @@ void check_sizes(const nlohmann::json& layer, const nlohmann::json& data, const 
                                   " (gbuffer.coverage, voxel.radiance)");
 }
 
+}  // namespace
+
 nlohmann::json data_sizes(const cmp::StageSet& test) {
   nlohmann::json sizes = nlohmann::json::object();
   // A partial G-buffer (compare/partial_gbuffer.h) has no coverage: its depth gives the size.
@@ -68,8 +70,6 @@ nlohmann::json data_sizes(const cmp::StageSet& test) {
   if (test.volumes.count(stage_names::kVoxelRadiance)) sizes["grid"] = test.volumes.at(stage_names::kVoxelRadiance).nx;
   return sizes;
 }
-
-}  // namespace
 
 VctSettings settings_of_test_set(const cmp::StageSet& test, const std::string& config) {
   nlohmann::json merged = VctSettings();

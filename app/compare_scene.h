@@ -21,6 +21,10 @@ namespace vct::app {
 /// different one is an InputError.
 VctSettings settings_of_test_set(const cmp::StageSet& test, const std::string& config);
 
+/// width, height (gbuffer.coverage, else gbuffer.depth) and grid (voxel.radiance) of a stage set's
+/// files, for the stages it has.
+nlohmann::json data_sizes(const cmp::StageSet& test);
+
 struct IsolatedInputs {
   Scene scene;
   VctSettings settings;

@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
   app::register_stages(app, exit_code);
   app::register_metamorphic(app, exit_code);
   app::register_attribute(app, exit_code);
+  app::register_import_capture(app, exit_code);
+  app::register_config_from_manifest(app, exit_code);
   try {
     app.parse(argc, argv);
     return exit_code;

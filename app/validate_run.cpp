@@ -159,8 +159,8 @@ std::string exe_dir() {
   return fs::path(buf).parent_path().string();
 }
 
-// The source tree: $VCT_SOURCE_DIR, else the nearest ancestor of the executable (or of the
-// working directory) holding report/make_report.py.
+}  // namespace
+
 std::string find_source_root() {
   if (const char* env = std::getenv("VCT_SOURCE_DIR")) return env;
   for (fs::path p : {fs::path(exe_dir()), fs::current_path()}) {
@@ -177,7 +177,6 @@ std::string shell_quote(const std::string& s) {
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
-}  // namespace
 
 std::string make_report(const std::string& run_dir, std::string& why, const std::string& flip) {
   const std::string root = find_source_root();

@@ -62,6 +62,12 @@ Settings apply_sweep_value(const Settings& s, const std::string& key, const std:
 /// Parses "key=v1,v2,..."; throws InputError.
 std::pair<std::string, std::vector<std::string>> parse_sweep(const std::string& spec);
 
+/// The source tree: $VCT_SOURCE_DIR, else the nearest ancestor of the executable (or of the
+/// working directory) holding report/make_report.py; "" when none.
+std::string find_source_root();
+/// `s` quoted for /bin/sh.
+std::string shell_quote(const std::string& s);
+
 /// Finds report/make_report.py and the venv Python next to the executable's source tree;
 /// runs it on `run_dir`. Returns the index.html path, or "" with `why` filled.
 /// `flip` chooses the FLIP maps ("full": the full image only, "all": every component, "none"),

@@ -64,7 +64,7 @@ double ImageJudge::linear_bound(int x, int y, int c) const {
 
 double ImageJudge::pixel_bound(int x, int y, int c) const {
   const double b = linear_bound(x, y, c);
-  return displayed && c < 3 ? in.display->carry_bound(ref.at(x, y, c), b) + decoded_input : b;
+  return displayed && c < 3 ? in.display->carry_bound(ref.at(x, y, c), b) + decoded_input + in.reference_quantisation : b;
 }
 
 // A value a correct GL shows here when an edge, a depth order, a facing, an alpha test or a PCF
@@ -80,7 +80,7 @@ bool ImageJudge::within_range(int x, int y) const {
                      model.rel * std::max(0.0, std::max(std::abs(lo), std::abs(hi)) - std::abs(double(ref.at(x, y, c))));
     const double t = test.at(x, y, c);
     if (displayed && c < 3) {
-      const double q = in.display->quantisation_allowance();
+      const double q = in.display->quantisation_allowance() + in.reference_quantisation;
       if (!(t >= in.display->apply(lo - b) - q && t <= in.display->apply(hi + b) + q)) return false;
     } else if (!within_tie_range(range, alternatives, x, y, c, t, b)) {
       return false;

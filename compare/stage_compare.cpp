@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "compare/bounce_frames.h"
+#include "compare/isolated_stages.h"
 #include "compare/tie_range.h"
 #include "compare/volume_judges.h"
 #include "stages/shadow_map.h"
@@ -78,6 +79,27 @@ StageVerdict judge_voxel_stage(ToleranceModel model, const StageSet& rs, const S
   return v;
 }
 
+// The reference side's image as linear light. A reference that is itself an engine's dump may
+// declare a display transform (two runs of one engine compared, issue 39): its stored image is
+// decoded through that transform's inverse (decode_display_direct) and then judged like any
+// linear reference, through the test's transform when it declares one. A transform with no
+// inverse (aces, gamma < 1) that both sides declare alike leaves both images as stored and
+// compares them with no transform.
+const Image& reference_in_linear(const std::string& stage, const StageSet& rs, ImageStageInputs& in,
+                                 Image& decoded) {
+  const Image& stored = rs.images.at(stage);
+  const DisplayTransform& own = rs.conventions.display;
+  if (!own.declared() || !own.applies_to(stage)) return stored;
+  if (own.decodable()) {
+    decoded = stored;
+    decode_display_direct(own, decoded);
+    in.reference_quantisation = own.quantisation_allowance();
+    return decoded;
+  }
+  if (in.display && to_json(*in.display) == to_json(own)) in.display = nullptr;
+  return stored;
+}
+
 // An image stage with the images its rules read: the camera's depth (edges), the reference's
 // texture slack and raster alternatives; a shadow map is its own depth and has its own range
 // (freedoms/shadow_map_ties.h; without one, an external reference, it keeps the neighbourhood rule
@@ -94,7 +116,9 @@ StageVerdict judge_image(const std::string& stage, const std::optional<StageRef>
   in.display = ts.conventions.display.applies_to(stage) ? &ts.conventions.display : nullptr;
   const auto own_range = light_space ? rs.images.find(tie_range_stage(stage)) : rs.images.end();
   in.tie_range = !light_space ? image(st::kGbufferTieRange) : own_range != rs.images.end() ? &own_range->second : nullptr;
-  return judge_image_stage(stage, rs.images.at(stage), ts.images.at(stage), in, opt, stage_ctx);
+  Image decoded;
+  const Image& reference = reference_in_linear(stage, rs, in, decoded);
+  return judge_image_stage(stage, reference, ts.images.at(stage), in, opt, stage_ctx);
 }
 
 }  // namespace

@@ -38,6 +38,10 @@ struct ImageStageInputs {
   const Image* texture_slack = nullptr;
   const DisplayTransform* display = nullptr;
   const Image* tie_range = nullptr;
+  // A reference decoded from its own quantised display encoding (two runs of one engine): its
+  // stored value was within one step of its true display value (GL 4.5 §2.3.5.1), a step the
+  // display-space bound adds to the test's own (docs/compare.md, "Display transform").
+  double reference_quantisation = 0.0;
 };
 
 /// The first pass of the judge (compare/judge.h runs them all): every stage of the two sets by its

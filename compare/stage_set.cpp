@@ -12,6 +12,7 @@
 #include "io/image_io.h"
 #include "io/nrrd.h"
 #include "io/run_dir.h"
+#include "core/reduction_names.h"
 #include "stages/dumps.h"
 #include "stages/stage_registry.h"
 
@@ -20,15 +21,7 @@ namespace vct::cmp {
 namespace fs = std::filesystem;
 
 std::string storage_name(VoxelStorage s) { return s == VoxelStorage::Rgba8 ? "rgba8" : "rgba16f"; }
-std::string reduction_name(Reduction r) {
-  switch (r) {
-    case Reduction::ExactMean: return "exact_mean";
-    case Reduction::FixedPoint: return "fixed_point";
-    case Reduction::CasRgba8: return "cas_rgba8";
-    case Reduction::RunningMeanHalf: return "running_mean";
-  }
-  return "exact_mean";
-}
+std::string reduction_name(Reduction r) { return manifest_reduction_name(r); }
 
 StageSet stage_set_header(const FrameResult& f, const VctSettings& s) {
   StageSet set;
@@ -158,9 +151,11 @@ StageSet read_stage_set_unguarded(const std::string& path) {
   set.storage = m.value("storage", "rgba32f");
   set.reduction = m.value("reduction", "exact_mean");
   static const std::set<std::string> kStorages = {"rgba8", "rgba16f", "rgba32f"};
-  static const std::set<std::string> kReductions = {"exact_mean", "fixed_point", "cas_rgba8", "running_mean"};
   if (!kStorages.count(set.storage)) throw InputError(manifest.string(), "unknown storage '" + set.storage + "'");
-  if (!kReductions.count(set.reduction)) throw InputError(manifest.string(), "unknown reduction '" + set.reduction + "'");
+  // Either vocabulary (core/reduction_names.h: the settings' "fixed" is the manifest's "fixed_point").
+  const auto reduction = reduction_from_name(set.reduction);
+  if (!reduction) throw InputError(manifest.string(), "unknown reduction '" + set.reduction + "'");
+  set.reduction = manifest_reduction_name(*reduction);
   if (m.contains("settings")) set.settings = m["settings"];
   if (m.contains("info")) set.info = m["info"];
   if (m.contains("facts")) set.facts = m["facts"].get<BackendFacts>();

@@ -10,7 +10,9 @@
 #include "gl_facts.h"
 #include "gl_faults.h"
 #include "gl_frame.h"
+#include "gl_labels.h"
 #include "gl_program.h"
+#include "gl_renderdoc.h"
 #include "stages/cube_map.h"
 #include "stages/shadow_map.h"
 
@@ -74,6 +76,10 @@ void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOpti
     throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
                                  "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
                                  "shadow_ortho_box are for the reference");
+  if (settings.vct.n_dot_v != NdotV::Zero)
+    // direct.frag calls the shared cook_torrance (NV_ZERO); an engine's view cosine (issue 39) is
+    // the reference's only.
+    throw InputError("settings", "the GL backend runs the oracle's view cosine; n_dot_v = abs | clamp is for the reference");
   if (settings.vct.indirect_fresnel != IndirectFresnel::Schlick)
     // The composite's Fresnel is the shared sh::fresnel_schlick in indirect.frag; an engine's
     // other one (issue 21) is the reference's only.
@@ -107,15 +113,20 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     result.info["voxelizer"] = "conservative (" + result.facts.conservative_params + ")";
   else if (settings.vct.voxelizer == Voxelizer::Conservative)
     result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; conservative_raster = gs | nv | intel for a conservative GL mode)";
-  glCreateVertexArrays(1, &f.empty_vao);
-  upload_diffuse_cone_block(f);
-  shadow_pass(f);
-  gbuffer_pass(f);
-  voxel_passes(f);
-  direct_pass(f);
-  indirect_pass(f);
-  particle_pass(f);
-  glFinish();
+  {
+    RenderDocFrame capture;  // one capture of the frame when RenderDoc is injected (gl_renderdoc.h)
+    glCreateVertexArrays(1, &f.empty_vao);
+    upload_diffuse_cone_block(f);
+    shadow_pass(f);
+    gbuffer_pass(f);
+    voxel_passes(f);
+    direct_pass(f);
+    indirect_pass(f);
+    particle_pass(f);
+    label_frame_textures(f);
+    glFinish();
+    capture.end();
+  }
   result.timings_ms = f.timers.collect();
   double total = 0.0;
   for (const auto& [name, ms] : result.timings_ms) total += ms;

@@ -33,6 +33,23 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# Optional: RenderDoc (`vct import-capture`, docs/external_format.md "From a RenderDoc capture"):
+# renderdoccmd captures, python3-renderdoc replays under the system python3, and
+# renderdoc_app.h lets the GL backend capture its own frame. A machine without them (an older
+# Debian, a mirror lacking them) still builds and passes: the import test skips.
+OPTIONAL_APT_PACKAGES=(renderdoccmd python3-renderdoc librenderdoc-dev)
+optional_missing=()
+for p in "${OPTIONAL_APT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || optional_missing+=("$p")
+done
+if ((${#optional_missing[@]})); then
+  echo "setup: installing (optional) ${optional_missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${optional_missing[@]}" ||
+    echo "setup: optional packages ${optional_missing[*]} unavailable; vct import-capture will say so"
+fi
+
 # Python venv for the report, image metrics (FLIP) and the `import vct` module's build and tests
 # (nanobind, pytest, matplotlib). Rebuilt only when requirements change.
 if [ ! -f .venv/.requirements-done ] || ! cmp -s report/requirements.txt .venv/.requirements-done; then

@@ -41,7 +41,7 @@ struct SceneFootprint {
   int shadow_layers = 1;        // shadow_map_layers(scene)
   uint64_t triangles = 0;
   uint64_t texture_bytes = 0;   // decoded texels of every texture and its mip levels
-  bool alpha_tested = true;     // any material with an alpha test (stages/raster_alternatives.h)
+  bool alpha_tested = true;     // any material with an alpha test (freedoms/raster_alternatives.h)
 };
 
 /// Bytes per triangle of `vct render` beyond the small-scene baseline, measured (bench/memory_bench.py,

@@ -48,6 +48,10 @@ enum class ConeTangentFrame { Branchless, CrossHint };
 // variant of split-sum image-based lighting that the source design uses (righier/gidemo
 // voxelcone.frag FresnelSchlickRoughness, fed roughness^2). stages/composite.h.
 enum class IndirectFresnel { Schlick, SchlickRoughness };
+// How the BRDF takes the view cosine n.v where a shading normal faces away from the viewer
+// (issue 39; sh::view_cosine in ref/shared/vct_shared.h): both lobes 0 (ours), |n.v| (the source
+// design's), or max(n.v, 1e-4) (Filament's clamp).
+enum class NdotV { Zero, Abs, Clamp };
 // The specular cone's full aperture from perceptual roughness r (issue 21): ours,
 // 2 atan(r^2) clamped to [1, 90] degrees (sh::specular_cone_aperture); or the polynomial fit of
 // Rosseaux's "How to use voxel cone tracing with two bounces ..." that the source design uses
@@ -133,6 +137,7 @@ struct VctSettings {
   // composite alike). 1 = ours.
   float indirect_diffuse_gain = 1.0f;
   IndirectFresnel indirect_fresnel = IndirectFresnel::Schlick;
+  NdotV n_dot_v = NdotV::Zero;  // the direct light's view cosine (reference only; GL runs zero)
   // The specular cone's own conventions (issue 21; docs/pipeline.md, "Specular cone"): its start
   // offset in voxels (< 0: the diffuse cones' cone_offset_voxels and cone_axis_offset_voxels;
   // >= 0: under cone_start = normal the origin moves this far along n and the march starts at
@@ -210,6 +215,9 @@ std::string to_string(ShadowCompare c);
 std::string to_string(ShadowDepthFormat f);
 std::string to_string(ConeTangentFrame f);
 std::string to_string(IndirectFresnel f);
+std::string to_string(NdotV v);
+/// The shared header's mode (sh::NV_ZERO, NV_ABS, NV_CLAMP) of a setting.
+int nv_mode(NdotV v);
 std::string to_string(SpecularAperture a);
 std::string to_string(SpecularView v);
 

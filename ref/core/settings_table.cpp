@@ -9,7 +9,9 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/reduction_names.h"
 #include "io/bounded_json.h"
+#include "shared/vct_shared.h"
 
 namespace vct {
 
@@ -56,9 +58,29 @@ const std::vector<std::pair<VoxelStorage, const char*>>& enum_names() {
 }
 template <>
 const std::vector<std::pair<Reduction, const char*>>& enum_names() {
-  static const std::vector<std::pair<Reduction, const char*>> m{
-      {Reduction::ExactMean, "exact"}, {Reduction::FixedPoint, "fixed"}, {Reduction::CasRgba8, "cas"},
-      {Reduction::RunningMeanHalf, "running_mean"}};
+  static const std::vector<std::pair<Reduction, const char*>> m = [] {
+    std::vector<std::pair<Reduction, const char*>> names;
+    for (const ReductionName& r : kReductionNames) names.emplace_back(r.value, r.setting);
+    return names;
+  }();
+  return m;
+}
+
+// Other spellings a choice also accepts (read, never written): the manifest's reduction names
+// (core/reduction_names.h), so a stage set's "reduction" can be given to --set / --config as is.
+template <typename Enum>
+const std::vector<std::pair<Enum, const char*>>& enum_aliases() {
+  static const std::vector<std::pair<Enum, const char*>> none;
+  return none;
+}
+template <>
+const std::vector<std::pair<Reduction, const char*>>& enum_aliases() {
+  static const std::vector<std::pair<Reduction, const char*>> m = [] {
+    std::vector<std::pair<Reduction, const char*>> names;
+    for (const ReductionName& r : kReductionNames)
+      if (std::string(r.manifest) != r.setting) names.emplace_back(r.value, r.manifest);
+    return names;
+  }();
   return m;
 }
 template <>
@@ -100,6 +122,13 @@ template <>
 const std::vector<std::pair<IndirectFresnel, const char*>>& enum_names() {
   static const std::vector<std::pair<IndirectFresnel, const char*>> m{
       {IndirectFresnel::Schlick, "schlick"}, {IndirectFresnel::SchlickRoughness, "schlick_roughness"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<NdotV, const char*>>& enum_names() {
+  static const std::vector<std::pair<NdotV, const char*>> m{
+      {NdotV::Zero, "zero"}, {NdotV::Abs, "abs"}, {NdotV::Clamp, "clamp"}};
   return m;
 }
 
@@ -190,13 +219,16 @@ SettingField<S> choice(const char* key, E S::*member, const char* help) {
   f.set = [member, key](S& s, const nlohmann::json& j, const std::string& scope) {
     if (!j.is_string()) throw InputError("", "setting '" + scope + key + "' must be a string");
     const std::string name = j.get<std::string>();
-    for (const auto& [value, n] : enum_names<E>())
-      if (name == n) {
-        s.*member = value;
-        return;
-      }
+    for (const auto* names : {&enum_names<E>(), &enum_aliases<E>()})
+      for (const auto& [value, n] : *names)
+        if (name == n) {
+          s.*member = value;
+          return;
+        }
+    std::vector<std::string> aliases;
+    for (const auto& [value, n] : enum_aliases<E>()) aliases.push_back(n);
     throw InputError("", "setting '" + scope + key + "' is '" + name + "', expected one of " +
-                             join(choice_names<E>(), "|"));
+                             join(choice_names<E>(), "|") + (aliases.empty() ? "" : " (or " + join(aliases, "|") + ")"));
   };
   return f;
 }
@@ -249,6 +281,8 @@ std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
 std::string to_string(ConeStart c) { return enum_name(c); }
 std::string to_string(ShadowCompare c) { return enum_name(c); }
+std::string to_string(NdotV v) { return enum_name(v); }
+int nv_mode(NdotV v) { return v == NdotV::Abs ? sh::NV_ABS : v == NdotV::Clamp ? sh::NV_CLAMP : sh::NV_ZERO; }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
 std::string to_string(ConeTangentFrame f) { return enum_name(f); }
 std::string to_string(IndirectFresnel f) { return enum_name(f); }
@@ -304,6 +338,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     choice("specular_view", &V::specular_view, "specular view vector from the shaded point (surface) or from the cone's origin after its normal offset (origin)"),
     field("indirect_diffuse_gain", &V::indirect_diffuse_gain, at_least(0), "gain on image.indirect_diffuse and so on its composite term (an engine's, e.g. the source design's u_restitution)", "u_indirect_diffuse_gain"),
     choice("indirect_fresnel", &V::indirect_fresnel, "Fresnel of the composite's indirect terms: Schlick with the material's f90, or f90 = max(1 - roughness^2, f0) (schlick_roughness)"),
+    choice("n_dot_v", &V::n_dot_v, "the BRDF's view cosine where a normal faces away from the viewer: both lobes 0 (zero), |n.v| (abs) or max(n.v, 1e-4) (clamp); reference only"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),

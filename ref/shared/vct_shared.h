@@ -103,13 +103,29 @@ struct BrdfLobes {
   vec3 specular;  // F D G / (4 n.l n.v)
 };
 
-// BRDF lobes f(l, v) (without the n.l cosine). n, v, l unit; v and l point away from the surface.
-VCT_FN BrdfLobes cook_torrance_lobes(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
+// How the BRDF takes the view cosine n.v (the setting n_dot_v, issue 39), where a shading normal
+// faces away from the viewer (silhouettes, normal maps): NV_ZERO (ours) leaves both lobes 0 at
+// n.v <= 0; NV_ABS uses |n.v| (righier/gidemo's shading); NV_CLAMP uses max(n.v, NV_CLAMP_MIN)
+// (Filament's clampNoV, MIN_N_DOT_V = 1e-4). Both are exact operations on the dot product.
+VCT_CONST int NV_ZERO = 0;
+VCT_CONST int NV_ABS = 1;
+VCT_CONST int NV_CLAMP = 2;
+VCT_CONST float NV_CLAMP_MIN = 1e-4f;
+
+VCT_FN float view_cosine(float n_dot_v, int mode) {
+  if (mode == NV_ABS) return n_dot_v < 0.0f ? -n_dot_v : n_dot_v;
+  if (mode == NV_CLAMP) return max(n_dot_v, NV_CLAMP_MIN);
+  return n_dot_v;
+}
+
+// BRDF lobes f(l, v) (without the n.l cosine) with the view cosine taken as `nv_mode` says. n, v,
+// l unit; v and l point away from the surface.
+VCT_FN BrdfLobes cook_torrance_lobes_nv(SurfacePbr s, vec3 n, vec3 v, vec3 l, int nv_mode) {
   BrdfLobes b;
   b.diffuse = vec3(0.0f);
   b.specular = vec3(0.0f);
   float n_dot_l = dot(n, l);
-  float n_dot_v = dot(n, v);
+  float n_dot_v = view_cosine(dot(n, v), nv_mode);
   if (n_dot_l <= 0.0f || n_dot_v <= 0.0f) return b;
   vec3 h = normalize(v + l);
   vec3 f = fresnel_schlick(s.f0, s.f90, max(dot(h, v), 0.0f));
@@ -120,11 +136,17 @@ VCT_FN BrdfLobes cook_torrance_lobes(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
   return b;
 }
 
-// BRDF value f(l, v) (without the n.l cosine).
-VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) {
-  BrdfLobes b = cook_torrance_lobes(s, n, v, l);
+// The oracle's lobes: both 0 where n.v <= 0.
+VCT_FN BrdfLobes cook_torrance_lobes(SurfacePbr s, vec3 n, vec3 v, vec3 l) { return cook_torrance_lobes_nv(s, n, v, l, NV_ZERO); }
+
+// BRDF value f(l, v) (without the n.l cosine), the view cosine taken as `nv_mode` says.
+VCT_FN vec3 cook_torrance_nv(SurfacePbr s, vec3 n, vec3 v, vec3 l, int nv_mode) {
+  BrdfLobes b = cook_torrance_lobes_nv(s, n, v, l, nv_mode);
   return b.diffuse + b.specular;
 }
+
+// BRDF value f(l, v) (without the n.l cosine).
+VCT_FN vec3 cook_torrance(SurfacePbr s, vec3 n, vec3 v, vec3 l) { return cook_torrance_nv(s, n, v, l, NV_ZERO); }
 
 // ---------------------------------------------------------------------------------------------
 // Spot lights. Both models return the irradiance on a surface facing the light (before n.l and

@@ -26,7 +26,7 @@ vec3 unshadowed_light(const Scene& scene, size_t i, const VctSettings& settings,
   const vec3 l = ls.l, e = ls.irradiance;
   const float n_dot_l = glm::dot(n, l);
   if (n_dot_l <= 0.0f || e == vec3(0.0f)) return vec3(0.0f);
-  return sh::cook_torrance(pbr, n, view_dir, l) * e * n_dot_l;
+  return sh::cook_torrance_nv(pbr, n, view_dir, l, nv_mode(settings.n_dot_v)) * e * n_dot_l;
 }
 
 sh::SurfacePbr surface_of(const SurfaceMaterial& m) {

@@ -16,7 +16,7 @@ vec3 light_radiance(const Light& light, const VctSettings& s, const vec3& p, con
   const float n_dot_l = glm::dot(n, ls.l);
   if (n_dot_l <= 0.0f) return vec3(0.0f);
   const sh::SurfacePbr pbr = sh::surface_pbr(m.albedo, m.metallic, m.roughness, m.specular_factor, m.specular_color);
-  return sh::cook_torrance(pbr, n, v, ls.l) * ls.irradiance * n_dot_l;
+  return sh::cook_torrance_nv(pbr, n, v, ls.l, nv_mode(s.n_dot_v)) * ls.irradiance * n_dot_l;
 }
 
 Image shade_direct_soft(const Scene& scene, const GBuffer& g, const VoxelMips& mips, const VctSettings& s,

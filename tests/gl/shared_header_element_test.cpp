@@ -326,8 +326,10 @@ ElementCase diffuse_weight_case() {
 struct LobeBounds {
   glm::dvec3 diffuse, specular;
 };
-LobeBounds lobe_bounds(const sh::SurfacePbr& s, const vec3& n, const vec3& v, const vec3& l) {
-  const float nl = glm::dot(n, l), nv = glm::dot(n, v);
+// `nv_mode`: the view cosine's mode (sh::view_cosine: |.| and max are exact, so n.v keeps its 3 u
+// per side under every mode).
+LobeBounds lobe_bounds(const sh::SurfacePbr& s, const vec3& n, const vec3& v, const vec3& l, int nv_mode = sh::NV_ZERO) {
+  const float nl = glm::dot(n, l), nv = sh::view_cosine(glm::dot(n, v), nv_mode);
   if (nl <= 0.0f || nv <= 0.0f) return {glm::dvec3(0.0), glm::dvec3(0.0)};
   const vec3 h = glm::normalize(v + l);
   const double eps_h = kNormalizeNorm + 2.0;
@@ -422,6 +424,78 @@ ElementCase cook_torrance_case() {
     const vec3 n(floats(in[3])), v(floats(in[4])), l(floats(in[5]));
     const vec3 f = sh::cook_torrance(s, n, v, l);
     const LobeBounds b = lobe_bounds(s, n, v, l);
+    return std::vector<ExpectedSlot>{within(
+        vec4(f, 0), glm::dvec4(b.diffuse + b.specular + 2.0 * kU * glm::abs(glm::dvec3(f)), 0))};
+  };
+  return c;
+}
+
+// The view cosine's modes (issue 39): exact operations, so bit-exact on both sides.
+ElementCase view_cosine_case() {
+  ElementCase c{"view_cosine", "f", 1, "", nullptr, {}};
+  // No -0: llvmpipe's abs gives +0 where the C++ comparison keeps -0, and the BRDF takes either
+  // as n.v <= 0 (a zero's sign is no value GLSL 4.50 §4.7.1 pins).
+  for (float x : {-1.0f, -0.5f, -1e-4f, -1e-7f, 0.0f, 1e-7f, 5e-5f, 1e-4f, 2e-4f, 0.3f, 1.0f})
+    for (int mode : {sh::NV_ZERO, sh::NV_ABS, sh::NV_CLAMP}) c.inputs.push_back(words(vec4(x, float(mode), 0, 0)));
+  c.glsl = "vec4 a = fin(0u);\nput(0u, vec4(view_cosine(a.x, int(a.y)), 0.0f, 0.0f, 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const vec4 a = floats(in[0]);
+    return std::vector<ExpectedSlot>{exact(vec4(sh::view_cosine(a.x, int(a.y)), 0, 0, 0))};
+  };
+  return c;
+}
+
+// The BRDF grid under abs and clamp, with each view direction also mirrored below the surface
+// (v - 2 (n.v) n): the silhouette pixels whose n.v < 0 the modes are about.
+void brdf_inputs_nv(ElementCase& c) {
+  ElementCase grid;
+  brdf_inputs(grid);
+  for (size_t p = 0; p + 6 <= grid.inputs.size(); p += 6)
+    for (bool below : {false, true})
+      for (int mode : {sh::NV_ABS, sh::NV_CLAMP}) {
+        std::vector<uvec4> point(grid.inputs.begin() + long(p), grid.inputs.begin() + long(p + 6));
+        if (below) {
+          const vec3 n(floats(point[3])), v(floats(point[4])), l(floats(point[5]));
+          const vec3 m = v - 2.0f * glm::dot(n, v) * n;
+          const double dv = glm::dot(glm::dvec3(n), glm::dvec3(m));
+          // As brdf_inputs: a dot within GL's 3 u of the cut-off, or v + l too short for
+          // normalize's relative bound, is left out.
+          if ((std::abs(dv) < 1e-5 && dv != 0.0) || glm::length(m + l) < 1e-3f) continue;
+          point[4] = words(vec4(m, 0));
+        }
+        c.inputs.insert(c.inputs.end(), point.begin(), point.end());
+        c.inputs.push_back(words(vec4(float(mode), 0, 0, 0)));
+      }
+}
+
+ElementCase lobes_nv_case() {
+  ElementCase c{"cook_torrance_lobes_nv", "fffffff", 2, "", nullptr, {}};
+  brdf_inputs_nv(c);
+  c.glsl = std::string(kSurfaceFromInputs) +
+           "BrdfLobes o = cook_torrance_lobes_nv(s, n, v, l, int(fin(6u).x));\nput(0u, vec4(o.diffuse, 0.0f)); "
+           "put(1u, vec4(o.specular, 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const sh::SurfacePbr s = surface_from_inputs(in);
+    const vec3 n(floats(in[3])), v(floats(in[4])), l(floats(in[5]));
+    const int mode = int(floats(in[6]).x);
+    const sh::BrdfLobes o = sh::cook_torrance_lobes_nv(s, n, v, l, mode);
+    const LobeBounds b = lobe_bounds(s, n, v, l, mode);
+    return std::vector<ExpectedSlot>{within(vec4(o.diffuse, 0), glm::dvec4(b.diffuse, 0)),
+                                     within(vec4(o.specular, 0), glm::dvec4(b.specular, 0))};
+  };
+  return c;
+}
+
+ElementCase cook_torrance_nv_case() {
+  ElementCase c{"cook_torrance_nv", "fffffff", 1, "", nullptr, {}};
+  brdf_inputs_nv(c);
+  c.glsl = std::string(kSurfaceFromInputs) + "put(0u, vec4(cook_torrance_nv(s, n, v, l, int(fin(6u).x)), 0.0f));";
+  c.cpu = [](const uvec4* in) {
+    const sh::SurfacePbr s = surface_from_inputs(in);
+    const vec3 n(floats(in[3])), v(floats(in[4])), l(floats(in[5]));
+    const int mode = int(floats(in[6]).x);
+    const vec3 f = sh::cook_torrance_nv(s, n, v, l, mode);
+    const LobeBounds b = lobe_bounds(s, n, v, l, mode);
     return std::vector<ExpectedSlot>{within(
         vec4(f, 0), glm::dvec4(b.diffuse + b.specular + 2.0 * kU * glm::abs(glm::dvec3(f)), 0))};
   };
@@ -992,6 +1066,9 @@ std::vector<ElementCase> all_cases() {
           diffuse_weight_case(),
           lobes_case(),
           cook_torrance_case(),
+          view_cosine_case(),
+          lobes_nv_case(),
+          cook_torrance_nv_case(),
           spot_cone_case(),
           hard_spot_case(),
           range_window_case(),
@@ -1046,7 +1123,7 @@ TEST(SharedHeaderElement, EveryFunctionMatchesTheCppBuildWithinItsGlslBound) {
 }
 
 // The harness can fail, and pins the failure: Schlick's exponent 4 instead of 5 in the GLSL build
-// only must be reported for fresnel_schlick and the two functions that call it, nothing else.
+// only must be reported for fresnel_schlick and the four functions that call it, nothing else.
 TEST(SharedHeaderElement, APerturbedSchlickExponentIsPinnedToFresnel) {
   VCT_REQUIRE_GL();
   const std::vector<ElementCase> cases = all_cases();
@@ -1059,7 +1136,8 @@ TEST(SharedHeaderElement, APerturbedSchlickExponentIsPinnedToFresnel) {
     if (r.function == "fresnel_schlick") fresnel_message = r.message;
   }
   EXPECT_EQ(failed,
-            (std::set<std::string>{"fresnel_schlick", "cook_torrance_lobes", "cook_torrance"}));
+            (std::set<std::string>{"fresnel_schlick", "cook_torrance_lobes", "cook_torrance",
+                                   "cook_torrance_lobes_nv", "cook_torrance_nv"}));
   EXPECT_NE(fresnel_message.find("fresnel_schlick: GL differs from C++ beyond its bound"),
             std::string::npos)
       << fresnel_message;

@@ -3,7 +3,9 @@
 // the path tracer splits the AOVs by add up to the BRDF.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "shared/vct_shared.h"
 
@@ -90,6 +92,36 @@ TEST(SharedBrdf, NothingBelowTheHorizon) {
   const sh::BrdfLobes b = sh::cook_torrance_lobes(s, n, v, glm::normalize(vec3(1.0f, 0.0f, -0.1f)));
   EXPECT_EQ(b.diffuse, vec3(0.0f));
   EXPECT_EQ(b.specular, vec3(0.0f));
+}
+
+
+// The view cosine's modes (setting n_dot_v, issue 39) on a view below the surface (n.v = -0.6, a
+// silhouette pixel): zero (ours) leaves both lobes 0; abs shades as if n.v were 0.6; clamp as if
+// it were 1e-4. By hand from the pieces: h = normalize(v + l), F(h.v), D(n, h), G1 of each
+// cosine, spec = F D G / (4 n.l n.v'), diffuse = (1 - F) albedo / pi (dielectric).
+TEST(SharedBrdf, ViewCosineModesByHand) {
+  EXPECT_EQ(sh::view_cosine(-0.6f, sh::NV_ZERO), -0.6f);
+  EXPECT_EQ(sh::view_cosine(-0.6f, sh::NV_ABS), 0.6f);
+  EXPECT_EQ(sh::view_cosine(-0.6f, sh::NV_CLAMP), 1e-4f);
+  EXPECT_EQ(sh::view_cosine(0.3f, sh::NV_CLAMP), 0.3f);
+  const float r = 0.5f;
+  const sh::SurfacePbr s = sh::surface_pbr(vec3(0.5f), 0.0f, r, 1.0f, vec3(1.0f));
+  const vec3 n(0.0f, 0.0f, 1.0f), v(0.8f, 0.0f, -0.6f), l(0.0f, 0.6f, 0.8f);
+  const sh::BrdfLobes zero = sh::cook_torrance_lobes_nv(s, n, v, l, sh::NV_ZERO);
+  EXPECT_EQ(zero.diffuse, vec3(0.0f));
+  EXPECT_EQ(zero.specular, vec3(0.0f));
+  const vec3 h = glm::normalize(v + l);
+  const float f = sh::fresnel_schlick(s.f0, s.f90, std::max(glm::dot(h, v), 0.0f)).x;
+  const float d = sh::ggx_distribution(n, h, r);
+  for (const auto& [mode, nv] : {std::pair{sh::NV_ABS, 0.6f}, std::pair{sh::NV_CLAMP, 1e-4f}}) {
+    const sh::BrdfLobes b = sh::cook_torrance_lobes_nv(s, n, v, l, mode);
+    const float g = sh::schlick_ggx_g1(0.8f, r) * sh::schlick_ggx_g1(nv, r);
+    EXPECT_NEAR(b.specular.x, f * d * g / (4.0f * 0.8f * nv), 1e-5f * b.specular.x) << mode;
+    EXPECT_NEAR(b.diffuse.x, (1.0f - f) * 0.5f * sh::SH_INV_PI, 1e-6f) << mode;
+    EXPECT_EQ(sh::cook_torrance_nv(s, n, v, l, mode), b.diffuse + b.specular);
+  }
+  // The oracle's functions are the zero mode.
+  EXPECT_EQ(sh::cook_torrance(s, n, v, l), vec3(0.0f));
 }
 
 }  // namespace
