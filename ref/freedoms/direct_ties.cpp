@@ -18,13 +18,14 @@ constexpr const char* kGroups[2] = {"image.direct", "image.emission"};
 
 // The light's term with its hard-spot step taken as lit, when p is within the tie band of the
 // edge; zero otherwise (no alternative).
-vec3 hard_spot_lit_alternative(const Light& light, LightModel model, const vec3& p, const vec3& n, const vec3& v,
+vec3 hard_spot_lit_alternative(const Light& light, const VctSettings& s, const vec3& p, const vec3& n, const vec3& v,
                                const sh::SurfacePbr& pbr) {
-  const LightSample ls = hard_spot_lit_sample(light, model, p);
+  const LightSample ls = hard_spot_lit_sample(light, s.light_model, p);
   if (ls.irradiance == vec3(0.0f)) return vec3(0.0f);
   const float n_dot_l = glm::dot(n, ls.l);
   if (n_dot_l <= 0.0f) return vec3(0.0f);
-  return sh::cook_torrance(pbr, n, v, ls.l) * ls.irradiance * n_dot_l;
+  // The view cosine as the direct light takes it (setting n_dot_v, stages/direct.cpp).
+  return sh::cook_torrance_nv(pbr, n, v, ls.l, nv_mode(s.n_dot_v)) * ls.irradiance * n_dot_l;
 }
 
 // [lo, hi] of the direct light at a covered pixel: each light's unshadowed term times the ends
@@ -38,7 +39,7 @@ void direct_range_at(const Scene& scene, const GBuffer& g, const std::vector<Sha
   lo = hi = vec3(0.0f);
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const vec3 c = unshadowed_light(scene, i, s, p, m.shading_normal, v, pbr);
-    const vec3 edge = hard_spot_lit_alternative(scene.lights[i], s.light_model, p, m.shading_normal, v, pbr);
+    const vec3 edge = hard_spot_lit_alternative(scene.lights[i], s, p, m.shading_normal, v, pbr);
     if (c == vec3(0.0f) && edge == vec3(0.0f)) continue;
     const VisibilityRange r =
         i < maps.size() ? surface_visibility_range(maps[i], scene.lights[i], p, m.shading_normal, s)
