@@ -63,7 +63,10 @@ const std::string kFrame = "--backend gl --width 64 --height 48 --grid 64 --shad
 // Renders `render_args` under renderdoccmd into dir/run and imports dir/frame_capture.rdc into
 // dir/imported; "" or why not.
 std::string capture_and_import(const fs::path& dir, const std::string& render_args) {
-  const std::string capture_cmd = "renderdoccmd capture -w -d " + q(dir) + " -c " + q(dir / "frame") + " '" + std::string(VCT_BINARY) +
+  // One capture at a time across test processes (flock, util-linux): two captures at once share
+  // RenderDoc's target-control port; a full ctest -j2 run, where both tests overlap, failed once.
+  const fs::path lock = fs::temp_directory_path() / "vct-renderdoc-capture.lock";
+  const std::string capture_cmd = "flock " + q(lock) + " renderdoccmd capture -w -d " + q(dir) + " -c " + q(dir / "frame") + " '" + std::string(VCT_BINARY) +
                                   "' render " + render_args + " --out " + q(dir / "run") + " > " + q(dir / "capture.log") + " 2>&1";
   // Not its exit code: renderdoccmd reports "Couldn't connect to target program" when a short run
   // exits before its target-control handshake, though the capture is written (the library is
