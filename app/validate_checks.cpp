@@ -43,7 +43,7 @@ CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, cons
                        // The one judge (compare/judge.h): cone and shading stages on GL's own inputs,
                        // so a legitimate voxel tie upstream does not fail a correct marcher downstream.
                        r.report = cmp::judge(r.ref_set, r.gl_set, {&scene, &*gl.frame, &s.vct},
-                                             {10, run.file("compare"), "compare/"});
+                                             {10, run.file("compare"), "compare/", {}});
                      }});
   if (ref.ok()) tasks.push_back({"write stage set ref", [&] { cmp::write_named_stage_set(r.ref_set); }});
   if (gl.ok()) tasks.push_back({"write stage set gl", [&] { cmp::write_named_stage_set(r.gl_set); }});

@@ -20,6 +20,8 @@ namespace {
 
 // Everything a pixel's rules read, prepared once per stage.
 struct ImageJudge {
+  ImageJudge(const std::string& s, const Image& r, const Image& t, const ImageStageInputs& i, const JudgeContext& c)
+      : stage(s), ref(r), test(t), in(i), ctx(c) {}
   const std::string& stage;
   const Image& ref;
   const Image& test;

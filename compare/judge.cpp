@@ -13,7 +13,7 @@ Report judge(const StageSet& reference, const StageSet& test, const JudgeInputs&
   judge_conservative_mode(rep, reference, test, in.scene, opt.worst_n);
   // The isolated pass writes no masks: a stage it re-judges keeps the end-to-end mask.
   if (judges_on_own_inputs(in))
-    judge_cones_on_test_inputs(rep, *in.scene, *in.test_frame, *in.settings, test, {opt.worst_n, "", ""});
+    judge_cones_on_test_inputs(rep, *in.scene, *in.test_frame, *in.settings, test, {opt.worst_n, "", "", {}});
   note_driver_facts(rep, test.facts, reference.facts);
   return rep;
 }

@@ -29,6 +29,7 @@ bool face_neighbour_in(const Volume& v, const std::vector<uint8_t>& set, size_t 
 
 // Both sides' occupancy and what differs, with what the rules read.
 struct OccupancyDiff {
+  explicit OccupancyDiff(const Volume& reference) : ref(reference) {}
   const Volume& ref;
   std::vector<uint8_t> missing, extra;
   const Volume *ref_fragments = nullptr, *test_fragments = nullptr;

@@ -183,7 +183,7 @@ double lookup_point_margin(const mat4& m, const vec3& p, const vec3& n, const Vc
   const double w_hi = w + kG4 * s_w, w_lo = w - kG4 * s_w;
   if (!(w_hi > 0.0)) return 0.0;  // no offset on either side
   const double d_hi = k_hi * w_hi * (1.0 + kU), d_lo = w_lo > 0.0 ? k_lo * w_lo * (1.0 - kU) : 0.0;
-  const double largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) + d_hi;
+  const double largest = double(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})) + d_hi;
   return (d_hi - d_lo) + 2.0 * kU * (d_hi + largest);
 }
 

@@ -9,7 +9,7 @@ namespace vct {
 
 namespace {
 
-double luminance(const vec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+double luminance(const vec3& rgb) { return 0.2126 * double(rgb.r) + 0.7152 * double(rgb.g) + 0.0722 * double(rgb.b); }
 
 // The share of a spot's axis intensity the meter counts: its cone at the meter (KHR_lights_punctual's
 // attenuation toward the centre), but never less than its flux spread over the whole sphere.

@@ -58,9 +58,11 @@ TEST(BlenderExportCli, AnExposureSweepReExposesEachRow) {
   EXPECT_EQ(rows[1]["exposure"]["scale"].get<double>(), 1.0);
   for (const json& b : rows[1]["bias"])
     if (b["component"] == "direct") {
-      for (const json& a : rows[0]["bias"])
-        if (a["component"] == "direct")
+      for (const json& a : rows[0]["bias"]) {
+        if (a["component"] == "direct") {
           EXPECT_NEAR(b["relative_bias"].get<double>(), a["relative_bias"].get<double>(), 1e-3);
+        }
+      }
     }
 }
 

@@ -36,7 +36,9 @@ TEST(Admission, RowsAreInRuleOrderWithUniqueNamesAndDerivedInAnExistingSection) 
     const bool red = row.colour == std::array<uint8_t, 3>{255, 0, 0};
     EXPECT_EQ(red, row.rule == Rule::Beyond) << row.name;
     // A counted share names what it is a share of.
-    if (row.kind == RuleKind::CountedShare) EXPECT_STRNE(row.denominator, "") << row.name;
+    if (row.kind == RuleKind::CountedShare) {
+      EXPECT_STRNE(row.denominator, "") << row.name;
+    }
   }
 }
 

@@ -222,8 +222,12 @@ TEST(GlFaults, BounceReadsCurrentFrameFailsAtFrameTwo) {
   const cmp::Report rep = judge(*ctx, run);
   EXPECT_FIRST_FAILING(rep, "voxel.frame.2");
   for (const cmp::StageVerdict& v : rep.stages) {
-    if (v.stage == "voxel.frame.1") EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;
-    if (v.stage == stage_names::kVoxelRadiance) EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;  // what hid it
+    if (v.stage == "voxel.frame.1") {
+      EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;
+    }
+    if (v.stage == stage_names::kVoxelRadiance) {
+      EXPECT_NE(v.verdict, cmp::Verdict::Fail) << v.note;  // what hid it
+    }
     if (v.stage == stage_names::kVoxelEnergy) {
       std::printf("  voxel.energy: %s\n", v.note.c_str());
       EXPECT_EQ(v.verdict, cmp::Verdict::Fail) << v.note;

@@ -37,7 +37,7 @@ Scene lamp_over_floor(float candela, float height) {
 TEST(Exposure, MeterReadsCandelaOverDistanceSquared) {
   // The bounds' centre is (0, 0, 0); the lamp 2 m above it: E = N / 4 (white light, luminance 1).
   const Scene s = lamp_over_floor(kBlenderStandardCandela, 2.0f);
-  EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela / 4.0, 1e-3);
+  EXPECT_NEAR(key_illuminance(s), double(kBlenderStandardCandela) / 4.0, 1e-3);
 }
 
 TEST(Exposure, MeterCountsASpotByItsConeAtTheCentreButAtLeastItsFlux) {
@@ -48,10 +48,10 @@ TEST(Exposure, MeterCountsASpotByItsConeAtTheCentreButAtLeastItsFlux) {
   l.kind = LightKind::Spot;
   l.inner_cone_angle = l.outer_cone_angle = 20.0f * kPi / 180.0f;
   l.direction = vec3(0.0f, -1.0f, 0.0f);
-  EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela / 4.0, 1e-3);
+  EXPECT_NEAR(key_illuminance(s), double(kBlenderStandardCandela) / 4.0, 1e-3);
   l.direction = vec3(1.0f, 0.0f, 0.0f);
   EXPECT_NEAR(spot_flux_share(l), (1.0 - std::cos(20.0 * M_PI / 180.0)) / 2.0, 1e-6);
-  EXPECT_NEAR(key_illuminance(s), kBlenderStandardCandela * (1.0 - std::cos(20.0 * M_PI / 180.0)) / 2.0 / 4.0, 1e-2);
+  EXPECT_NEAR(key_illuminance(s), double(kBlenderStandardCandela) * (1.0 - std::cos(20.0 * M_PI / 180.0)) / 2.0 / 4.0, 1e-2);
 }
 
 TEST(Exposure, AutoPreExposesAPhotometricExportByWholeStops) {
