@@ -3,30 +3,25 @@
 // reference adds its re-traced indirect terms (compare/isolated_stages.h decode_display_direct).
 // Hand values of the inverse, the one-step property the bound rests on, and the judgement of a
 // tone-mapped 8-bit frame on its own inputs in both directions.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "compare/isolated_stages.h"
 #include "compare/stage_set.h"
+#include "display_fixtures.h"
 #include "find_verdict.h"
-#include "scene/gltf_loader.h"
 #include "freedoms/reference_frame.h"
+#include "scene/gltf_loader.h"
 
 namespace vct::cmp {
 namespace {
 
-DisplayTransform reinhard_22_8() {
-  DisplayTransform d;
-  d.op = ToneOperator::Reinhard;
-  d.gamma = 2.2;
-  d.bits = 8;
-  d.stages = {"image.direct", "image.indirect_diffuse", "image.indirect_specular", "image.final"};
-  return d;
-}
+// The image stages these tests declare display-encoded.
+const std::vector<std::string> kEncodedStages = {"image.direct", "image.indirect_diffuse",
+                                                 "image.indirect_specular", "image.final"};
 
 TEST(DisplayDecode, HandValuesOfTheInverse) {
-  const DisplayTransform d = reinhard_22_8();
+  const DisplayTransform d = reinhard_22_8(kEncodedStages);
   // 0.5^2.2 = 0.2176376; x / (1 + x) = 0.2176376 -> x = 0.2176376 / 0.7823624 = 0.2781795.
   EXPECT_NEAR(d.decode(0.5), 0.2781795, 1e-6);
   EXPECT_NEAR(d.apply(d.decode(0.5)), 0.5, 1e-12);
@@ -54,7 +49,7 @@ TEST(DisplayDecode, HandValuesOfTheInverse) {
 // |D(d' + r) - D(d + r)| <= |D(d') - D(d)| <= q for every r >= 0 the composite adds. Checked on a
 // grid of direct values, both rounding neighbours and added light from 0 to 100.
 TEST(DisplayDecode, ASumOnADecodedValueStaysWithinOneStep) {
-  const DisplayTransform d = reinhard_22_8();
+  const DisplayTransform d = reinhard_22_8(kEncodedStages);
   const double q = d.quantisation_allowance();
   double worst = 0.0;
   for (double direct = 0.0; direct < 40.0; direct = direct * 1.07 + 1e-4)
@@ -78,7 +73,7 @@ struct Encoded {
     ref = render_ref_frame(scene, s);
     engine = ref;
     engine.backend = "engine";
-    const DisplayTransform d = reinhard_22_8();
+    const DisplayTransform d = reinhard_22_8(kEncodedStages);
     for (Image* img : {&engine.images.direct, &engine.images.indirect_diffuse, &engine.images.indirect_specular,
                        &engine.images.final_image})
       for (int y = 0; y < img->height; ++y)
@@ -100,7 +95,7 @@ struct Encoded {
 
 TEST(DisplayDecode, EncodedFrameOnItsOwnInputsPassesWhenTheDirectIsDecoded) {
   const Encoded e;
-  const StageVerdict v = e.final_verdict(reinhard_22_8());
+  const StageVerdict v = e.final_verdict(reinhard_22_8(kEncodedStages));
   EXPECT_NE(v.verdict, Verdict::Fail) << v.note;
   EXPECT_NE(v.note.find("on the test's own voxels"), std::string::npos) << v.note;
 }
@@ -109,19 +104,19 @@ TEST(DisplayDecode, DirectTakenAsLinearFails) {
   // The same frame with image.direct left out of the declared stages: its encoded values enter the
   // composite as radiance (what `--scene` did before), and image.final fails on its own inputs.
   const Encoded e;
-  DisplayTransform d = reinhard_22_8();
+  DisplayTransform d = reinhard_22_8(kEncodedStages);
   d.stages = {"image.indirect_diffuse", "image.indirect_specular", "image.final"};
   EXPECT_EQ(e.final_verdict(d).verdict, Verdict::Fail);
 }
 
 TEST(DisplayDecode, AFinalFaultUnderTheDecodedDirectFails) {
   const Encoded e(1.3f);  // the engine's final 1.3x too bright before its display transform
-  EXPECT_EQ(e.final_verdict(reinhard_22_8()).verdict, Verdict::Fail);
+  EXPECT_EQ(e.final_verdict(reinhard_22_8(kEncodedStages)).verdict, Verdict::Fail);
 }
 
 TEST(DisplayDecode, AnUndecodableTransformKeepsTheEndToEndVerdict) {
   Encoded e;
-  DisplayTransform aces = reinhard_22_8();
+  DisplayTransform aces = reinhard_22_8(kEncodedStages);
   aces.op = ToneOperator::Aces;
   const StageVerdict v = e.final_verdict(aces);
   EXPECT_EQ(v.note.find("on the test's own voxels"), std::string::npos) << v.note;

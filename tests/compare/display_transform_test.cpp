@@ -2,26 +2,18 @@
 // hand values of the transform and of the bound it carries, the manifest keys, and the judgement
 // on the reference's own final written as an engine would (Reinhard, gamma 2.2, 8 bits) -- the
 // GL version of the last three is tests/gl/gl_display_transform_test.cpp.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "compare/stage_compare.h"
 #include "core/error.h"
-#include "scene/gltf_loader.h"
+#include "display_fixtures.h"
 #include "freedoms/reference_frame.h"
+#include "scene/gltf_loader.h"
 
 namespace vct::cmp {
 namespace {
-
-DisplayTransform reinhard_22_8() {
-  DisplayTransform d;
-  d.op = ToneOperator::Reinhard;
-  d.gamma = 2.2;
-  d.bits = 8;
-  return d;
-}
 
 TEST(DisplayTransform, HandValues) {
   const DisplayTransform d = reinhard_22_8();

@@ -7,19 +7,11 @@
 
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
+#include "display_fixtures.h"
 #include "find_verdict.h"
 
 namespace vct::cmp {
 namespace {
-
-DisplayTransform reinhard_22_8() {
-  DisplayTransform d;
-  d.op = ToneOperator::Reinhard;
-  d.gamma = 2.2;
-  d.bits = 8;
-  d.stages = {"image.direct", "image.final"};
-  return d;
-}
 
 // A display-encoded 8-bit image of linear values from 0 to ~8 (what gidemo stores).
 Image encoded_ramp(const DisplayTransform& d) {
@@ -53,7 +45,7 @@ StageSet engine_dump() {
   set.backend = "engine";
   set.storage = "rgba16f";
   set.reduction = "fixed_point";
-  set.conventions.display = reinhard_22_8();
+  set.conventions.display = reinhard_22_8({"image.direct", "image.final"});
   set.conventions.mip_scale = 1.9;
   set.images["image.direct"] = encoded_ramp(set.conventions.display);
   add_voxels(set);
