@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "scene/scene.h"
+#include "stage_test_scene.h"
 
 namespace vct::test {
 
@@ -62,12 +63,7 @@ inline Scene half_masked_card(bool backdrop, AlphaMode mode = AlphaMode::Mask,
   add_card_quad(s, 0.0f, 1.0f, 0);
   if (backdrop) add_card_quad(s, -1.0f, 3.0f, 1);
   s.volume = fit_volume(s.bounds);
-  s.camera.position = vec3(0.0f, 0.0f, 3.0f);
-  s.camera.forward = vec3(0.0f, 0.0f, -1.0f);
-  s.camera.up = vec3(0.0f, 1.0f, 0.0f);
-  s.camera.yfov = 0.9f;
-  s.camera.znear = 0.1f;
-  s.camera.zfar = 10.0f;
+  front_camera(s, vec3(0.0f, 0.0f, 3.0f), 0.9f, 0.1f);
   return s;
 }
 

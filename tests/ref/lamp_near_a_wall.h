@@ -23,12 +23,7 @@ inline Scene lamp_near_a_wall() {
   l.intensity = 2.0f;
   s.lights.push_back(l);
   s.volume = fit_volume(s.bounds);
-  s.camera.position = vec3(0.0f, 1.5f, 2.5f);
-  s.camera.forward = vec3(0.0f, 0.0f, -1.0f);
-  s.camera.up = vec3(0.0f, 1.0f, 0.0f);
-  s.camera.yfov = 1.0f;
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 10.0f;
+  front_camera(s, vec3(0.0f, 1.5f, 2.5f), 1.0f, 0.5f);
   return s;
 }
 

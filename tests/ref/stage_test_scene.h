@@ -43,8 +43,6 @@ inline void add_box(Scene& s, vec3 lo, vec3 hi, uint32_t m) {
   add_quad(s, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, {0, 0, 1}, m);
 }
 
-/// A small Cornell-like room: floor, back and side walls, a box, an emissive panel, one spot light
-/// pointing down, camera in front. Everything the stages touch, in ~40 triangles.
 // A camera 3 m above the origin looking straight down (+y up in the scene, -z up in the image):
 // the analytic plane-under-a-light tests' view.
 inline void top_camera(Scene& s) {
@@ -56,6 +54,19 @@ inline void top_camera(Scene& s) {
   s.camera.zfar = 10.0f;
 }
 
+// A camera at `position` looking along -z (+y up), far plane 10 m: the front views of the
+// lamp-near-a-wall and alpha-card scenes.
+inline void front_camera(Scene& s, const vec3& position, float yfov, float znear) {
+  s.camera.position = position;
+  s.camera.forward = vec3(0.0f, 0.0f, -1.0f);
+  s.camera.up = vec3(0.0f, 1.0f, 0.0f);
+  s.camera.yfov = yfov;
+  s.camera.znear = znear;
+  s.camera.zfar = 10.0f;
+}
+
+/// A small Cornell-like room: floor, back and side walls, a box, an emissive panel, one spot light
+/// pointing down, camera in front. Everything the stages touch, in ~40 triangles.
 inline Scene stage_room() {
   Scene s;
   s.source = "test:stage_room";
