@@ -7,6 +7,7 @@
 
 #include "freedoms/fragment_slack.h"
 #include "freedoms/raster_alternatives.h"  // kVertexSnapStep
+#include "freedoms/voxel_alpha_ties.h"
 #include "stages/raster.h"
 
 namespace vct {
@@ -141,6 +142,7 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox) {
     merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, moved), vox.may_drop, added);
   }
   add_depth_ties(scene, vox, added);
+  add_voxel_alpha_ties(scene, vox, vox.may_drop, added);
   keep_unique(vox, added);
 }
 

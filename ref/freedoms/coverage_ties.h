@@ -30,7 +30,8 @@ namespace vct {
 /// Fills vox.may_drop and vox.may_add by voxelizing the scene again with the sample positions
 /// moved by each of the four (+-2^-8, +-2^-8) pixel shifts: a fragment missing from any shifted
 /// voxelization may be dropped, one present in any but not in `vox` may be added; and a fragment
-/// whose depth lies within its depth margin of a voxel boundary may move to the voxel beyond it.
+/// whose depth lies within its depth margin of a voxel boundary may move to the voxel beyond it;
+/// and a fragment whose alpha test may flip may be dropped or added (freedoms/voxel_alpha_ties.h).
 /// For the conservative voxelizer (vox.samples empty) the ties are the triangles meeting a voxel
 /// box within kConservativeArithmetic of its faces, as GL's conservative modes' own arithmetic
 /// may decide them either way (the gs mode's whole bound; a hardware mode over-estimates more).

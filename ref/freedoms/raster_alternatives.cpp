@@ -57,6 +57,24 @@ VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_pro
 
 }  // namespace
 
+// The front-most fragment at each pixel centre whose alpha test cannot discard it: an untested
+// triangle, or a tested one that passes with no flip (alpha_test_may_flip false).
+VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  VisibilityBuffer vb = empty_visibility(w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
+  for_each_centre_fragment(binned, w, h, [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
+    const int row = h - 1 - f.y;
+    const size_t i = vb.index(f.x, row);
+    if (!(f.depth < vb.depth[i])) return;  // GL_LESS
+    if (triangle_alpha_tested(scene, t.source) && (surface_masked(scene, t.source, f.bary.y, f.bary.z) ||
+                                                   alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary)))
+      return;
+    store_fragment(vb, i, t, f);
+  });
+  return vb;
+}
+
 double depth_tie_margin(const RasterTriangle& t) {
   const EdgeSetup e = edge_setup(t);
   double dzdx = 0.0, dzdy = 0.0;  // per sub-pixel step

@@ -46,6 +46,13 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 /// may pass or fail its alpha test (`may_flip` 1), `surface` holds the other outcome: that surface
 /// where the reference (`vb`, rendered with the masks) discarded it, what lies behind it
 /// (other_surfaces; triangle -1 = nothing, the clear value) where the reference kept it.
+/// The front-most fragment at each pixel centre that no correct GL discards: an untested triangle,
+/// or an alpha-tested one that passes where its test cannot flip. Every fragment in front of it is
+/// cut away for certain or may flip, so a correct GL may store any of them or this one, and nothing
+/// behind it (triangle -1: every fragment may be cut away, so the clear value too). The deepest
+/// outcome of a chain of alpha flips (docs/compare.md, "Alpha-mask ties").
+VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj, int w, int h);
+
 struct AlphaFlipSurfaces {
   VisibilityBuffer surface;
   std::vector<uint8_t> may_flip;

@@ -60,9 +60,20 @@ Voxelization voxelize_conservative(const Scene& scene, int n, double grow = 0.0)
 /// The GPU rule with 1, 4 or 8 samples; one fragment per covered pixel (any sample), evaluated at
 /// the pixel centre as GL evaluates non-centroid inputs (extrapolated barycentrics allowed).
 Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples);
+/// Whether the GPU rule discards alpha-masked fragments (the pass does) or keeps every covered
+/// pixel (the alpha ties' candidates, freedoms/voxel_alpha_ties.h).
+enum class AlphaTest { Apply, Ignore };
 /// Same with the sample positions a driver reported (BackendFacts::sample_positions: pixel units,
 /// lower-left origin, y up) instead of the standard pattern: 1 to 32 positions.
-Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& sample_positions);
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& sample_positions,
+                               AlphaTest alpha = AlphaTest::Apply);
+
+/// The window axes (u, v) of the GPU rule's orthographic projection along dominant axis `axis`, as
+/// the seed's gl_Position swizzles: x-dominant (y, z), y-dominant (x, z), z-dominant (x, y).
+inline void voxel_window_axes(int axis, int& u, int& v) {
+  u = axis == 0 ? 1 : 0;
+  v = axis == 2 ? 1 : 2;
+}
 
 /// The voxelizer settings.voxelizer selects, at settings.grid.
 Voxelization voxelize(const Scene& scene, const VctSettings& settings);

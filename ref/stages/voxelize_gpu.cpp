@@ -14,17 +14,11 @@
 
 namespace vct {
 
-namespace {
-// Window axes (u, v) for each dominant axis, as the seed's gl_Position swizzles.
-constexpr int kProjU[3] = {1, 0, 0};  // x-dominant: (y, z); y-dominant: (x, z); z-dominant: (x, y)
-constexpr int kProjV[3] = {2, 2, 1};
-}  // namespace
-
 Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
   return voxelize_gpu_rule(scene, n, standard_sample_positions(msaa_samples));
 }
 
-Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& samples) {
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& samples, AlphaTest alpha) {
   if (samples.empty() || samples.size() > 32)
     throw std::invalid_argument("voxelize_gpu_rule: 1 to 32 sample positions (one coverage bit each)");
   std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
@@ -32,7 +26,8 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
     const uvec3 t = scene.triangles[size_t(ti)];
     const vec3 w[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
     const int axis = dominant_axis(w[0], w[1], w[2]);
-    const int pu = kProjU[axis], pv = kProjV[axis];
+    int pu, pv;
+    voxel_window_axes(axis, pu, pv);
     glm::dvec3 v[3];
     vec4 clip[3];
     for (int i = 0; i < 3; ++i) {
@@ -43,7 +38,7 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
     std::vector<RasterTriangle> rt;
     setup_triangle(clip, n, n, uint32_t(ti), rt);
     auto& out = per_tri[size_t(ti)];
-    const bool alpha_tested = triangle_alpha_tested(scene, uint32_t(ti));
+    const bool alpha_tested = alpha == AlphaTest::Apply && triangle_alpha_tested(scene, uint32_t(ti));
     for (const RasterTriangle& r : rt) {
       rasterize(r, samples, 0, n - 1, 0, n - 1, [&](const RasterFragment& f) {
         // A masked fragment adds neither opacity nor light (voxelize.frag discards it); tested at
