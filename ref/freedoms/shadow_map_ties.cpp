@@ -14,25 +14,75 @@ namespace vct {
 
 namespace {
 
+// Each snapped vertex coordinate may be one 2^-8 texel step off the reference's
+// (raster_alternatives.h). Shared vertices snap alike, so a mesh stays watertight: the four common
+// shifts of the sample by (+-1, +-1) steps (kShifts) move every edge together. But each vertex
+// snaps on its own: at a point on an edge's segment the edge moves by a convex combination of its
+// two ends' moves, so its edge function changes by at most |a| + |b| (a, b per step), and the
+// `relaxed` world (each edge pushed out by its reach, closed, inside the vertices' box grown by
+// one step, which every snapped triangle lies in) covers every centre any snapped triangle does.
+// It adds coverage only, so it lowers a range's low end: a sliver thinner than two steps
+// (scenes/regressions/seed-43-medium: 0.003 texel wide at a centre 0.003 texel off both edges)
+// may cover a centre no common shift covers. (Its counterpart, a sliver GL may not cover where
+// every common shift does, would need per-vertex snaps that keep shared edges shared: open.)
 constexpr int kShifts = 4;
+constexpr int kWorlds = kShifts + 1;  // the shifts, then relaxed
+constexpr int kRelaxed = kWorlds;     // its index among the samples (0 is the centre)
 
-// Which of the five samples (the centre, then the four shifts) of row y the triangle covers.
+struct SnapWorlds {
+  EdgeSetup edges, relaxed;
+  int64_t box_lo[2], box_hi[2];  // the vertices' box grown by one step
+};
+
+SnapWorlds snap_worlds(const RasterTriangle& t) {
+  SnapWorlds w;
+  w.edges = w.relaxed = edge_setup(t);
+  for (int i = 0; i < 3; ++i) {
+    w.relaxed.c[i] += std::abs(w.edges.a[i]) + std::abs(w.edges.b[i]);
+    w.relaxed.bias[i] = 0;
+  }
+  w.box_lo[0] = std::min({t.x[0], t.x[1], t.x[2]}) - 1, w.box_hi[0] = std::max({t.x[0], t.x[1], t.x[2]}) + 1;
+  w.box_lo[1] = std::min({t.y[0], t.y[1], t.y[2]}) - 1, w.box_hi[1] = std::max({t.y[0], t.y[1], t.y[2]}) + 1;
+  return w;
+}
+
+// Which samples of row y (the centre, the four shifts, the relaxed world's centre) the triangle
+// covers.
 struct RowSpans {
-  int x0[1 + kShifts], x1[1 + kShifts];
-  bool any[1 + kShifts];
+  int x0[1 + kWorlds], x1[1 + kWorlds];
+  bool any[1 + kWorlds];
   bool covers(int k, int x) const { return any[k] && x >= x0[k] && x <= x1[k]; }
 };
 
-// The spans of the five samples, their union [ux0, ux1] and the texels all five cover [ix0, ix1]
+// The relaxed world's span of row y, clipped to the grown box.
+bool relaxed_row_span(const SnapWorlds& w, int y, int& x0, int& x1) {
+  constexpr int64_t half = kSubpixelScale / 2;
+  const int64_t py = int64_t(y) * kSubpixelScale + half;
+  if (py < w.box_lo[1] || py > w.box_hi[1]) return false;
+  if (!sample_row_span(w.relaxed, y, half, half, x0, x1)) return false;
+  // Centres x S + half inside [box_lo, box_hi]: x >= ceil((lo - half) / S), x <= floor((hi - half) / S).
+  const auto floor_div = [](int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
+  x0 = int(std::max<int64_t>(x0, -floor_div(half - w.box_lo[0], kSubpixelScale)));
+  x1 = int(std::min<int64_t>(x1, floor_div(w.box_hi[0] - half, kSubpixelScale)));
+  return x0 <= x1;
+}
+
+// Covers sample k of row y (0 the centre, 1..4 the shifts, kRelaxed the relaxed world) in [x0, x1].
+bool sample_span(const SnapWorlds& w, int k, int y, int& x0, int& x1) {
+  if (k == kRelaxed) return relaxed_row_span(w, y, x0, x1);
+  int64_t sx = kSubpixelScale / 2, sy = kSubpixelScale / 2;
+  if (k > 0) shifted_sample_steps(k - 1, sx, sy);
+  return sample_row_span(w.edges, y, sx, sy, x0, x1);
+}
+
+// The spans of the six samples, their union [ux0, ux1] and the texels all six cover [ix0, ix1]
 // (empty when ix0 > ix1). False when no sample of the row is covered.
-bool row_spans(const RasterTriangle& t, const EdgeSetup& e, int y, RowSpans& s, int& ux0, int& ux1, int& ix0,
+bool row_spans(const RasterTriangle& t, const SnapWorlds& w, int y, RowSpans& s, int& ux0, int& ux1, int& ix0,
                int& ix1) {
   ux0 = t.xmax + 1, ux1 = t.xmin - 1, ix0 = t.xmin, ix1 = t.xmax;
-  for (int k = 0; k <= kShifts; ++k) {
-    int64_t sx = kSubpixelScale / 2, sy = kSubpixelScale / 2;
-    if (k > 0) shifted_sample_steps(k - 1, sx, sy);
+  for (int k = 0; k <= kWorlds; ++k) {
     s.x0[k] = t.xmin, s.x1[k] = t.xmax;
-    s.any[k] = sample_row_span(e, y, sx, sy, s.x0[k], s.x1[k]);
+    s.any[k] = sample_span(w, k, y, s.x0[k], s.x1[k]);
     if (!s.any[k]) {
       ix0 = t.xmax + 1;
       continue;
@@ -46,17 +96,17 @@ bool row_spans(const RasterTriangle& t, const EdgeSetup& e, int y, RowSpans& s, 
 float clamped(double z) { return float(std::clamp(z, 0.0, 1.0)); }
 
 // One band's rows (band row r = window y - y0) while its triangles are swept: the smallest depth
-// of the fragments covering all five samples (`common`, most of them), of those covering shift k
-// but not all five (`partial[k]`, texels near an edge), and over the fragments covering the
-// centre the smallest z - m and z + m (m = depth_tie_margin). Each shift's front depth is then
-// min(common, partial[k]); 1 (the clear value) where nothing is.
+// of the fragments covering all six samples (`common`, most of them), of those covering sample
+// k + 1 but not all six (`partial[k]`, texels near an edge), and over the fragments covering the
+// centre the smallest z - m and z + m (m = depth_tie_margin). Each shift's (and the relaxed
+// world's) front depth is then min(common, partial[k]); 1 (the clear value) where nothing is.
 // The partial rows are filled on first use (`edged`): most rows of a band hold no edge texel
 // of any triangle when maps are large. One per thread, reset for each band: a band's arrays are
 // larger than malloc's mmap threshold, and fresh pages per band cost more than the sweep.
 struct BandDepths {
   int width = 0;
   std::vector<float> common, lo, hi;
-  std::array<std::vector<float>, kShifts> partial;
+  std::array<std::vector<float>, kWorlds> partial;
   std::vector<uint8_t> edged;
   void reset(int w, int rows) {
     width = w;
@@ -76,12 +126,12 @@ struct BandDepths {
 void add_fragment(const RowSpans& spans, int x, size_t r, float z, double m, BandDepths& b) {
   const size_t i = r * size_t(b.width) + size_t(x);
   bool all = true;
-  for (int k = 0; k <= kShifts; ++k) all = all && spans.covers(k, x);
+  for (int k = 0; k <= kWorlds; ++k) all = all && spans.covers(k, x);
   if (all) {
     b.common[i] = std::min(b.common[i], z);
   } else {
     b.touch_partial(r);
-    for (int k = 0; k < kShifts; ++k)
+    for (int k = 0; k < kWorlds; ++k)
       if (spans.covers(k + 1, x)) b.partial[size_t(k)][i] = std::min(b.partial[size_t(k)][i], z);
   }
   if (!spans.covers(0, x)) return;
@@ -89,7 +139,7 @@ void add_fragment(const RowSpans& spans, int x, size_t r, float z, double m, Ban
   b.hi[i] = std::min(b.hi[i], clamped(double(z) + m));
 }
 
-// Texels x0..x1 of band row `row` covered by all five samples, as depth_raster.cpp's span loop:
+// Texels x0..x1 of band row `row` covered by all six samples, as depth_raster.cpp's span loop:
 // edge values carried in doubles as e(x0) + k * step (exact integers below 2^53), the same depth
 // bits as the map's, and a loop that vectorizes.
 void add_interior(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, int x1, size_t row, double m,
@@ -117,7 +167,8 @@ void add_interior(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, in
 // an alpha-masked fragment writes nothing anywhere (GL discards it before the depth test, and its
 // barycentrics are the centre's for every sample).
 void sweep_triangle(const RasterTriangle& t, int y0, int y1, const Scene& scene, BandDepths& b) {
-  const EdgeSetup e = edge_setup(t);
+  const SnapWorlds w = snap_worlds(t);
+  const EdgeSetup& e = w.edges;
   const double m = depth_tie_margin(t);
   const bool masked = triangle_alpha_tested(scene, t.source);
   const double area = double(t.area2);
@@ -125,7 +176,7 @@ void sweep_triangle(const RasterTriangle& t, int y0, int y1, const Scene& scene,
   RasterFragment f;
   for (int y = std::max(y0, t.ymin); y <= std::min(y1, t.ymax); ++y) {
     int ux0, ux1, ix0, ix1;
-    if (!row_spans(t, e, y, spans, ux0, ux1, ix0, ix1)) continue;
+    if (!row_spans(t, w, y, spans, ux0, ux1, ix0, ix1)) continue;
     const size_t row = size_t(y - y0) * size_t(b.width);
     if (!masked && ix0 <= ix1) add_interior(t, e, y, ix0, ix1, row, m, b);
     const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;

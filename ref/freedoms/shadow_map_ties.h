@@ -4,7 +4,8 @@
 // texel (freedoms/raster_alternatives.h), each snapped vertex coordinate one 2^-8 texel step off:
 //  - coverage follows the sample shifted by (+-2^-8, +-2^-8) texel: where another triangle is in
 //    front there (a silhouette through the texel), or none, its depth at the centre (or the clear
-//    value 1) is what GL stores;
+//    value 1) is what GL stores; and a triangle may cover a centre within each edge's own reach
+//    (a sliver thinner than two steps, whose edges no common shift crosses at once);
 //  - every fragment covering the centre may have its depth plane moved by depth_tie_margin m, and
 //    a depth buffer keeps the smallest, so the stored value lies in [min (z - m), min (z + m)]
 //    over those fragments: the front surface's own snap and a second fragment within the margins
@@ -28,7 +29,7 @@ namespace vct {
 /// The range of one size x size depth map rendered through `view_proj` (GL_LESS, cleared to 1,
 /// the scene's alpha masks discard), stored as `format`: an image with channels
 /// tie_range_channel_name("depth", 0, lo/hi) ("depth.0.lo", "depth.0.hi"), row 0 = top, as the map.
-/// One fused sweep over the triangles finds the four shifted samples' depths and both margin
+/// One fused sweep over the triangles finds the shifted samples' and the relaxed world's depths and both margin
 /// ends; alpha masks add three visibility passes (freedoms/raster_alternatives.h).
 Image shadow_depth_range(const Scene& scene, const mat4& view_proj, int size, ShadowDepthFormat format);
 

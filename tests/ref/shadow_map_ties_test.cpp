@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "alpha_card_scene.h"
+#include "scene/gltf_loader.h"
 #include "freedoms/shadow_map_ties.h"
 #include "stage_test_scene.h"
 #include "stages/shadow_map.h"
@@ -128,6 +129,26 @@ TEST(ShadowMapTies, TwoFlipsInARowReachTheClearValue) {
     EXPECT_NEAR(lo_of(r, 18, row), 1.0f / 3.0f, 1e-6f) << row;
     EXPECT_NEAR(hi_of(r, 18, row), 1.0f / 3.0f, 1e-6f) << row;
   }
+}
+
+TEST(ShadowMapTies, ASliverThinnerThanTwoStepsMayCoverACentreNoCommonShiftCovers) {
+  // scenes/regressions/seed-43-medium: one needle triangle seen by a point light's cube face 3.
+  // At texel (22, row 119) (centre (22.5, 8.5) in window texels) its two edges pass 0.003 texel
+  // either side of x = 22.497, so the centre lies outside by less than one step while a common
+  // shift by (+-2^-8, +-2^-8) jumps over the needle; snapping each vertex on its own may cover it.
+  // Mesa llvmpipe stored 0.96112 there; the reference stores the clear value.
+  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-43-medium/scene.gltf");
+  VctSettings settings;
+  settings.shadow_map_size = 128;
+  std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  ASSERT_EQ(maps.size(), 1u);
+  ASSERT_TRUE(maps[0].is_cube());
+  const Image r = shadow_depth_range(s, maps[0].cube_view_proj[3], 128, ShadowDepthFormat::Depth32f);
+  EXPECT_LE(lo_of(r, 22, 119), 0.96112f);
+  EXPECT_EQ(hi_of(r, 22, 119), 1.0f);
+  // Two texels off the needle nothing may cover the centre.
+  EXPECT_EQ(lo_of(r, 20, 119), 1.0f);
+  EXPECT_EQ(lo_of(r, 24, 119), 1.0f);
 }
 
 TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
