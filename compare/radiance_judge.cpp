@@ -45,6 +45,7 @@ struct RadianceInputs {
   const Volume* slack = nullptr;              // voxel.shading_slack
   const Volume *fragments = nullptr, *test_fragments = nullptr;
   const Volume* exact = nullptr;              // voxel.exact, where it applies
+  const Volume* count_range = nullptr;        // voxel.fragment_count_range (lo, hi)
 };
 
 RadianceInputs radiance_inputs(const StageSet& rs, const StageSet& ts) {
@@ -63,11 +64,21 @@ RadianceInputs radiance_inputs(const StageSet& rs, const StageSet& ts) {
   // fixed-point reduction and the same fragment count they must be identical (docs/compare.md,
   // "Exact voxels"). Needs the test's fragment counts.
   in.exact = same_sized(rs, st::kVoxelExact, in.ref);
+  in.count_range = same_sized(rs, st::kVoxelFragmentCountRange, in.ref);
   if (!in.test_fragments || in.model.cas_interval) in.exact = nullptr;
   return in;
 }
 
 float channel0(const Volume* v, size_t i) { return v->data[i * size_t(v->channels)]; }
+
+// A test count the reference's coverage ties admit (voxel.fragment_count_range): derived, so not
+// counted against kFragmentCountTieCap. Without the range every differing count is counted.
+bool count_within_ties(const RadianceInputs& in, size_t i) {
+  if (!in.count_range || in.count_range->channels < 2) return false;
+  const float n = channel0(in.test_fragments, i);
+  const float* r = in.count_range->data.data() + i * size_t(in.count_range->channels);
+  return n >= r[0] && n <= r[1];
+}
 
 // Voxel i's worst channel: within the model's bound at its fragment count plus its slack (0 at an
 // exact voxel), or, with an interval, within [lo - abs - slack, hi + abs + slack]. A filled voxel
@@ -124,7 +135,7 @@ double rgb_difference(const Volume& r, const Volume& t, size_t i) {
 }
 
 struct RadianceCounts {
-  size_t count_ties = 0, shading_ties = 0, transparent_lit = 0, exact_checked = 0, exact_differ = 0;
+  size_t count_ties = 0, derived_count_ties = 0, shading_ties = 0, transparent_lit = 0, exact_checked = 0, exact_differ = 0;
   bool too_many_count_ties = false, shading_tolerated = false;
 };
 
@@ -132,9 +143,13 @@ void radiance_note(StageVerdict& v, const RadianceInputs& in, const RadianceCoun
   v.note += std::to_string(v.out_of_bound) + " of " + std::to_string(v.checked) + " voxels beyond the bound (" +
             std::to_string(v.checked - n.transparent_lit) + " occupied in both, " + std::to_string(n.transparent_lit) +
             " transparent with light)";
-  if (in.test_fragments)
-    v.note += "; " + std::to_string(n.count_ties) + " with a different fragment count (coverage ties" +
-              std::string(n.too_many_count_ties ? ": more than 2%, not ties)" : ", judged within the slack)");
+  if (in.test_fragments) {
+    v.note += "; " + std::to_string(n.count_ties + n.derived_count_ties) + " with a different fragment count";
+    if (n.derived_count_ties) v.note += " (" + std::to_string(n.derived_count_ties) + " within the coverage ties' count range)";
+    if (n.count_ties)
+      v.note += "; " + std::to_string(n.count_ties) + " outside it (counted" +
+                std::string(n.too_many_count_ties ? ": more than 2%, not ties)" : ", judged within the slack)");
+  }
   if (in.exact)
     v.note += "; " + std::to_string(n.exact_differ) + " of " + std::to_string(n.exact_checked) + " exact voxels differ";
   if (n.shading_ties)
@@ -144,6 +159,7 @@ void radiance_note(StageVerdict& v, const RadianceInputs& in, const RadianceCoun
                                   percent(share) + (n.shading_tolerated ? ")" : ", not ties)"));
   v.extra["transparent_lit"] = n.transparent_lit;
   v.extra["fragment_count_ties"] = n.count_ties;
+  v.extra["fragment_count_ties_derived"] = n.derived_count_ties;
   v.extra["exact_voxels"] = n.exact_checked;
   v.extra["exact_voxels_differing"] = n.exact_differ;
   v.extra["shading_ties"] = n.shading_ties;
@@ -210,7 +226,10 @@ StageVerdict compare_radiance(const StageSet& rs, const StageSet& ts, const Comp
     energy.bound += width;
     if (i == explained_index) explained = w;
     ++v.checked;
-    if (count_tie) ++n.count_ties, taint[i] = 1;
+    if (count_tie) {
+      taint[i] = 1;
+      ++(count_within_ties(in, i) ? n.derived_count_ties : n.count_ties);
+    }
     if (w.within()) continue;
     energy.beyond.push_back({i, std::max(0.0, rgb_difference(in.ref, in.test, i) - width)});
     ++v.out_of_bound;

@@ -163,6 +163,20 @@ Volume occupancy_ties(const Voxelization& vox) {
   return ties;
 }
 
+Volume fragment_count_ranges(const Voxelization& vox) {
+  if (vox.may_drop.size() != vox.fragments.size()) return {};  // add_coverage_ties not run
+  Volume range(vox.n, vox.n, vox.n, 2);
+  range.channel_names = {"lo", "hi"};
+  for (size_t i = 0; i < vox.fragments.size(); ++i) {
+    const ivec3 v = vox.fragments[i].voxel;
+    float* r = range.voxel(v.x, v.y, v.z);
+    r[0] += vox.may_drop[i] ? 0.0f : 1.0f;
+    r[1] += 1.0f;
+  }
+  for (const VoxelFragment& f : vox.may_add) range.voxel(f.voxel.x, f.voxel.y, f.voxel.z)[1] += 1.0f;
+  return range;
+}
+
 void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
                              const std::vector<float>& fragment_slack, const std::vector<ShadowMap>& maps,
                              const VctSettings& settings, const BounceLight* bounce, Volume& slack,

@@ -42,6 +42,11 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox);
 /// may make lands in a voxel `vox` leaves empty (VoxelGrid::occupancy_tie).
 Volume occupancy_ties(const Voxelization& vox);
 
+/// Per voxel (channels lo, hi) the fewest and the most fragments a correct GL may make there: the
+/// reference's count less those in `may_drop`, plus those of `may_add` landing there
+/// (VoxelGrid::fragment_count_range). Empty when add_coverage_ties has not run.
+Volume fragment_count_ranges(const Voxelization& vox);
+
 /// Widens `slack` (per voxel, freedoms/fragment_slack.h's voxel_shading_slack) by the fragment sets
 /// the coverage ties admit: where a voxel's set may change, its slack becomes the largest
 /// distance, over RGB, between the reference's mean and the mean of any admissible set, each

@@ -47,6 +47,7 @@ inline constexpr char kVoxelConservative[] = "voxel.conservative";
 inline constexpr char kVoxelBounceInput[] = "voxel.bounce_input";
 inline constexpr char kVoxelExact[] = "voxel.exact";
 inline constexpr char kVoxelOccupancyTie[] = "voxel.occupancy_tie";
+inline constexpr char kVoxelFragmentCountRange[] = "voxel.fragment_count_range";
 inline constexpr char kVoxelHoles[] = "voxel.holes";
 inline constexpr char kMipIso[] = "mip.iso";
 inline constexpr char kMipPosx[] = "mip.posx";

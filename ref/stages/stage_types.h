@@ -81,6 +81,10 @@ struct VoxelGrid {
   // reference's: every fragment in it may drop, or a fragment GL may make lands in it while the
   // reference's is empty (the coverage ties, freedoms/coverage_ties.h).
   Volume occupancy_tie;
+  // Reference only: per voxel the fewest and the most fragments a correct GL may average there
+  // (channels lo, hi): the reference's count less those that may drop, plus those it may make
+  // (freedoms/coverage_ties.h, fragment_count_ranges).
+  Volume fragment_count_range;
 };
 
 /// Axis directions of the anisotropic volumes, in this order: +x, -x, +y, -y, +z, -z.
