@@ -31,7 +31,6 @@ void direct_slack(const Scene& scene, const VctSettings& s, Inputs&, FrameResult
 void coverage_ties(const Scene& scene, const VctSettings&, Inputs& in, FrameResult& r) {
   add_coverage_ties(scene, in.voxels);
   r.voxels.occupancy_tie = occupancy_ties(in.voxels);
-  r.voxels.fragment_count_range = fragment_count_ranges(in.voxels);
 }
 
 // The last frame's: its bounce light is rebuilt from the frame before it (r.bounce_input) as

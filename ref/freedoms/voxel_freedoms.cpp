@@ -16,6 +16,7 @@ void add_voxel_freedoms(const Scene& scene, const Voxelization& vox, const std::
   g.shading_slack = voxel_shading_slack(vox, slack);
   g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
   widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);
+  g.fragment_count_range = fragment_count_ranges(vox);
   add_reduction_interval(vox, values, settings, g);
 }
 

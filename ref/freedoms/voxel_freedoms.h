@@ -15,7 +15,7 @@
 
 namespace vct {
 
-/// Fills g.shading_slack and g.exact for the grid inject_and_reduce made from the fragments' light
+/// Fills g.shading_slack, g.exact and g.fragment_count_range for the grid inject_and_reduce made from the fragments' light
 /// `values` on `vox` (whose coverage ties freedoms/coverage_ties.h has added) with `maps` and
 /// `bounce`, widened where the coverage ties let the fragment set change, and g.cas_lo / g.cas_hi
 /// for a racy reduction (freedoms/reduction_interval.h). Before the particles' light.
