@@ -95,48 +95,60 @@ bool row_spans(const RasterTriangle& t, const SnapWorlds& w, int y, RowSpans& s,
 
 float clamped(double z) { return float(std::clamp(z, 0.0, 1.0)); }
 
-// One band's rows (band row r = window y - y0) while its triangles are swept: the smallest depth
-// of the fragments covering all six samples (`common`, most of them), of those covering sample
-// k + 1 but not all six (`partial[k]`, texels near an edge), and over the fragments covering the
-// centre the smallest z - m and z + m (m = depth_tie_margin). Each shift's (and the relaxed
-// world's) front depth is then min(common, partial[k]); 1 (the clear value) where nothing is.
+// One band's rows (band row r = window y - y0) while its triangles are swept, each fragment's
+// depth z with its plane's margin m = depth_tie_margin (a snapped plane moves in every world): the
+// smallest z - m and z + m of the fragments covering all six samples (`common_lo`, `common_hi`,
+// most of them), of those covering sample k + 1 but not all six (`partial_lo[k]`, `partial_hi[k]`,
+// texels near an edge), and of the fragments covering the centre (`lo`, `hi`). Each shift's (and
+// the relaxed world's) front lies in [min(common_lo, partial_lo[k]), min(common_hi,
+// partial_hi[k])]; 1 (the clear value) where nothing is. (Without the margins a steep plane that
+// covers a texel only in a shifted world was pinned to its reference depth: hunt seed 482, a
+// texel 2.1e-4 below the range on a 64^2 map.)
 // The partial rows are filled on first use (`edged`): most rows of a band hold no edge texel
 // of any triangle when maps are large. One per thread, reset for each band: a band's arrays are
 // larger than malloc's mmap threshold, and fresh pages per band cost more than the sweep.
 struct BandDepths {
   int width = 0;
-  std::vector<float> common, lo, hi;
-  std::array<std::vector<float>, kWorlds> partial;
+  std::vector<float> common_lo, common_hi, lo, hi;
+  std::array<std::vector<float>, kWorlds> partial_lo, partial_hi;
   std::vector<uint8_t> edged;
   void reset(int w, int rows) {
     width = w;
     const size_t n = size_t(w) * size_t(rows);
-    common.assign(n, 1.0f), lo.assign(n, 1.0f), hi.assign(n, 1.0f);
-    for (auto& p : partial) p.resize(n);
+    common_lo.assign(n, 1.0f), common_hi.assign(n, 1.0f), lo.assign(n, 1.0f), hi.assign(n, 1.0f);
+    for (int k = 0; k < kWorlds; ++k) partial_lo[size_t(k)].resize(n), partial_hi[size_t(k)].resize(n);
     edged.assign(size_t(rows), 0);
   }
   void touch_partial(size_t row) {
     if (edged[row]) return;
     edged[row] = 1;
-    for (auto& p : partial) std::fill_n(p.begin() + ptrdiff_t(row * size_t(width)), width, 1.0f);
+    for (int k = 0; k < kWorlds; ++k) {
+      std::fill_n(partial_lo[size_t(k)].begin() + ptrdiff_t(row * size_t(width)), width, 1.0f);
+      std::fill_n(partial_hi[size_t(k)].begin() + ptrdiff_t(row * size_t(width)), width, 1.0f);
+    }
   }
 };
 
 // One fragment at texel x of band row r, whichever samples `spans` says it covers.
 void add_fragment(const RowSpans& spans, int x, size_t r, float z, double m, BandDepths& b) {
   const size_t i = r * size_t(b.width) + size_t(x);
+  const float l = clamped(double(z) - m), h = clamped(double(z) + m);
   bool all = true;
   for (int k = 0; k <= kWorlds; ++k) all = all && spans.covers(k, x);
   if (all) {
-    b.common[i] = std::min(b.common[i], z);
+    b.common_lo[i] = std::min(b.common_lo[i], l);
+    b.common_hi[i] = std::min(b.common_hi[i], h);
   } else {
     b.touch_partial(r);
-    for (int k = 0; k < kWorlds; ++k)
-      if (spans.covers(k + 1, x)) b.partial[size_t(k)][i] = std::min(b.partial[size_t(k)][i], z);
+    for (size_t k = 0; k < size_t(kWorlds); ++k) {
+      if (!spans.covers(int(k) + 1, x)) continue;
+      b.partial_lo[k][i] = std::min(b.partial_lo[k][i], l);
+      b.partial_hi[k][i] = std::min(b.partial_hi[k][i], h);
+    }
   }
   if (!spans.covers(0, x)) return;
-  b.lo[i] = std::min(b.lo[i], clamped(double(z) - m));
-  b.hi[i] = std::min(b.hi[i], clamped(double(z) + m));
+  b.lo[i] = std::min(b.lo[i], l);
+  b.hi[i] = std::min(b.hi[i], h);
 }
 
 // Texels x0..x1 of band row `row` covered by all six samples, as depth_raster.cpp's span loop:
@@ -148,15 +160,17 @@ void add_interior(const RasterTriangle& t, const EdgeSetup& e, int y, int x0, in
   const double* e0 = span.e0;
   const double* step = span.step;
   const double area = double(t.area2);
-  float* common = b.common.data() + row + size_t(x0);
+  float* common_lo = b.common_lo.data() + row + size_t(x0);
+  float* common_hi = b.common_hi.data() + row + size_t(x0);
   float* lo = b.lo.data() + row + size_t(x0);
   float* hi = b.hi.data() + row + size_t(x0);
   for (int k = 0; k <= x1 - x0; ++k) {
     const double dk = double(k);
     const float z = interpolate_window_depth((e0[0] + dk * step[0]) / area, (e0[1] + dk * step[1]) / area,
                                              (e0[2] + dk * step[2]) / area, t.z);
-    common[k] = z < common[k] ? z : common[k];
     const float l = clamped(double(z) - m), h = clamped(double(z) + m);
+    common_lo[k] = l < common_lo[k] ? l : common_lo[k];
+    common_hi[k] = h < common_hi[k] ? h : common_hi[k];
     lo[k] = l < lo[k] ? l : lo[k];
     hi[k] = h < hi[k] ? h : hi[k];
   }
@@ -217,12 +231,12 @@ void sweep_alternatives(const Scene& scene, const mat4& view_proj, Image& range)
         const size_t i = size_t(y - y0) * size_t(size) + size_t(x);
         float l = b.lo[i], h = b.hi[i];
         if (edged) {
-          for (const auto& p : b.partial) {
-            const float shifted = std::min(b.common[i], p[i]);
-            l = std::min(l, shifted), h = std::max(h, shifted);
+          for (size_t k = 0; k < size_t(kWorlds); ++k) {
+            l = std::min(l, std::min(b.common_lo[i], b.partial_lo[k][i]));
+            h = std::max(h, std::min(b.common_hi[i], b.partial_hi[k][i]));
           }
-        } else {  // no edge texel in the row: every shift sees `common`
-          l = std::min(l, b.common[i]), h = std::max(h, b.common[i]);
+        } else {  // no edge texel in the row: every shift sees the common fragments
+          l = std::min(l, b.common_lo[i]), h = std::max(h, b.common_hi[i]);
         }
         float* out = range.pixel(x, size - 1 - y);
         out[0] = l, out[1] = h;
