@@ -133,6 +133,34 @@ TEST(RasterTies, SilhouetteThroughAPixelCentreAdmitsTheSurfaceBehind) {
   }
 }
 
+// A wall receding to the right (z = -2 at x = -3, z = -6 at x = 3): at interior pixels the depth
+// spans its own plane at the (+-2^-8, +-2^-8) sample shifts, 2^-8 (|dz/dx| + |dz/dy|) either side
+// (dz/dy = 0 here; dz/dx from the reference's own neighbours), as the position does. Without it a
+// pixel whose neighbours are other surfaces, so that the depth model's slope term misses the
+// plane's, fails on its own snap (hunt seeds 413, 579: 1.5e-4 beyond, the position admitted).
+TEST(RasterTies, DepthSpansItsOwnPlaneAtTheShifts) {
+  Scene s = camera_scene();
+  const uint32_t grey = test::add_material(s, vec3(0.5f));
+  test::add_quad(s, {-3, -3, -2}, {3, -3, -6}, {3, 3, -6}, {-3, 3, -2}, {0.8944f, 0, 0.4472f}, grey);
+  const GBuffer g = render(s);
+  const int lo = channel(g.tie_range, "depth.0.lo"), hi = channel(g.tie_range, "depth.0.hi");
+  ASSERT_GE(lo, 0);
+  int checked = 0;
+  for (int row = 2; row < kH - 2; ++row)
+    for (int x = 3; x < kW - 3; ++x) {
+      // Only where the wall covers both neighbours (it ends inside the image on the right).
+      if (g.coverage.at(x - 1, row, 0) == 0.0f || g.coverage.at(x + 1, row, 0) == 0.0f || g.depth.at(x + 1, row, 0) >= 1.0f)
+        continue;
+      const float dzdx = 0.5f * (g.depth.at(x + 1, row, 0) - g.depth.at(x - 1, row, 0));
+      const float m = std::abs(dzdx) / 256.0f;
+      ASSERT_GT(m, 1e-6f);
+      ++checked;
+      EXPECT_NEAR(g.tie_range.at(x, row, lo), g.depth.at(x, row, 0) - m, 0.05f * m) << x << "," << row;
+      EXPECT_NEAR(g.tie_range.at(x, row, hi), g.depth.at(x, row, 0) + m, 0.05f * m) << x << "," << row;
+    }
+  EXPECT_GT(checked, 40);
+}
+
 TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
   Scene s = camera_scene();
   const uint32_t grey = test::add_material(s, vec3(0.5f));
