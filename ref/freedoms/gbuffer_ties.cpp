@@ -80,15 +80,47 @@ void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const Visibil
   });
 }
 
+// The first GBufferSample value of each texture slack channel's stage, and its channel count.
+struct SlackValues {
+  TextureSlackChannel slack;
+  int first, count;
+};
+constexpr SlackValues kSlackValues[] = {{kSlackNormal, kNormalOffset, 3},
+                                        {kSlackAlbedo, kNormalOffset + 3, 3},
+                                        {kSlackMaterial, kNormalOffset + 6, 4},
+                                        {kSlackEmission, kNormalOffset + 13, 3}};
+
+// An alternative surface's own texture freedom (docs/compare.md, "Raster alternatives", "An
+// alternative's own texture slack"): a correct GL that shows that surface reads its attributes at
+// its own snapped sample and looks its textures up at any admissible LOD (GL 4.5 §8.14.1,
+// §14.6.1), exactly the freedom the bound gives the front surface through g.texture_slack. The bound the judge adds to the range is
+// the front's, so the alternative's slack goes into the range: its values +- its slack.
+void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
+                            const VisibilityBuffer& other, int x, int row, const GBufferSample& alt, GBuffer& g) {
+  const size_t i = other.index(x, row);
+  const uint32_t tri = uint32_t(other.triangle[i]);
+  const PixelMaterial centre = pixel_material(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
+  const vec4 slack = texture_slack(scene, wb, x, row, tri, other.bary[i], centre.material, centre.lods);
+  float* p = g.tie_range.pixel(x, row);
+  for (const SlackValues& s : kSlackValues)
+    for (int k = s.first; k < s.first + s.count; ++k) {
+      p[2 * k] = std::min(p[2 * k], alt.values[k] - slack[s.slack]);
+      p[2 * k + 1] = std::max(p[2 * k + 1], alt.values[k] + slack[s.slack]);
+    }
+}
+
 void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, const VisibilityBuffer& other,
               GBuffer& g) {
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
     for (int x = 0; x < vb.width; ++x) {
       const size_t i = vb.index(x, row);
       if (other.triangle[i] == vb.triangle[i]) continue;  // same surface (or empty) there
       const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
       widen(g.tie_range, x, row, alt);
-      if (other.triangle[i] >= 0 && other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+      if (other.triangle[i] < 0) continue;  // the clear values: nothing looked up
+      if (other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+      widen_by_texture_slack(scene, view_proj, wb, other, x, row, alt, g);
     }
   });
 }
