@@ -56,26 +56,31 @@ void start_ranges(const VisibilityBuffer& vb, GBuffer& g) {
 
 constexpr int kPositionOffset = 2;  // first position value in GBufferSample (after coverage, depth)
 
-// The front surface's own position under the snap: its plane's points at the four (+-2^-8,
-// +-2^-8) sample shifts (the texture slack's shifted_surface_points, extrapolated on the plane).
-// A nearly edge-on triangle's position moves far along the view ray under a one-step snap, more
-// than the position model's slope term, taken from the image's 3x3 differences across other
-// surfaces, allows there.
+// A surface's own position under the snap: its plane's points at the four (+-2^-8, +-2^-8)
+// sample shifts (the texture slack's shifted_surface_points, extrapolated on the plane). A nearly
+// edge-on triangle's position moves far along the view ray under a one-step snap, more than the
+// position model's slope term, taken from the image's 3x3 differences across other surfaces,
+// allows there.
+void widen_by_plane_at_shifts(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
+                              const vec3& bary, GBuffer& g) {
+  SurfacePoint points[kSlackShifts];
+  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  float* p = g.tie_range.pixel(x, row);
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < 3; ++c) {
+      const int v = kPositionOffset + c;
+      p[2 * v] = std::min(p[2 * v], points[k].position[c]);
+      p[2 * v + 1] = std::max(p[2 * v + 1], points[k].position[c]);
+    }
+}
+
+// The front surface's own plane under the snap.
 void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
   const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
     for (int x = 0; x < vb.width; ++x) {
       const size_t i = vb.index(x, row);
-      if (vb.triangle[i] < 0) continue;
-      SurfacePoint points[kSlackShifts];
-      const int n = shifted_surface_points(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], points);
-      float* p = g.tie_range.pixel(x, row);
-      for (int k = 0; k < n; ++k)
-        for (int c = 0; c < 3; ++c) {
-          const int v = kPositionOffset + c;
-          p[2 * v] = std::min(p[2 * v], points[k].position[c]);
-          p[2 * v + 1] = std::max(p[2 * v + 1], points[k].position[c]);
-        }
+      if (vb.triangle[i] >= 0) widen_by_plane_at_shifts(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], g);
     }
   });
 }
@@ -91,10 +96,11 @@ constexpr SlackValues kSlackValues[] = {{kSlackNormal, kNormalOffset, 3},
                                         {kSlackEmission, kNormalOffset + 13, 3}};
 
 // An alternative surface's own texture freedom (docs/compare.md, "Raster alternatives", "An
-// alternative's own texture slack"): a correct GL that shows that surface reads its attributes at
-// its own snapped sample and looks its textures up at any admissible LOD (GL 4.5 §8.14.1,
-// §14.6.1), exactly the freedom the bound gives the front surface through g.texture_slack. The bound the judge adds to the range is
-// the front's, so the alternative's slack goes into the range: its values +- its slack.
+// alternative's own freedoms"): a correct GL that shows that surface reads its attributes at its
+// own snapped sample and looks its textures up at any admissible LOD (GL 4.5 §8.14.1, §14.6.1),
+// exactly the freedom the bound gives the front surface through g.texture_slack. The bound the
+// judge adds to the range is the front's, so the alternative's slack goes into the range: its
+// values +- its slack.
 void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
                             const VisibilityBuffer& other, int x, int row, const GBufferSample& alt, GBuffer& g) {
   const size_t i = other.index(x, row);
@@ -120,6 +126,9 @@ void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer&
       widen(g.tie_range, x, row, alt);
       if (other.triangle[i] < 0) continue;  // the clear values: nothing looked up
       if (other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+      // The alternative's own freedoms, as the front surface's: its plane and its lookups under
+      // the snap (docs/compare.md, "Raster alternatives", "An alternative's own freedoms").
+      widen_by_plane_at_shifts(scene, wb, x, row, uint32_t(other.triangle[i]), other.bary[i], g);
       widen_by_texture_slack(scene, view_proj, wb, other, x, row, alt, g);
     }
   });
@@ -155,8 +164,14 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
   for (int k = 0; k < 4; ++k) {
     const float s = float(kVertexSnapStep);
     const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
-    widen_by(scene, view_proj, vb,
-             render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample), g);
+    const VisibilityBuffer shifted =
+        render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample);
+    widen_by(scene, view_proj, vb, shifted, g);
+    // The same snap moves the depth planes: where the shifted sample's front surface ties in depth
+    // with another one covering that sample (two faces meeting at a fold's edge, one front- and
+    // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
+    // order under a shift").
+    widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, shifted, true, sample), g);
   }
   widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
   if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);

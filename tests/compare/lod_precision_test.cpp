@@ -120,7 +120,8 @@ TEST(LodPrecision, FastLog2LambdaIsAdmittedAQuarterLevelBiasFails) {
   // The reconstruction of GL's lookup is exact at the exact lambda (the reference itself).
   const Image same = material_at(w, [](double l) { return l; });
   for (int row = 0; row < kSize; ++row)
-    for (int x = 0; x < kSize; ++x) ASSERT_NEAR(same.at(x, row, 1), w.g.material.at(x, row, 1), 1e-5) << x << "," << row;
+    for (int x = 0; x < kSize; ++x)
+      ASSERT_NEAR(same.at(x, row, 1), w.g.material.at(x, row, 1), 1e-5) << x << "," << row;
   // llvmpipe's lambda: 0.0431 levels low, roughness (230 - 25)/255 x 0.0431 = 0.035 lower, beyond
   // the 2^-7 + 2^-7 |r| bound; within the slack of 2^-4 levels (0.050).
   const Image llvmpipe = material_at(w, [](double l) { return fast_log2_lambda(std::exp2(l)); });
