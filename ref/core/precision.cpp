@@ -28,8 +28,9 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "attributes at a sample or centre outside the triangle (MSAA coverage without centroid)", 0.0,
      "the snapped point's reach 2^-8 sum|l_i| / (1 - 2^-8 G), l the barycentrics at the centre, G their gradients",
      "GL 4.5 §14.6.1, §14.9.3 (non-centroid inputs are evaluated at the pixel centre)",
-     "the voxel shading slack (voxel_snap_reach), coverage ties; the camera G-buffer's extrapolation is open "
-     "(issue 34 kind 2)"},
+     "the voxel shading slack (voxel_snap_reach), coverage ties; the camera G-buffer (single-sampled: a centre "
+     "outside a triangle is covered only under the snap, within 2^-8 px of its edge): each raster alternative's "
+     "plane and lookups at the four shifts (gbuffer_ties.cpp)"},
     {P::Unorm8, "unorm8", "float to 8-bit UNORM (storage, normal-map texels, display output)", 1.0 / 255.0,
      "one step 1/255: either neighbour (nearest is only recommended)", "GL 4.5 §2.3.5.1",
      "RGBA8 voxel storage (rgba8-quantised, fixed-point + 1/255, cas-rgba8-interval), RGBA8 mips, the normal-map "

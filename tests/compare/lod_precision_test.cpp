@@ -11,55 +11,15 @@
 #include "compare/stage_compare.h"
 #include "freedoms/gbuffer_freedoms.h"
 #include "scene/surface.h"
-#include "stage_test_scene.h"
+#include "level_marked_wall.h"
 #include "stages/gbuffer.h"
 #include "stages/uv_derivatives.h"
 
 namespace vct::cmp {
 namespace {
 
-constexpr int kSize = 16;
-
-// llvmpipe's lambda from rho (gallivm's lp_build_fast_log2 on rho^2, halved): floor(log2 x) plus
-// the mantissa's linear part.
-double fast_log2_lambda(double rho) {
-  int e = 0;
-  const double m = std::frexp(rho * rho, &e);  // rho^2 = m 2^e, m in [1/2, 1)
-  return 0.5 * (double(e - 1) + (2.0 * m - 1.0));
-}
-
-// A 4 m wall at z = -2 facing the camera (yfov 1 rad, 16^2 view), u = S (x + 2) / 4, with a
-// 256^2 linear metallic-roughness texture whose mip levels are constant: even levels roughness
-// 25/255, odd ones 230/255. UV is affine in the window with aligned axes, so every pixel's
-// admissible lambda is the exact one +- the precision, and roughness is linear in lambda within
-// a level: a lambda error reads back directly. rho = 256 S tan(0.5) / 16 texels per pixel;
-// S = 0.5497 puts lambda at 2.264, where log2's mantissa is near 1/ln 2 (fast_log2's worst).
-Scene level_marked_wall() {
-  Scene s;
-  const uint32_t m = test::add_material(s, vec3(0.5f));
-  test::add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}, {0, 0, 1}, m);
-  const float scale = 0.5497f;
-  for (size_t i = 0; i < s.positions.size(); ++i)
-    s.uv0[i] = vec2(scale * (s.positions[i].x + 2.0f) / 4.0f, scale * (s.positions[i].y + 2.0f) / 4.0f);
-  const auto level = [](int size, int k) {
-    return TextureLevel{size, size, std::vector<uint8_t>(size_t(size) * size_t(size) * 4, k % 2 ? 230 : 25)};
-  };
-  Texture t;
-  t.width = t.height = 256;
-  t.rgba8 = level(256, 0).rgba8;
-  for (int k = 1, size = 128; size >= 1; ++k, size /= 2) t.mips[0].push_back(level(size, k));
-  s.textures.push_back(t);
-  s.materials[m].metallic_roughness_texture.texture = 0;
-  s.materials[m].metallic_factor = 0.0f;
-  s.materials[m].roughness_factor = 1.0f;
-  s.camera.position = vec3(0.0f);
-  s.camera.forward = vec3(0, 0, -1);
-  s.camera.yfov = 1.0f;
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 10.0f;
-  s.volume = fit_volume(s.bounds);
-  return s;
-}
+constexpr int kSize = test::kLevelWallPixels;
+using test::fast_log2_lambda;
 
 struct Wall {
   Scene scene;
@@ -69,7 +29,7 @@ struct Wall {
 };
 
 Wall wall() {
-  Wall w{level_marked_wall(), {}, {}, {}};
+  Wall w{test::level_marked_wall(), {}, {}, {}};
   VctSettings st;
   st.width = st.height = kSize;
   w.g = render_gbuffer(w.scene, st, &w.vb);
@@ -102,7 +62,7 @@ TEST(LodPrecision, TheWallsLambdaIsWhereFastLog2IsWorst) {
   const Wall w = wall();
   const PixelMaterial c = material_of(w, 8, 8);
   const double lambda = c.lods.exact.lambda[kSlotMetallicRoughness];
-  EXPECT_NEAR(lambda, std::log2(256.0 * 0.5497 * std::tan(0.5) / 16.0), 1e-4);  // 2.2638
+  EXPECT_NEAR(lambda, test::level_wall_lambda(), 1e-4);  // 2.2638
   const double err = lambda - fast_log2_lambda(std::exp2(lambda));
   EXPECT_GT(err, 0.042);  // the worst is 0.0431 (mantissa 1/ln 2)
   EXPECT_LT(err, 0.0431);
