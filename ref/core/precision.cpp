@@ -28,8 +28,9 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "attributes at a sample or centre outside the triangle (MSAA coverage without centroid)", 0.0,
      "the snapped point's reach 2^-8 sum|l_i| / (1 - 2^-8 G), l the barycentrics at the centre, G their gradients",
      "GL 4.5 §14.6.1, §14.9.3 (non-centroid inputs are evaluated at the pixel centre)",
-     "the voxel shading slack (voxel_snap_reach), coverage ties; the camera G-buffer's extrapolation is open "
-     "(issue 34 kind 2)"},
+     "the voxel shading slack (voxel_snap_reach), coverage ties; the camera G-buffer (single-sampled: a centre "
+     "outside a triangle is covered only under the snap, within 2^-8 px of its edge): each raster alternative's "
+     "plane and lookups at the four shifts (gbuffer_ties.cpp)"},
     {P::Unorm8, "unorm8", "float to 8-bit UNORM (storage, normal-map texels, display output)", 1.0 / 255.0,
      "one step 1/255: either neighbour (nearest is only recommended)", "GL 4.5 §2.3.5.1",
      "RGBA8 voxel storage (rgba8-quantised, fixed-point + 1/255, cas-rgba8-interval), RGBA8 mips, the normal-map "
@@ -54,9 +55,11 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "GL 4.5 §8.14.2 (open); D3D11 functional spec §7.18.16.1; dEQP LookupPrecision uvwBits 8",
      "texture-8bit-weights, normal-map-8bit-weights, filtered-8bit (cone stages), the slacks' texel shift, "
      "linear PCF's 2^-7 (kLinearCompareWeightStep)"},
-    {P::LodDerivatives, "lod-derivatives", "the texture LOD lambda from derivatives", 0.0,
-     "every lambda between the approximations of the scale factor rho the spec permits, with an 8-bit fraction",
-     "GL 4.5 §8.14.1 (eq. 8.7 and the max-axis approximation); dEQP LodPrecision",
+    {P::LodDerivatives, "lod-derivatives", "the texture LOD lambda from derivatives", 0x1p-4,
+     "every lambda between the approximations of the scale factor rho the spec permits, +- 2^-4 for log2 itself "
+     "(llvmpipe's linear-mantissa log2: up to 0.0431 low)",
+     "GL 4.5 §8.14.1 (eq. 8.7 and the max-axis approximation; log2's precision is not fixed); dEQP LodPrecision "
+     "lodBits 4 (accepted as QualityWarning after lodBits 6)",
      "gbuffer.texture_slack (texture LOD), the voxel shading slack (voxel_lod)"},
     {P::ShadingArithmetic, "shading-arithmetic", "the shared BRDF evaluated in float", 0x1p-6,
      "2^-6 |r| + 2^-10 mean |r| on inputs that carry 2^-7",

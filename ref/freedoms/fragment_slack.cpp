@@ -11,6 +11,7 @@
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/snap_visibility.h"
+#include "freedoms/tangent_handedness.h"
 #include "freedoms/texture_slack.h"
 #include "stages/direct.h"
 #include "stages/light_sample.h"
@@ -177,6 +178,16 @@ float normal_precision_slack(const Scene& scene, const VoxelFragment& f, const S
   return slack;
 }
 
+/// A triangle whose vertices disagree on the tangent's handedness (freedoms/tangent_handedness.h):
+/// the change of the fragment's light with the other bitangent, at the reference's position and
+/// lambdas.
+float handedness_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const vec3& value,
+                       const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce) {
+  const SurfacePoint p = with_other_handedness(interpolate_surface(scene, f.triangle, f.b1, f.b2));
+  return largest_channel(
+      glm::abs(light_leaving(scene, f, evaluate_material(scene, p, lods), maps, settings, bounce) - value));
+}
+
 float srgb_precision_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const vec3& value,
                            const std::vector<ShadowMap>& maps, const VctSettings& settings,
                            const BounceLight* bounce) {
@@ -276,6 +287,8 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
     if (m.normal_texture.present())
       slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
+    if (handedness_may_flip(scene, f.triangle))
+      slack += handedness_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     if (m.base_color_texture.present() || m.emissive_texture.present())
       slack += srgb_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     if (settings.shadow_compare == ShadowCompare::Linear) slack += linear_compare_slack(scene, f, l.exact, settings);

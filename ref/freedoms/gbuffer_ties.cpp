@@ -68,39 +68,80 @@ void widen_value(float* p, int v, float value) {
   p[2 * v + 1] = std::max(p[2 * v + 1], value);
 }
 
-// The front surface's own position and depth under the snap: its plane's points at the four
-// (+-2^-8, +-2^-8) sample shifts (the texture slack's shifted_surface_points, extrapolated on the
-// plane), and their window depths. A nearly edge-on triangle's position and depth move far along
-// the view ray under a one-step snap, more than the models' slope terms, taken from the image's
-// 3x3 differences across other surfaces, allow there; the depth moves with the position (the same
+// A surface's own position and depth under the snap: its plane's points at the four (+-2^-8,
+// +-2^-8) sample shifts (the texture slack's shifted_surface_points, extrapolated on the plane),
+// and their window depths. A nearly edge-on triangle's position and depth move far along the view
+// ray under a one-step snap, more than the models' slope terms, taken from the image's 3x3
+// differences across other surfaces, allow there; the depth moves with the position (the same
 // plane at the same shifted sample: hunt seeds 413, 579, whose position was admitted by its own
 // plane and whose depth, 1.5e-4 off, was not).
+void widen_by_plane_at_shifts(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb, int x, int row,
+                              uint32_t triangle, const vec3& bary, GBuffer& g) {
+  SurfacePoint points[kSlackShifts];
+  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  float* p = g.tie_range.pixel(x, row);
+  for (int k = 0; k < n; ++k) {
+    for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, points[k].position[c]);
+    widen_value(p, kDepthOffset, window_depth(view_proj, points[k].position));
+  }
+}
+
+// The front surface's own plane under the snap.
 void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
   const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
     for (int x = 0; x < vb.width; ++x) {
       const size_t i = vb.index(x, row);
-      if (vb.triangle[i] < 0) continue;
-      SurfacePoint points[kSlackShifts];
-      const int n = shifted_surface_points(scene, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], points);
-      float* p = g.tie_range.pixel(x, row);
-      for (int k = 0; k < n; ++k) {
-        for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, points[k].position[c]);
-        widen_value(p, kDepthOffset, window_depth(view_proj, points[k].position));
-      }
+      if (vb.triangle[i] >= 0) widen_by_plane_at_shifts(scene, view_proj, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], g);
     }
   });
 }
 
+// The first GBufferSample value of each texture slack channel's stage, and its channel count.
+struct SlackValues {
+  TextureSlackChannel slack;
+  int first, count;
+};
+constexpr SlackValues kSlackValues[] = {{kSlackNormal, kNormalOffset, 3},
+                                        {kSlackAlbedo, kNormalOffset + 3, 3},
+                                        {kSlackMaterial, kNormalOffset + 6, 4},
+                                        {kSlackEmission, kNormalOffset + 13, 3}};
+
+// An alternative surface's own texture freedom (docs/compare.md, "Raster alternatives", "An
+// alternative's own freedoms"): a correct GL that shows that surface reads its attributes at its
+// own snapped sample and looks its textures up at any admissible LOD (GL 4.5 §8.14.1, §14.6.1),
+// exactly the freedom the bound gives the front surface through g.texture_slack. The bound the
+// judge adds to the range is the front's, so the alternative's slack goes into the range: its
+// values +- its slack.
+void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
+                            const VisibilityBuffer& other, int x, int row, const GBufferSample& alt, GBuffer& g) {
+  const size_t i = other.index(x, row);
+  const uint32_t tri = uint32_t(other.triangle[i]);
+  const PixelMaterial centre = pixel_material(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
+  const vec4 slack = texture_slack(scene, wb, x, row, tri, other.bary[i], centre.material, centre.lods);
+  float* p = g.tie_range.pixel(x, row);
+  for (const SlackValues& s : kSlackValues)
+    for (int k = s.first; k < s.first + s.count; ++k) {
+      p[2 * k] = std::min(p[2 * k], alt.values[k] - slack[s.slack]);
+      p[2 * k + 1] = std::max(p[2 * k + 1], alt.values[k] + slack[s.slack]);
+    }
+}
+
 void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, const VisibilityBuffer& other,
               GBuffer& g) {
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
     for (int x = 0; x < vb.width; ++x) {
       const size_t i = vb.index(x, row);
       if (other.triangle[i] == vb.triangle[i]) continue;  // same surface (or empty) there
       const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
       widen(g.tie_range, x, row, alt);
-      if (other.triangle[i] >= 0 && other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+      if (other.triangle[i] < 0) continue;  // the clear values: nothing looked up
+      if (other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+      // The alternative's own freedoms, as the front surface's: its plane and its lookups under
+      // the snap (docs/compare.md, "Raster alternatives", "An alternative's own freedoms").
+      widen_by_plane_at_shifts(scene, view_proj, wb, x, row, uint32_t(other.triangle[i]), other.bary[i], g);
+      widen_by_texture_slack(scene, view_proj, wb, other, x, row, alt, g);
     }
   });
 }
@@ -135,8 +176,14 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
   for (int k = 0; k < 4; ++k) {
     const float s = float(kVertexSnapStep);
     const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
-    widen_by(scene, view_proj, vb,
-             render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample), g);
+    const VisibilityBuffer shifted =
+        render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample);
+    widen_by(scene, view_proj, vb, shifted, g);
+    // The same snap moves the depth planes: where the shifted sample's front surface ties in depth
+    // with another one covering that sample (two faces meeting at a fold's edge, one front- and
+    // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
+    // order under a shift").
+    widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, shifted, true, sample), g);
   }
   widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
   if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);

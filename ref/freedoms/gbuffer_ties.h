@@ -41,12 +41,15 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 
 /// Fills g.tie_range from the reference's visibility `vb` (centre sample) and G-buffer `g`:
 /// widens the position by the front surface's own plane at the four shifts (a nearly edge-on
-/// triangle's position moves along the view ray under a one-step snap), re-rasterizes the scene with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens
-/// each pixel's range by the values of any other front surface (or of an empty pixel) found
-/// there, by the surface whose depth at the centre ties with the front one's (the other
-/// fragment with the smallest depth minus margin, when that is within the front's depth plus
-/// its margin), by the negated normal where a front surface's facing may flip, and, where an
-/// alpha test may go either way (freedoms/alpha_ties.h), by its other outcome.
+/// triangle's position moves along the view ray under a one-step snap), re-rasterizes the scene
+/// with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens each pixel's range by
+/// the values of any other front surface (or of an empty pixel) found there and of the surface
+/// tied in depth with it at that sample, by the surface whose depth at the centre ties with the
+/// front one's (the other fragment with the smallest depth minus margin, when that is within the
+/// front's depth plus its margin), by the negated normal where a front surface's facing may flip,
+/// and, where an alpha test may go either way (freedoms/alpha_ties.h), by its other outcome. Each
+/// alternative surface comes with its own freedoms: its plane at the shifts and its values +- its
+/// own texture slack.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
 
 }  // namespace vct

@@ -20,17 +20,18 @@ void copy_entry(const VisibilityBuffer& from, size_t i, VisibilityBuffer& to) {
   to.facing_tie[i] = from.facing_tie[i];
 }
 
-// Calls visit(ti, t, f) for every fragment at the pixel centres of every triangle, bands in
-// parallel (each owns its rows), triangles in index order within a band: as render_visibility, so
-// the result does not depend on the thread count.
+// Calls visit(ti, t, f) for every fragment of every triangle whose coverage sample (`sample`,
+// pixel units from the pixel's corner; depth and barycentrics stay those at the centre) it covers,
+// bands in parallel (each owns its rows), triangles in index order within a band: as
+// render_visibility, so the result does not depend on the thread count.
 template <class Visit>
-void for_each_centre_fragment(const BinnedTriangles& binned, int w, int h, Visit&& visit) {
-  const std::vector<vec2>& centre = standard_sample_positions(1);
+void for_each_fragment_at(const BinnedTriangles& binned, int w, int h, vec2 sample, Visit&& visit) {
+  const std::vector<vec2> samples = {sample};
   parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
     for (uint32_t ti : binned.bands[size_t(band)]) {
       const RasterTriangle& t = binned.triangles[ti];
-      rasterize(t, centre, 0, w - 1, y0, y1, [&](const RasterFragment& f) { visit(ti, t, f); });
+      rasterize(t, samples, 0, w - 1, y0, y1, [&](const RasterFragment& f) { visit(ti, t, f); });
     }
   });
 }
@@ -43,7 +44,7 @@ VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_pro
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   VisibilityBuffer vb = empty_visibility(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
-  for_each_centre_fragment(binned, w, h, [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
+  for_each_fragment_at(binned, w, h, vec2(0.5f), [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
     const int row = h - 1 - f.y;
     const size_t i = vb.index(f.x, row);
     if (!(f.depth < vb.depth[i])) return;  // GL_LESS
@@ -86,7 +87,7 @@ double depth_tie_margin(const RasterTriangle& t) {
 }
 
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
-                                bool depth_ties) {
+                                bool depth_ties, vec2 sample) {
   const int w = front.width, h = front.height;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   std::vector<double> margins(binned.triangles.size());
@@ -95,7 +96,7 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
   // The front fragment's margin, found again by its source triangle at the pixel.
   std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
   VisibilityBuffer alt = empty_visibility(w, h);
-  for_each_centre_fragment(binned, w, h, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     const size_t i = front.index(f.x, h - 1 - f.y);
     if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
     if (int32_t(t.source) == front.triangle[i]) {
@@ -108,10 +109,10 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
     store_fragment(alt, i, t, f);
   });
   if (!depth_ties) return alt;
-  // No tie: the front surface itself (callers skip it; -1 would mean an empty pixel).
+  // No tie: the front surface itself, whole (callers skip it where it is the reference's own
+  // front; under a shifted sample it is that sample's front, read with its own barycentrics).
   for (size_t i = 0; i < alt.triangle.size(); ++i)
-    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i]))
-      alt.triangle[i] = front.triangle[i];
+    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i])) copy_entry(front, i, alt);
   return alt;
 }
 

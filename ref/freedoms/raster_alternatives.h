@@ -36,10 +36,12 @@ double depth_tie_margin(const RasterTriangle& t);
 /// smallest. `depth_ties`: key = depth minus depth_tie_margin, kept when it ties with the front,
 /// z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key = depth:
 /// the surface behind the front one (triangle -1: none). Alpha-masked fragments are discarded.
-/// Rasterized as render_visibility does (bands, triangles in index order), so the result does not
-/// depend on the thread count.
+/// Coverage is taken at `sample` (pixel units from the pixel's corner; `front` rendered with the
+/// same sample), depths and barycentrics at the centre, as render_visibility. Rasterized as
+/// render_visibility does (bands, triangles in index order), so the result does not depend on the
+/// thread count.
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
-                                bool depth_ties);
+                                bool depth_ties, vec2 sample = vec2(0.5f));
 
 /// Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface a correct GL may keep (masks
 /// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "freedoms/lod_candidates.h"
+#include "freedoms/tangent_handedness.h"
 
 namespace vct {
 
@@ -45,16 +46,21 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
     rounds = std::max(rounds, count[slot]);
   }
   vec4 slack(0.0f);
+  // On a triangle whose tangents disagree on handedness, each with either bitangent too
+  // (freedoms/tangent_handedness.h).
+  const int bitangents = handedness_may_flip(scene, triangle) ? 2 : 1;
   // Each at both ends of where GL may decode sRGB (before or after filtering, GL 4.5 §8.24).
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < rounds; ++j)
-      for (const bool after : {false, true}) {
-        SlotLods l;
-        for (int slot = 0; slot < kTextureSlots; ++slot)
-          l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
-        l.srgb_after_filter = after;
-        slack = glm::max(slack, difference(evaluate_material(scene, points[i], l), centre));
-      }
+    for (int h = 0; h < bitangents; ++h)
+      for (int j = 0; j < rounds; ++j)
+        for (const bool after : {false, true}) {
+          SlotLods l;
+          for (int slot = 0; slot < kTextureSlots; ++slot)
+            l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];
+          l.srgb_after_filter = after;
+          const SurfacePoint& p = h ? with_other_handedness(points[i]) : points[i];
+          slack = glm::max(slack, difference(evaluate_material(scene, p, l), centre));
+        }
   return slack;
 }
 

@@ -159,6 +159,65 @@ TEST(RasterTies, DepthSpansItsOwnPlaneAtTheShifts) {
       EXPECT_NEAR(g.tie_range.at(x, row, hi), g.depth.at(x, row, 0) + m, 0.05f * m) << x << "," << row;
     }
   EXPECT_GT(checked, 40);
+// An alternative carries its own plane under the snap, as the front surface does (issue 34 kind
+// 2: GL's point on a nearly edge-on triangle far along the view ray). A front quad at z = -1 whose
+// left edge runs through the centres of pixel column 10; behind it a tall quad nearly containing
+// the centre rays of that column: its plane x = k d + e (d - 3), d = -z, k the centre ray's slope
+// x / d and e = 2^-3 pixel at unit depth, spans 23 sub-pixel steps around the column and is hit
+// by the centre ray at d = 3. The -x shifted sample leaves the front quad and finds it; moved by
+// one step (2^-8 pixel, slope k -+ 2^-8 pixel) the ray meets its plane at d = 3e / (e +- 2^-8) =
+// 96/33 .. 96/31: the position GL may show there spans that, not only d = 3. (The reference's own
+// raster snaps the sliver's vertices too, so its centre value is its snapped plane's, within a
+// few hundredths of d = 3, and the range's far end 3.12.)
+TEST(RasterTies, AnAlternativesPositionSpansItsOwnPlaneUnderTheSnap) {
+  Scene s = camera_scene();
+  const uint32_t grey = test::add_material(s, vec3(0.5f));
+  const uint32_t green = test::add_material(s, vec3(0.1f, 0.8f, 0.1f));
+  const float edge = column_x(10, 1.0f);
+  test::add_quad(s, {edge, -3, -1}, {3, -3, -1}, {3, 3, -1}, {edge, 3, -1}, {0, 0, 1}, grey);
+  const float k = column_x(10, 1.0f), e = pixel_world(1.0f) / 8.0f;
+  const auto at = [&](float d, float y) { return vec3(k * d + e * (d - 3.0f), y, -d); };
+  test::add_quad(s, at(2.0f, -3), at(2.0f, 3), at(3.9f, 3), at(3.9f, -3), glm::normalize(vec3(1, 0, k + e)), green);
+  const GBuffer g = render(s);
+  const int z_lo = channel(g.tie_range, "position.2.lo"), z_hi = channel(g.tie_range, "position.2.hi");
+  ASSERT_GE(z_lo, 0);
+  int checked = 0;
+  for (int row = 2; row < kH - 2; ++row) {
+    ASSERT_FLOAT_EQ(g.position.at(10, row, 2), -1.0f) << row;  // the front quad covers the centre
+    EXPECT_LT(g.tie_range.at(10, row, z_lo), -3.09f) << row;  // not only its centre, d = 3 +- 0.03
+    EXPECT_GT(g.tie_range.at(10, row, z_lo), -3.2f) << row;
+    EXPECT_FLOAT_EQ(g.tie_range.at(10, row, z_hi), -1.0f) << row;
+    ++checked;
+  }
+  EXPECT_EQ(checked, kH - 4);
+}
+
+// Depth order under a shift (a fold's silhouette, scenes/regressions/fold-29): two faces of a
+// fold share an edge through the centres of pixel column 10 and both lie left of it (the front
+// face at z = -2, the back face folded behind it to z = -2.5). The centres are on the edge, a
+// right edge of both: empty in the reference. The -x shifted samples are covered by both, whose
+// planes both contain the edge, so their depths at the centre tie: the snap that moves the edge
+// onto the centre may order them either way, and the back face (red) is admissible there too,
+// not only the front face (blue) that the shifted visibility keeps.
+TEST(RasterTies, FacesTiedInDepthAtAShiftedSampleAreBothAdmitted) {
+  Scene s = camera_scene();
+  const uint32_t blue = test::add_material(s, vec3(0.1f, 0.2f, 0.9f));
+  const uint32_t red = test::add_material(s, vec3(0.9f, 0.1f, 0.1f));
+  const float edge = column_x(10, 2.0f);
+  const vec3 top(edge, 3, -2), bottom(edge, -3, -2);
+  test::add_triangle(s, top, bottom, {-3, 0, -2}, blue);
+  test::add_triangle(s, bottom, top, {-3, 0, -2.5f}, red);  // the mesh's winding across the fold
+  const GBuffer g = render(s);
+  const int r_lo = channel(g.tie_range, "albedo.0.lo"), r_hi = channel(g.tie_range, "albedo.0.hi");
+  ASSERT_GE(r_lo, 0);
+  for (int row = 3; row < kH - 3; ++row) {
+    ASSERT_EQ(g.coverage.at(10, row, 0), 0.0f) << row;  // on the shared right edge: not covered
+    EXPECT_FLOAT_EQ(g.tie_range.at(10, row, r_lo), 0.0f) << row;  // empty
+    EXPECT_FLOAT_EQ(g.tie_range.at(10, row, r_hi), 0.9f) << row;  // the back face, not only 0.1
+    // Two columns left both faces cover the centre and the front face is far in front of the
+    // back one there (0.5 m behind at x = -3, a third of that here): no tie, blue only.
+    EXPECT_FLOAT_EQ(g.tie_range.at(7, row, r_hi), 0.1f) << row;
+  }
 }
 
 TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {

@@ -10,6 +10,7 @@
 #include "freedoms/lookup_precision.h"
 #include "io/srgb.h"
 #include "scene/surface.h"
+#include "scene/texture_lod.h"
 #include "stages/raster.h"
 
 namespace vct {
@@ -28,6 +29,7 @@ TEST(Precision, EveryRowHasItsSourceAndItsConsumers) {
 // Constants defined beside the code that uses them are the table's rows.
 TEST(Precision, ProducersConstantsAreTheTablesRows) {
   EXPECT_EQ(kVertexSnapStep, precision(Precision::SubpixelSnap));
+  EXPECT_EQ(kLodPrecision, precision(Precision::LodDerivatives));
   EXPECT_EQ(double(kUnorm8Step), double(float(precision(Precision::Unorm8))));
   // Linear PCF: a weight off by 2^-8 on each of two axes (docs/compare.md, the engine's PCF row).
   EXPECT_EQ(double(kLinearCompareWeightStep), 2.0 * precision(Precision::FilterWeights));
