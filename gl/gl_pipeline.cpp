@@ -70,6 +70,15 @@ void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOpti
     throw InputError("settings", "the GL backend runs the pcf_kernel square with nearest compare; "
                                  "pcf_taps, shadow_compare=linear and "
                                  "shadow_depth_format other than depth32f are for the reference");
+  const VctSettings& pcf = settings.vct;
+  if (!pcf.voxel_pcf_taps.empty() || pcf.shadow_filter_order != ShadowFilterOrder::CompareThenFilter ||
+      pcf.pcf_tap_unit != PcfTapUnit::Texel || pcf.pcf_tap_scale != PcfTapScale::None ||
+      pcf.shadow_border != ShadowBorder::Clamp)
+    // The rest of an engine's PCF (issue 39): lights.glsl runs one texel kernel for both passes,
+    // clamped to edge; the variants are the reference's only.
+    throw InputError("settings", "the GL backend runs one texel PCF kernel, clamped to edge, for both passes; "
+                                 "voxel_pcf_taps, shadow_filter_order, pcf_tap_unit, pcf_tap_scale and "
+                                 "shadow_border are for the reference");
   if (!settings.vct.diffuse_cone_set.empty() || settings.vct.cone_tangent_frame != ConeTangentFrame::Branchless ||
       !settings.vct.shadow_view_proj.empty() || !settings.vct.shadow_ortho_box.empty())
     // An engine's cone set, march rule and light matrices (issue 21) are reproduced by the reference only.

@@ -104,6 +104,34 @@ const std::vector<std::pair<ShadowCompare, const char*>>& enum_names() {
 }
 
 template <>
+const std::vector<std::pair<ShadowFilterOrder, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowFilterOrder, const char*>> m{
+      {ShadowFilterOrder::CompareThenFilter, "compare_then_filter"},
+      {ShadowFilterOrder::FilterThenCompare, "filter_then_compare"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<PcfTapUnit, const char*>>& enum_names() {
+  static const std::vector<std::pair<PcfTapUnit, const char*>> m{{PcfTapUnit::Texel, "texel"}, {PcfTapUnit::Uv, "uv"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<PcfTapScale, const char*>>& enum_names() {
+  static const std::vector<std::pair<PcfTapScale, const char*>> m{{PcfTapScale::None, "none"},
+                                                                  {PcfTapScale::InvW, "inv_w"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<ShadowBorder, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowBorder, const char*>> m{
+      {ShadowBorder::Clamp, "clamp"}, {ShadowBorder::Lit, "lit"}, {ShadowBorder::Shadowed, "shadowed"}};
+  return m;
+}
+
+template <>
 const std::vector<std::pair<ShadowDepthFormat, const char*>>& enum_names() {
   static const std::vector<std::pair<ShadowDepthFormat, const char*>> m{
       {ShadowDepthFormat::Depth32f, "depth32f"}, {ShadowDepthFormat::Depth24, "depth24"},
@@ -281,6 +309,10 @@ std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
 std::string to_string(ConeStart c) { return enum_name(c); }
 std::string to_string(ShadowCompare c) { return enum_name(c); }
+std::string to_string(ShadowFilterOrder o) { return enum_name(o); }
+std::string to_string(PcfTapUnit u) { return enum_name(u); }
+std::string to_string(PcfTapScale s) { return enum_name(s); }
+std::string to_string(ShadowBorder b) { return enum_name(b); }
 std::string to_string(NdotV v) { return enum_name(v); }
 int nv_mode(NdotV v) { return v == NdotV::Abs ? sh::NV_ABS : v == NdotV::Clamp ? sh::NV_CLAMP : sh::NV_ZERO; }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
@@ -302,7 +334,12 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_near", &V::shadow_near, at_least(0), "spot shadow map near plane (0 = far / 20)"),
     field("shadow_far", &V::shadow_far, at_least(0), "spot shadow map far plane (0 = farthest scene corner x1.01)"),
     choice("shadow_compare", &V::shadow_compare, "a PCF tap's compare: its texel (nearest) or GL LINEAR's bilinear weighting of 4 compares"),
-    field("pcf_taps", &V::pcf_taps, any(), "PCF taps as texel offsets \"dx,dy dx,dy ...\" (empty = the pcf_kernel square)"),
+    field("pcf_taps", &V::pcf_taps, any(), "PCF taps as offsets \"dx,dy dx,dy ...\" in pcf_tap_unit (empty = the pcf_kernel square); the frame's, and the voxelizer's unless voxel_pcf_taps is given"),
+    field("voxel_pcf_taps", &V::voxel_pcf_taps, any(), "the voxelizer's (light injection's) PCF taps, as pcf_taps (empty = pcf_taps); reference only"),
+    choice("shadow_filter_order", &V::shadow_filter_order, "with shadow_compare = linear: compare the four texels then weight (compare_then_filter, a shadow sampler) or weight the four depths then compare once (filter_then_compare, a plain sampler2D); reference only"),
+    choice("pcf_tap_unit", &V::pcf_tap_unit, "unit of the PCF tap offsets: texels, or texture coordinates (uv, x the map size); reference only"),
+    choice("pcf_tap_scale", &V::pcf_tap_scale, "tap offsets as given (none) or divided by the light-clip w (inv_w: added before the projective divide); needs shadow_normal_offset = 0; reference only"),
+    choice("shadow_border", &V::shadow_border, "what a 2D shadow map reads past its edge: the edge texel (clamp), depth 1 (lit) or depth 0 (shadowed); reference only"),
     choice("shadow_depth_format", &V::shadow_depth_format, "stored shadow depth: float, or 24/16-bit UNORM rounded to nearest"),
     field("shadow_view_proj", &V::shadow_view_proj, any(), "per light world->clip matrix \"LIGHT:m0,...,m15; ...\" (GL column-major; empty = the oracle's)"),
     field("shadow_ortho_box", &V::shadow_ortho_box, any(), "directional lights' ortho boxes \"LIGHT:l,r,b,t,near,far; ...\" in the oracle's light view"),
