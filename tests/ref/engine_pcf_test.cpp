@@ -3,6 +3,7 @@
 // by hand. The map: 8x8, orthographic identity (world = NDC), columns 0..3 occluded at depth 0.3,
 // the rest at 1; the point at world z 0.2 (window depth 0.6), behind the occluder's depth.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "core/error.h"
 #include "core/pcf_taps.h"
@@ -118,6 +119,25 @@ TEST(EnginePcf, VoxelPassTakesItsOwnTaps) {
   const Settings t = with_setting(Settings{}, "shadow_filter_order", "filter_then_compare", "--set");
   EXPECT_EQ(t.vct.shadow_filter_order, ShadowFilterOrder::FilterThenCompare);
   EXPECT_EQ(with_setting(Settings{}, "shadow_border", "shadowed", "--set").vct.shadow_border, ShadowBorder::Shadowed);
+}
+
+// A stage set's manifest carries the PCF as its "settings" (vct config-from-manifest reads them as
+// VctSettings JSON): gidemo's voxel-pass description, written and read back key by key.
+TEST(EnginePcf, TheDescriptionRoundTripsThroughSettingsJson) {
+  const nlohmann::json manifest_settings = {{"shadow_compare", "linear"},        {"shadow_filter_order", "filter_then_compare"},
+                                            {"pcf_tap_unit", "uv"},             {"pcf_tap_scale", "inv_w"},
+                                            {"shadow_border", "shadowed"},      {"shadow_normal_offset", 0},
+                                            {"voxel_pcf_taps", "-0.0078125,0"}, {"pcf_taps", "0.0009765625,0"}};
+  nlohmann::json j = VctSettings();
+  j.merge_patch(manifest_settings);
+  const VctSettings s = j.get<VctSettings>();
+  EXPECT_EQ(s.shadow_filter_order, ShadowFilterOrder::FilterThenCompare);
+  EXPECT_EQ(s.pcf_tap_unit, PcfTapUnit::Uv);
+  EXPECT_EQ(s.pcf_tap_scale, PcfTapScale::InvW);
+  EXPECT_EQ(s.shadow_border, ShadowBorder::Shadowed);
+  EXPECT_EQ(s.voxel_pcf_taps, "-0.0078125,0");
+  const nlohmann::json back = s;
+  for (const auto& [key, value] : manifest_settings.items()) EXPECT_EQ(back.at(key), value) << key;
 }
 
 // The voxelizer's lookups run with voxel_pcf_taps (fragment_radiance): a floor under a spot with a
