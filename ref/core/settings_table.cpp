@@ -375,7 +375,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     choice("specular_view", &V::specular_view, "specular view vector from the shaded point (surface) or from the cone's origin after its normal offset (origin)"),
     field("indirect_diffuse_gain", &V::indirect_diffuse_gain, at_least(0), "gain on image.indirect_diffuse and so on its composite term (an engine's, e.g. the source design's u_restitution)", "u_indirect_diffuse_gain"),
     choice("indirect_fresnel", &V::indirect_fresnel, "Fresnel of the composite's indirect terms: Schlick with the material's f90, or f90 = max(1 - roughness^2, f0) (schlick_roughness)"),
-    choice("n_dot_v", &V::n_dot_v, "the BRDF's view cosine where a normal faces away from the viewer: both lobes 0 (zero), |n.v| (abs) or max(n.v, 1e-4) (clamp); reference only"),
+    choice("n_dot_v", &V::n_dot_v, "the BRDF's view cosine where a normal faces away from the viewer: both lobes 0 (zero), |n.v| (abs) or max(n.v, 1e-4) (clamp); image.direct in both backends"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),
