@@ -65,6 +65,7 @@ void direct_pass(GlFrame& f) {
   bind_gbuffer(f, prog);
   set_setting_uniforms(prog, f.s);
   prog.set("u_shadow_aperture", f.s.soft_shadow_aperture_deg * (kPi / 180.0f));
+  prog.set("u_nv_mode", nv_mode(f.s.n_dot_v));  // the reference's stages/direct.cpp takes the same
   fullscreen(f);
   check_gl("direct pass");
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -70,16 +71,21 @@ void check_gl_accepts(const Scene& scene, const Settings& settings, const GlOpti
     throw InputError("settings", "the GL backend runs the pcf_kernel square with nearest compare; "
                                  "pcf_taps, shadow_compare=linear and "
                                  "shadow_depth_format other than depth32f are for the reference");
+  const VctSettings& pcf = settings.vct;
+  if (!pcf.voxel_pcf_taps.empty() || pcf.shadow_filter_order != ShadowFilterOrder::CompareThenFilter ||
+      pcf.pcf_tap_unit != PcfTapUnit::Texel || pcf.pcf_tap_scale != PcfTapScale::None ||
+      pcf.shadow_border != ShadowBorder::Clamp)
+    // The rest of an engine's PCF (issue 39): lights.glsl runs one texel kernel for both passes,
+    // clamped to edge; the variants are the reference's only.
+    throw InputError("settings", "the GL backend runs one texel PCF kernel, clamped to edge, for both passes; "
+                                 "voxel_pcf_taps, shadow_filter_order, pcf_tap_unit, pcf_tap_scale and "
+                                 "shadow_border are for the reference");
   if (!settings.vct.diffuse_cone_set.empty() || settings.vct.cone_tangent_frame != ConeTangentFrame::Branchless ||
       !settings.vct.shadow_view_proj.empty() || !settings.vct.shadow_ortho_box.empty())
     // An engine's cone set, march rule and light matrices (issue 21) are reproduced by the reference only.
     throw InputError("settings", "the GL backend runs the oracle's cone set and light frusta; "
                                  "diffuse_cone_set, cone_tangent_frame, shadow_view_proj and "
                                  "shadow_ortho_box are for the reference");
-  if (settings.vct.n_dot_v != NdotV::Zero)
-    // direct.frag calls the shared cook_torrance (NV_ZERO); an engine's view cosine (issue 39) is
-    // the reference's only.
-    throw InputError("settings", "the GL backend runs the oracle's view cosine; n_dot_v = abs | clamp is for the reference");
   if (settings.vct.indirect_fresnel != IndirectFresnel::Schlick)
     // The composite's Fresnel is the shared sh::fresnel_schlick in indirect.frag; an engine's
     // other one (issue 21) is the reference's only.
@@ -114,7 +120,10 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
   else if (settings.vct.voxelizer == Voxelizer::Conservative)
     result.info["voxelizer"] = "gpu rule (dominant axis + MSAA; conservative_raster = gs | nv | intel for a conservative GL mode)";
   {
-    RenderDocFrame capture;  // one capture of the frame when RenderDoc is injected (gl_renderdoc.h)
+    // One capture of the frame when RenderDoc is injected (gl_renderdoc.h), unless the program
+    // embedding the frame brackets its own (options.renderdoc_capture).
+    std::optional<RenderDocFrame> capture;
+    if (options.renderdoc_capture) capture.emplace();
     glCreateVertexArrays(1, &f.empty_vao);
     upload_diffuse_cone_block(f);
     shadow_pass(f);
@@ -125,7 +134,7 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     particle_pass(f);
     label_frame_textures(f);
     glFinish();
-    capture.end();
+    if (capture) capture->end();
   }
   result.timings_ms = f.timers.collect();
   double total = 0.0;

@@ -18,6 +18,9 @@ class GlContext;
 struct GlOptions {
   std::string device;  // --gl-device (gl_device.h: "" = first hardware device, else surfaceless)
   std::string fault;   // "" or a deliberate fault of gl_faults.h
+  // Whether the frame brackets its own RenderDoc capture (gl_renderdoc.h); false for a program
+  // that renders its own passes after it in one capture (tests/capture/test_engine.cpp).
+  bool renderdoc_capture = true;
 };
 
 /// What the GL frame refuses, found without a context (vct::InputError): more lights than the

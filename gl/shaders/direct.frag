@@ -4,6 +4,7 @@
 #include "cone.glsl"
 #include "gbuffer_read.glsl"
 uniform int u_soft_shadows;
+uniform int u_nv_mode;  // the setting n_dot_v as sh::NV_ZERO / NV_ABS / NV_CLAMP (issue 39)
 uniform float u_shadow_aperture;  // radians
 
 layout(location = 0) out vec4 o_direct;
@@ -48,7 +49,7 @@ void main() {
       vis = surface_visibility(i, g.position, g.normal);
     }
     if (n_dot_l <= 0.0f) continue;
-    sum += cook_torrance(g.pbr, g.normal, v, l) * light_irradiance(i, g.position) * n_dot_l * vis;
+    sum += cook_torrance_nv(g.pbr, g.normal, v, l, u_nv_mode) * light_irradiance(i, g.position) * n_dot_l * vis;
   }
   o_direct = vec4(sum, 0.0f);
   if (u_soft_shadows != 0 && u_light_count > 0) o_soft_shadow = vec4(vis_sum / float(u_light_count));

@@ -15,7 +15,7 @@ namespace {
 constexpr size_t kMaxTaps = 256;
 constexpr float kMaxOffset = 16.0f;
 
-float parse_offset(const std::string& text, const std::string& pair) {
+float parse_offset(const std::string& text, const std::string& pair, const std::string& name) {
   size_t used = 0;
   float v = 0.0f;
   try {
@@ -24,23 +24,24 @@ float parse_offset(const std::string& text, const std::string& pair) {
     used = 0;
   }
   if (used == 0 || used != text.size() || !std::isfinite(v) || std::abs(v) > kMaxOffset)
-    throw InputError("", "pcf_taps: '" + pair + "' is not a pair dx,dy of texel offsets within +-16");
+    throw InputError("", name + ": '" + pair + "' is not a pair dx,dy of offsets within +-16");
   return v;
 }
 
 }  // namespace
 
-std::vector<vec2> parse_pcf_taps(const std::string& text) {
+std::vector<vec2> parse_pcf_taps(const std::string& text, const std::string& name) {
   std::vector<vec2> taps;
   std::istringstream in(text);
   std::string pair;
   while (in >> pair) {
     const size_t comma = pair.find(',');
     if (comma == std::string::npos)
-      throw InputError("", "pcf_taps: '" + pair + "' is not a pair dx,dy of texel offsets within +-16");
-    taps.emplace_back(parse_offset(pair.substr(0, comma), pair), parse_offset(pair.substr(comma + 1), pair));
+      throw InputError("", name + ": '" + pair + "' is not a pair dx,dy of offsets within +-16");
+    taps.emplace_back(parse_offset(pair.substr(0, comma), pair, name),
+                      parse_offset(pair.substr(comma + 1), pair, name));
   }
-  if (taps.size() > kMaxTaps) throw InputError("", "pcf_taps: more than 256 taps");
+  if (taps.size() > kMaxTaps) throw InputError("", name + ": more than 256 taps");
   return taps;
 }
 
@@ -52,6 +53,17 @@ std::vector<vec2> pcf_tap_offsets(const VctSettings& settings) {
   for (int j = 0; j < k; ++j)
     for (int i = 0; i < k; ++i) taps.emplace_back(float(i) - half, float(j) - half);
   return taps;
+}
+
+VctSettings voxel_pass_settings(const VctSettings& settings) {
+  VctSettings out = settings;
+  if (!settings.voxel_pcf_taps.empty()) out.pcf_taps = settings.voxel_pcf_taps;
+  return out;
+}
+
+bool filters_depth_first(const VctSettings& settings) {
+  return settings.shadow_compare == ShadowCompare::Linear &&
+         settings.shadow_filter_order == ShadowFilterOrder::FilterThenCompare;
 }
 
 }  // namespace vct

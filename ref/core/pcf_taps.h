@@ -12,11 +12,22 @@
 
 namespace vct {
 
-/// The offsets of `text` in order. Throws InputError("", "pcf_taps ...") for anything but
-/// whitespace-separated "dx,dy" pairs of finite numbers within +-16 texels, or more than 256 taps.
-std::vector<vec2> parse_pcf_taps(const std::string& text);
+/// The offsets of `text` in order. Throws InputError("", "<name> ...") for anything but
+/// whitespace-separated "dx,dy" pairs of finite numbers within +-16 (in the declared
+/// pcf_tap_unit), or more than 256 taps.
+std::vector<vec2> parse_pcf_taps(const std::string& text, const std::string& name = "pcf_taps");
 
-/// The taps a lookup uses: parse_pcf_taps(settings.pcf_taps), or the pcf_kernel square when empty.
+/// The taps a lookup uses, in the declared unit: parse_pcf_taps(settings.pcf_taps), or the
+/// pcf_kernel square (in texels) when empty.
 std::vector<vec2> pcf_tap_offsets(const VctSettings& settings);
+
+/// The settings the voxelizer's lookups (light injection, voxel.radiance, and its freedoms) run
+/// with (issue 39): `settings` with pcf_taps replaced by voxel_pcf_taps where one is declared.
+/// Taken once per stage (a copy), not per fragment.
+VctSettings voxel_pass_settings(const VctSettings& settings);
+
+/// Whether a tap filters its four depths and compares once (shadow_compare = linear with
+/// shadow_filter_order = filter_then_compare); else each texel it reads is compared.
+bool filters_depth_first(const VctSettings& settings);
 
 }  // namespace vct

@@ -131,6 +131,11 @@ void validate_settings(const Settings& s) {
   require(s.vct.shadow_near <= 0.0f || s.vct.shadow_far <= 0.0f || s.vct.shadow_near < s.vct.shadow_far,
           "shadow_near must be below shadow_far");
   (void)parse_pcf_taps(s.vct.pcf_taps);  // throws for a malformed tap list
+  (void)parse_pcf_taps(s.vct.voxel_pcf_taps, "voxel_pcf_taps");
+  // The normal offset is derived for a footprint fixed in texels (stages/shadow_map.h,
+  // normal_offset_per_w); taps that shrink with 1/w have no such footprint.
+  require(s.vct.pcf_tap_scale == PcfTapScale::None || s.vct.shadow_normal_offset == 0.0f,
+          "pcf_tap_scale = inv_w needs shadow_normal_offset = 0 (the normal offset is derived for taps fixed in texels)");
   (void)parse_declared_cones(s.vct.diffuse_cone_set);
   (void)parse_light_matrices(s.vct.shadow_view_proj);
   (void)parse_ortho_boxes(s.vct.shadow_ortho_box);

@@ -35,6 +35,23 @@ enum class ConeStart { Axis, Normal };
 // shadow sampler -- the bilinear weighting of the four nearest texels' comparisons (GL 4.5
 // section 8.23.1), an engine's convention (issue 21).
 enum class ShadowCompare { Nearest, Linear };
+// Where a tap's linear filter sits relative to its compare (issue 39): each of the four texels
+// compared and the results weighted (ours; GL LINEAR on a shadow sampler), or the four depths
+// weighted first and the filtered depth compared once (GL LINEAR on a plain sampler2D, the source
+// design's textureProj). With shadow_compare = nearest a tap reads one texel: both are the same.
+enum class ShadowFilterOrder { CompareThenFilter, FilterThenCompare };
+// The unit of pcf_taps / voxel_pcf_taps (issue 39): texels of the map (ours), or texture
+// coordinates in [0, 1] (an offset added to the lookup's UV), multiplied by the map's size.
+enum class PcfTapUnit { Texel, Uv };
+// Whether the tap offsets are divided by the lookup point's light-clip w (issue 39): no (ours), or
+// yes -- offsets added to the clip xy before the projective divide (the source design's
+// `textureProj(coords + offset)`), a footprint of constant size in the light's view space.
+enum class PcfTapScale { None, InvW };
+// What a 2D shadow map reads past its edge (issue 39): the edge texel (ours, GL CLAMP_TO_EDGE), or
+// GL CLAMP_TO_BORDER with border depth 1 (lit: every point inside the frustum is in front of it)
+// or 0 (shadowed: the source design's border colour). A cube map has no border (GL 4.5 section
+// 8.13: seamless filtering reads the neighbouring face).
+enum class ShadowBorder { Clamp, Lit, Shadowed };
 // How a shadow map stores depth: float (ours), or 24/16-bit UNORM -- an engine's depth texture
 // format (issue 21); the reference quantises its window depth as GL 4.5 section 2.3.5.2 converts.
 enum class ShadowDepthFormat { Depth32f, Depth24, Depth16 };
@@ -88,6 +105,14 @@ struct VctSettings {
   // "dx,dy dx,dy ..." (fractional allowed; core/pcf_taps.h). Empty = the pcf_kernel square.
   ShadowCompare shadow_compare = ShadowCompare::Nearest;
   std::string pcf_taps;
+  // The rest of an engine's PCF (issue 39; stages/shadow_map.h, docs/external_format.md): the
+  // filter's order, the taps' unit and 1/w scaling, the voxelizer's own taps (empty = pcf_taps)
+  // and what the map reads past its edge. The defaults are the oracle's own PCF.
+  ShadowFilterOrder shadow_filter_order = ShadowFilterOrder::CompareThenFilter;
+  PcfTapUnit pcf_tap_unit = PcfTapUnit::Texel;
+  PcfTapScale pcf_tap_scale = PcfTapScale::None;
+  std::string voxel_pcf_taps;
+  ShadowBorder shadow_border = ShadowBorder::Clamp;
   ShadowDepthFormat shadow_depth_format = ShadowDepthFormat::Depth32f;
   // An engine's light matrices (issue 21; core/light_matrices.h): per light, world -> clip as 16
   // numbers in GL's column-major order, "LIGHT:m0,...,m15; ..." (replaces that spot's frustum or
@@ -212,6 +237,10 @@ std::string to_string(Reduction r);
 std::string to_string(DiffuseWeighting w);
 std::string to_string(ConeStart c);
 std::string to_string(ShadowCompare c);
+std::string to_string(ShadowFilterOrder o);
+std::string to_string(PcfTapUnit u);
+std::string to_string(PcfTapScale s);
+std::string to_string(ShadowBorder b);
 std::string to_string(ShadowDepthFormat f);
 std::string to_string(ConeTangentFrame f);
 std::string to_string(IndirectFresnel f);

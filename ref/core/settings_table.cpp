@@ -104,6 +104,34 @@ const std::vector<std::pair<ShadowCompare, const char*>>& enum_names() {
 }
 
 template <>
+const std::vector<std::pair<ShadowFilterOrder, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowFilterOrder, const char*>> m{
+      {ShadowFilterOrder::CompareThenFilter, "compare_then_filter"},
+      {ShadowFilterOrder::FilterThenCompare, "filter_then_compare"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<PcfTapUnit, const char*>>& enum_names() {
+  static const std::vector<std::pair<PcfTapUnit, const char*>> m{{PcfTapUnit::Texel, "texel"}, {PcfTapUnit::Uv, "uv"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<PcfTapScale, const char*>>& enum_names() {
+  static const std::vector<std::pair<PcfTapScale, const char*>> m{{PcfTapScale::None, "none"},
+                                                                  {PcfTapScale::InvW, "inv_w"}};
+  return m;
+}
+
+template <>
+const std::vector<std::pair<ShadowBorder, const char*>>& enum_names() {
+  static const std::vector<std::pair<ShadowBorder, const char*>> m{
+      {ShadowBorder::Clamp, "clamp"}, {ShadowBorder::Lit, "lit"}, {ShadowBorder::Shadowed, "shadowed"}};
+  return m;
+}
+
+template <>
 const std::vector<std::pair<ShadowDepthFormat, const char*>>& enum_names() {
   static const std::vector<std::pair<ShadowDepthFormat, const char*>> m{
       {ShadowDepthFormat::Depth32f, "depth32f"}, {ShadowDepthFormat::Depth24, "depth24"},
@@ -281,6 +309,10 @@ std::string to_string(Reduction r) { return enum_name(r); }
 std::string to_string(DiffuseWeighting w) { return enum_name(w); }
 std::string to_string(ConeStart c) { return enum_name(c); }
 std::string to_string(ShadowCompare c) { return enum_name(c); }
+std::string to_string(ShadowFilterOrder o) { return enum_name(o); }
+std::string to_string(PcfTapUnit u) { return enum_name(u); }
+std::string to_string(PcfTapScale s) { return enum_name(s); }
+std::string to_string(ShadowBorder b) { return enum_name(b); }
 std::string to_string(NdotV v) { return enum_name(v); }
 int nv_mode(NdotV v) { return v == NdotV::Abs ? sh::NV_ABS : v == NdotV::Clamp ? sh::NV_CLAMP : sh::NV_ZERO; }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
@@ -302,7 +334,12 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     field("shadow_near", &V::shadow_near, at_least(0), "spot shadow map near plane (0 = far / 20)"),
     field("shadow_far", &V::shadow_far, at_least(0), "spot shadow map far plane (0 = farthest scene corner x1.01)"),
     choice("shadow_compare", &V::shadow_compare, "a PCF tap's compare: its texel (nearest) or GL LINEAR's bilinear weighting of 4 compares"),
-    field("pcf_taps", &V::pcf_taps, any(), "PCF taps as texel offsets \"dx,dy dx,dy ...\" (empty = the pcf_kernel square)"),
+    field("pcf_taps", &V::pcf_taps, any(), "PCF taps as offsets \"dx,dy dx,dy ...\" in pcf_tap_unit (empty = the pcf_kernel square); the frame's, and the voxelizer's unless voxel_pcf_taps is given"),
+    field("voxel_pcf_taps", &V::voxel_pcf_taps, any(), "the voxelizer's (light injection's) PCF taps, as pcf_taps (empty = pcf_taps); reference only"),
+    choice("shadow_filter_order", &V::shadow_filter_order, "with shadow_compare = linear: compare the four texels then weight (compare_then_filter, a shadow sampler) or weight the four depths then compare once (filter_then_compare, a plain sampler2D); reference only"),
+    choice("pcf_tap_unit", &V::pcf_tap_unit, "unit of the PCF tap offsets: texels, or texture coordinates (uv, x the map size); reference only"),
+    choice("pcf_tap_scale", &V::pcf_tap_scale, "tap offsets as given (none) or divided by the light-clip w (inv_w: added before the projective divide); needs shadow_normal_offset = 0; reference only"),
+    choice("shadow_border", &V::shadow_border, "what a 2D shadow map reads past its edge: the edge texel (clamp), depth 1 (lit) or depth 0 (shadowed); reference only"),
     choice("shadow_depth_format", &V::shadow_depth_format, "stored shadow depth: float, or 24/16-bit UNORM rounded to nearest"),
     field("shadow_view_proj", &V::shadow_view_proj, any(), "per light world->clip matrix \"LIGHT:m0,...,m15; ...\" (GL column-major; empty = the oracle's)"),
     field("shadow_ortho_box", &V::shadow_ortho_box, any(), "directional lights' ortho boxes \"LIGHT:l,r,b,t,near,far; ...\" in the oracle's light view"),
@@ -338,7 +375,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     choice("specular_view", &V::specular_view, "specular view vector from the shaded point (surface) or from the cone's origin after its normal offset (origin)"),
     field("indirect_diffuse_gain", &V::indirect_diffuse_gain, at_least(0), "gain on image.indirect_diffuse and so on its composite term (an engine's, e.g. the source design's u_restitution)", "u_indirect_diffuse_gain"),
     choice("indirect_fresnel", &V::indirect_fresnel, "Fresnel of the composite's indirect terms: Schlick with the material's f90, or f90 = max(1 - roughness^2, f0) (schlick_roughness)"),
-    choice("n_dot_v", &V::n_dot_v, "the BRDF's view cosine where a normal faces away from the viewer: both lobes 0 (zero), |n.v| (abs) or max(n.v, 1e-4) (clamp); reference only"),
+    choice("n_dot_v", &V::n_dot_v, "the BRDF's view cosine where a normal faces away from the viewer: both lobes 0 (zero), |n.v| (abs) or max(n.v, 1e-4) (clamp); image.direct in both backends"),
     field("max_distance", &V::max_distance, any(), "cone length, voxel-texture units ([0,1]^3 diagonal = 1.732)", "u_cone_max_distance"),
     field("soft_shadow_aperture_deg", &V::soft_shadow_aperture_deg, any(), "soft-shadow cone aperture, degrees"),
     field("opacity_step_correction", &V::opacity_step_correction, any(), "sample opacity 1-(1-a)^(step/voxel size at the lod)", "u_opacity_step_correction"),

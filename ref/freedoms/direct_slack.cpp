@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.h"
+#include "core/pcf_taps.h"
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/texture_slack.h"
@@ -74,7 +75,8 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       // light's visibility moves by at most 2^-7 (docs/compare.md, the engine's PCF row), so its
       // light by 2^-7 of what it gives unshadowed (direct_radiance without maps).
       float weights = 0.0f;
-      if (n > 0 && settings.shadow_compare == ShadowCompare::Linear) {
+      // (Filtering first, the weights move the filtered depth instead: shadow_ties.h's filtered taps.)
+      if (n > 0 && settings.shadow_compare == ShadowCompare::Linear && !filters_depth_first(settings)) {
         const SurfaceMaterial m = evaluate_material(scene, points[0], lods.exact);
         const vec3 nrm = vb.front_facing[i] ? m.shading_normal : -m.shading_normal;
         const vec3 v = glm::normalize(eye - points[0].position);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/parallel.h"
+#include "core/pcf_taps.h"
 #include "core/precision.h"
 #include "freedoms/direct_slack.h"
 #include "freedoms/direct_ties.h"
@@ -270,8 +271,10 @@ VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f)
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
                                           const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,
-                                          const VctSettings& settings,
+                                          const VctSettings& frame_settings,
                                           const BounceLight* bounce) {
+  // The voxelizer's own PCF taps where the engine declares them (issue 39), as fragment_radiance.
+  const VctSettings settings = voxel_pass_settings(frame_settings);
   const std::vector<SurfaceLods> lods = voxel_lods_per_triangle(scene, vox.n);
   const bool hard_spots = has_hard_spot(scene);
   std::vector<float> out(vox.fragments.size(), 0.0f);
@@ -291,7 +294,10 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
       slack += handedness_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
     if (m.base_color_texture.present() || m.emissive_texture.present())
       slack += srgb_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
-    if (settings.shadow_compare == ShadowCompare::Linear) slack += linear_compare_slack(scene, f, l.exact, settings);
+    // Filtering first, the weights' freedom moves the filtered depth instead: snap_visibility's
+    // filtered taps carry it (freedoms/snap_visibility.h).
+    if (settings.shadow_compare == ShadowCompare::Linear && !filters_depth_first(settings))
+      slack += linear_compare_slack(scene, f, l.exact, settings);
     if (hard_spots) slack += hard_spot_slack(scene, f, l.exact, settings);
     out[size_t(i)] = slack;
   });

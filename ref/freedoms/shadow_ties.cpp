@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/pcf_taps.h"
+#include "core/precision.h"
 #include "freedoms/direct_slack.h"
 #include "stages/cube_map.h"
 #include "stages/shadow_map.h"
@@ -57,21 +59,105 @@ VisibilityRange tap_range(const vec2& t, double e, ShadowCompare compare, const 
   return r;
 }
 
-// The mean of the taps' ranges, widened by the linear filter weights' 8-bit freedom.
-template <typename State>
-VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, const State& state) {
-  const std::vector<vec2> taps = tap_positions(u, v, s);  // as the lookup places them
-  // The tap offsets add to the coordinate on each side: two more roundings of magnitude <= |u| + 16.
-  const double e_tap = e + 4.0 * kU * (double(std::max(std::abs(u), std::abs(v))) + 16.0);
+// What a lookup that filters depths first (filters_depth_first) compares each tap's blend with:
+// the point's window depth z, admissible within ez, and the bias.
+struct DepthCompare {
+  float z = 0.0f;
+  double ez = 0.0;
+  float bias = 0.0f;
+};
+
+// The admissible lit value {lo, hi} (each 0 or 1) of a filter-then-compare tap at texel position
+// t (y up) whose coordinate may be off by e texels: the blend D of the four depths around
+// t - 1/2 is bilinear in the fractions (ax, ay), so over the box of fractions a correct GL may use
+// -- the exact ones +- e, +- the filter weights' 8 sub-texel bits (precision table row
+// filter-weights, GL 4.5 section 8.14.2), clamped to [0, 1] -- it takes its extremes at the box's
+// corners; every floor within e is tried (the blend is continuous across texel edges). The blend's
+// own float arithmetic (4 products, 3 sums: g4 of the largest |depth|) and the add of the bias
+// (one rounding) widen [D_lo, D_hi]; the tap is lit for every admissible lookup when
+// z + ez <= D_lo + bias and for some when z - ez <= D_hi + bias (docs/compare.md, "Engine PCF").
+template <typename Stored>
+VisibilityRange filtered_tap_range(const vec2& t, double e, const DepthCompare& c, const Stored& stored) {
+  const double step = precision(Precision::FilterWeights);
+  const double sx = double(t.x) - 0.5, sy = double(t.y) - 0.5;
+  double d_lo = 1e300, d_hi = -1e300, largest = 0.0;
+  for (int x0 = int(std::floor(sx - e)); x0 <= int(std::floor(sx + e)); ++x0)
+    for (int y0 = int(std::floor(sy - e)); y0 <= int(std::floor(sy + e)); ++y0) {
+      const double d[4] = {stored(x0, y0), stored(x0 + 1, y0), stored(x0, y0 + 1), stored(x0 + 1, y0 + 1)};
+      for (const double v : d) largest = std::max(largest, std::abs(v));
+      const double ax = sx - double(x0), ay = sy - double(y0);
+      for (const double fx : {std::clamp(ax - e - step, 0.0, 1.0), std::clamp(ax + e + step, 0.0, 1.0)})
+        for (const double fy : {std::clamp(ay - e - step, 0.0, 1.0), std::clamp(ay + e + step, 0.0, 1.0)}) {
+          const double blend =
+              (1 - fx) * (1 - fy) * d[0] + fx * (1 - fy) * d[1] + (1 - fx) * fy * d[2] + fx * fy * d[3];
+          d_lo = std::min(d_lo, blend), d_hi = std::max(d_hi, blend);
+        }
+    }
+  const double ef = kG4 * largest + kU * (largest + std::abs(double(c.bias)));
+  const bool lit_always = double(c.z) + c.ez <= d_lo + double(c.bias) - ef;
+  const bool lit_sometimes = double(c.z) - c.ez <= d_hi + double(c.bias) + ef;
+  return {lit_always ? 1.0f : 0.0f, lit_sometimes ? 1.0f : 0.0f};
+}
+
+// How the taps of one lookup sit on its map: the map's size (UV offsets), the point's light-clip
+// w and how far a correct GL's w may be from it (offsets declared per 1/w), and -- for a lookup
+// that filters first -- the compare and the stored depths.
+struct TapFrame {
+  int size = 0;
+  float clip_w = 1.0f;
+  double e_w = 0.0;
+  DepthCompare compare;
+};
+
+// How far (texels) a correct GL's tap offset may be from tap_positions' beyond the coordinate's
+// own margin: a UV offset's multiply by the size and a 1/w scaling's divide round once each (the
+// divide within 2.5 ulp, GLSL 4.50 section 4.7.1: 4 u in all), and w itself is known within e_w:
+// |o / w - o / w'| <= |o| e_w / (|w| (|w| - e_w)). Negative: no bound (w may reach 0).
+double offset_error(const VctSettings& s, const std::vector<vec2>& offsets, const TapFrame& f) {
+  const bool uv = s.pcf_tap_unit == PcfTapUnit::Uv, inv_w = s.pcf_tap_scale == PcfTapScale::InvW;
+  if (s.pcf_taps.empty() || (!uv && !inv_w)) return 0.0;
+  double largest = 0.0;  // the largest offset in texels at the point's w
+  for (const vec2& o : offsets) largest = std::max({largest, double(std::abs(o.x)), double(std::abs(o.y))});
+  if (!inv_w) return 4.0 * kU * largest;
+  const double w = std::abs(double(f.clip_w));
+  if (!(f.e_w < 0.5 * w)) return -1.0;
+  return 4.0 * kU * largest + largest * w * f.e_w / (w * (w - f.e_w));
+}
+
+// The mean of the taps' ranges, widened by the linear filter weights' 8-bit freedom (compare then
+// filter; a filtered tap carries it in its depth, filtered_tap_range). `stored(tx, ty)`: the
+// texel's depth, read only by a lookup that filters first.
+template <typename State, typename Stored>
+VisibilityRange pcf_range(float u, float v, double e, const VctSettings& s, const TapFrame& frame, const State& state,
+                          const Stored& stored) {
+  const std::vector<vec2> taps = tap_positions(u, v, s, frame.size, frame.clip_w);  // as the lookup places them
+  const std::vector<vec2> offsets = tap_positions(0.0f, 0.0f, s, frame.size, frame.clip_w);
+  double largest_offset = 16.0;  // parse_pcf_taps' limit, the largest a texel offset may be
+  for (const vec2& o : offsets) largest_offset = std::max({largest_offset, double(std::abs(o.x)), double(std::abs(o.y))});
+  const double e_offset = offset_error(s, offsets, frame);
+  if (e_offset < 0.0) return {0.0f, 1.0f};
+  // The tap offsets add to the coordinate on each side: two more roundings of magnitude <= |u| + the offset.
+  const double e_tap = e + 4.0 * kU * (double(std::max(std::abs(u), std::abs(v))) + largest_offset) + e_offset;
+  const bool filter_first = filters_depth_first(s);
   double lo = 0.0, hi = 0.0;
   for (const vec2& t : taps) {
-    const VisibilityRange r = tap_range(t, e_tap, s.shadow_compare, state);
+    const VisibilityRange r = filter_first ? filtered_tap_range(t, e_tap, frame.compare, stored)
+                                           : tap_range(t, e_tap, s.shadow_compare, state);
     lo += double(r.lo);
     hi += double(r.hi);
   }
   const double n = double(std::max<size_t>(taps.size(), 1));
-  const double w = s.shadow_compare == ShadowCompare::Linear ? double(kLinearCompareWeightStep) : 0.0;
+  const double w =
+      s.shadow_compare == ShadowCompare::Linear && !filter_first ? double(kLinearCompareWeightStep) : 0.0;
   return {float(std::max(0.0, lo / n - w)), float(std::min(1.0, hi / n + w))};
+}
+
+// How far a correct GL's light-clip w of p through m may lie from the reference's: a 4-term dot
+// product within g4 of its terms' magnitudes, and p itself known within e_world per axis.
+double clip_w_error(const mat4& m, const vec3& p, double e_world) {
+  double s_w = std::abs(double(m[3][3])), a_w = 0.0;
+  for (int j = 0; j < 3; ++j) s_w += std::abs(double(m[j][3]) * double(p[j])), a_w += std::abs(double(m[j][3]));
+  return kG4 * s_w + a_w * e_world;
 }
 
 VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings& s, double e_world) {
@@ -90,11 +176,13 @@ VisibilityRange range_2d(const ShadowMap& map, const vec3& p, const VctSettings&
   const int w = depth.width, h = depth.height;
   const float z = ndc.z * 0.5f + 0.5f;
   const double ez = depth_margin(e[2]);
+  const auto stored = [&](int tx, int ty) { return double(stored_depth(depth, tx, ty, s.shadow_border)); };
   const auto state = [&](int tx, int ty) {
-    return compare_state(z, ez, depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0), s.shadow_bias);
+    return compare_state(z, ez, stored_depth(depth, tx, ty, s.shadow_border), s.shadow_bias);
   };
   const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
-  VisibilityRange r = pcf_range(u, v, std::max(texel_margin(e[0], w), texel_margin(e[1], h)), s, state);
+  const TapFrame frame{w, c.w, clip_w_error(map.view_proj, p, e_world), {z, ez, s.shadow_bias}};
+  VisibilityRange r = pcf_range(u, v, std::max(texel_margin(e[0], w), texel_margin(e[1], h)), s, frame, state, stored);
   if (near_border) r.hi = 1.0f;  // either side of the frustum's border: outside is lit
   return r;
 }
@@ -131,7 +219,13 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light_position, con
       // Within the depth margin of the range's ends the point may count as outside (lit).
       return (zd - ez < 0.0 || zd + ez > 1.0) ? std::max(st_, 1) : st_;
     };
-    const VisibilityRange one = pcf_range(st.x * float(size), st.y * float(size), texel_margin(e_q, size), s, state);
+    // The home face's clip w scales taps declared per 1/w (cube_shadow_visibility); a cube never
+    // filters first (render_shadow_maps refuses it), so no depths are read.
+    const mat4& home_m = map.cube_view_proj[size_t(home)];
+    const TapFrame frame{size, (home_m * vec4(p, 1.0f)).w, clip_w_error(home_m, p, e_world), {}};
+    const auto no_depth = [](int, int) { return 0.0; };
+    const VisibilityRange one =
+        pcf_range(st.x * float(size), st.y * float(size), texel_margin(e_q, size), s, frame, state, no_depth);
     out.lo = std::min(out.lo, one.lo);
     out.hi = std::max(out.hi, one.hi);
   }

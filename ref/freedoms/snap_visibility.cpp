@@ -5,6 +5,8 @@
 #include <functional>
 #include <vector>
 
+#include "core/pcf_taps.h"
+#include "core/precision.h"
 #include "stages/cube_map.h"
 #include "stages/shadow_map.h"
 
@@ -13,6 +15,7 @@ namespace vct {
 namespace {
 
 constexpr double kU = 1.0 / 16777216.0;  // 2^-24, one float rounding
+constexpr double kG4 = 4.0 * kU / (1.0 - 4.0 * kU);
 
 using Point = glm::dvec2;  // (a, b) in [-1, 1]^2
 using Polygon = std::vector<Point>;
@@ -75,6 +78,7 @@ struct Coordinate {
   Linear num, den;
   int size;
   double margin;
+  double den_margin = 0.0;  // how far a correct GL's den may lie from the exact one (taps per 1/w)
   double at(const Point& p) const { return (num.at(p) / den.at(p) + 1.0) * 0.5 * double(size); }
   /// g >= 0 exactly where the coordinate is >= x (den > 0).
   Linear at_least(double x) const { return num - den * (2.0 * x / double(size) - 1.0); }
@@ -115,26 +119,64 @@ void compare_over(const Polygon& region, const TexelCompare& t, TapState& s) {
   s.lit_everywhere = s.lit_everywhere && hi <= t.stored_plus_bias;
 }
 
+/// Where a tap's offset lies over a region: `tu`, `tv` its offset in texels (the midpoint of its
+/// range where it scales with 1/w) and `spread` how far it may lie from them (the range's half
+/// width plus the offset's own roundings); the fractions and the cells widen by it.
+struct TapOffset {
+  double tu = 0.0, tv = 0.0, spread = 0.0;
+};
+
+/// A filter-then-compare tap over a cell (filters_depth_first): the blend of the four texels'
+/// stored depth + bias (the weights sum to 1, so blending stored + bias is blending the depths and
+/// adding the bias) is bilinear in the fractions, so over the box of fractions -- the cell's, +-
+/// the offset's spread and the filter weights' 8 sub-texel bits (precision table row
+/// filter-weights) -- it takes its extremes at the box's corners; the blend's float arithmetic
+/// adds g4 of the largest value (shadow_ties.cpp's filtered_tap_range). The tap is then one
+/// compare of the point's depth over the cell with [D_lo, D_hi].
+VisibilityRange filtered_tap_over(const Polygon& cell, const TexelCompare (&t)[4], double ax_lo, double ax_hi,
+                                  double ay_lo, double ay_hi) {
+  double d_lo = 1e300, d_hi = -1e300, largest = 0.0;
+  for (const TexelCompare& c : t) largest = std::max(largest, std::abs(c.stored_plus_bias));
+  for (const double ax : {ax_lo, ax_hi})
+    for (const double ay : {ay_lo, ay_hi}) {
+      const double d = (1 - ax) * (1 - ay) * t[0].stored_plus_bias + ax * (1 - ay) * t[1].stored_plus_bias +
+                       (1 - ax) * ay * t[2].stored_plus_bias + ax * ay * t[3].stored_plus_bias;
+      d_lo = std::min(d_lo, d), d_hi = std::max(d_hi, d);
+    }
+  const double ef = (4.0 * kU / (1.0 - 4.0 * kU)) * largest + kU * largest;
+  TexelCompare low = t[0], high = t[0];
+  low.stored_plus_bias = d_lo - ef, high.stored_plus_bias = d_hi + ef;
+  TapState everywhere, somewhere;
+  compare_over(cell, low, everywhere);
+  compare_over(cell, high, somewhere);
+  return {everywhere.lit_everywhere ? 1.0f : 0.0f, somewhere.lit_somewhere ? 1.0f : 0.0f};
+}
+
 /// One tap's [lo, hi] over a region where it reads fixed texels: nearest, one compare; linear, GL
 /// 4.5 section 8.23.1's bilinear blend of the four compares around the coordinate - 1/2, whose
 /// weights are bilinear in the fractions (ax, ay), so over any box of fractions they take their
-/// extremes at its corners (the box of the region's fractions contains the region's).
-VisibilityRange tap_over(const Polygon& cell, const Coordinate& u, const Coordinate& v, double tu, double tv,
-                         int i, int j, ShadowCompare compare, const std::function<TexelCompare(int, int)>& texel) {
-  if (compare == ShadowCompare::Nearest) {
+/// extremes at its corners (the box of the region's fractions contains the region's); or, an
+/// engine that filters first, filtered_tap_over.
+VisibilityRange tap_over(const Polygon& cell, const Coordinate& u, const Coordinate& v, const TapOffset& o, int i,
+                         int j, const VctSettings& s, const std::function<TexelCompare(int, int)>& texel) {
+  if (s.shadow_compare == ShadowCompare::Nearest) {
     TapState st;
     compare_over(cell, texel(i, j), st);
     return {st.lit_everywhere ? 1.0f : 0.0f, st.lit_somewhere ? 1.0f : 0.0f};
   }
-  TapState st[4];
-  for (int k = 0; k < 4; ++k) compare_over(cell, texel(i + (k & 1), j + (k >> 1)), st[k]);
+  const bool filter_first = filters_depth_first(s);
+  // A filtered tap's weights carry their 8-bit freedom here; compared first, linear_compare_slack does.
+  const double widen = o.spread + (filter_first ? precision(Precision::FilterWeights) : 0.0);
   double ax_lo = 1.0, ax_hi = 0.0, ay_lo = 1.0, ay_hi = 0.0;
   for (const Point& p : cell) {
-    const double ax = std::clamp(u.at(p) + tu - double(i), 0.0, 1.0);
-    const double ay = std::clamp(v.at(p) + tv - double(j), 0.0, 1.0);
-    ax_lo = std::min(ax_lo, ax), ax_hi = std::max(ax_hi, ax);
-    ay_lo = std::min(ay_lo, ay), ay_hi = std::max(ay_hi, ay);
+    const double ax = u.at(p) + o.tu - double(i), ay = v.at(p) + o.tv - double(j);
+    ax_lo = std::min(ax_lo, std::clamp(ax - widen, 0.0, 1.0)), ax_hi = std::max(ax_hi, std::clamp(ax + widen, 0.0, 1.0));
+    ay_lo = std::min(ay_lo, std::clamp(ay - widen, 0.0, 1.0)), ay_hi = std::max(ay_hi, std::clamp(ay + widen, 0.0, 1.0));
   }
+  const TexelCompare t[4] = {texel(i, j), texel(i + 1, j), texel(i, j + 1), texel(i + 1, j + 1)};
+  if (filter_first) return filtered_tap_over(cell, t, ax_lo, ax_hi, ay_lo, ay_hi);
+  TapState st[4];
+  for (int k = 0; k < 4; ++k) compare_over(cell, t[k], st[k]);
   VisibilityRange r{1.0f, 0.0f};
   for (const double ax : {ax_lo, ax_hi})
     for (const double ay : {ay_lo, ay_hi}) {
@@ -150,6 +192,32 @@ VisibilityRange tap_over(const Polygon& cell, const Coordinate& u, const Coordin
   return r;
 }
 
+/// The taps' offsets over `region` (TapOffset), `w` the lookup's clip w there (a 2D map's w, a
+/// cube face's major axis), known within e_w, and `size` the map's: texel offsets as given; UV
+/// ones times the size (one rounding); per 1/w, the range of o / w over the region's w widened by
+/// e_w (w > e_w there, else no bound: empty), and the divide's rounding (2.5 ulp, GLSL 4.50
+/// section 4.7.1, with the UV multiply 4 u).
+std::vector<TapOffset> tap_offsets_over(const Polygon& region, const Linear& w, double e_w, int size,
+                                        const VctSettings& s) {
+  std::vector<TapOffset> out;
+  const bool inv_w = !s.pcf_taps.empty() && s.pcf_tap_scale == PcfTapScale::InvW;
+  double w_lo = 1e300, w_hi = 0.0;
+  for (const Point& p : region) w_lo = std::min(w_lo, w.at(p)), w_hi = std::max(w_hi, w.at(p));
+  for (const vec2& t : tap_positions(0.0f, 0.0f, s, size, 1.0f)) {
+    if (!inv_w) {
+      const double round = s.pcf_taps.empty() || s.pcf_tap_unit == PcfTapUnit::Texel ? 0.0 : 4.0 * kU * double(glm::length(t));
+      out.push_back({double(t.x), double(t.y), round});
+      continue;
+    }
+    if (!(w_lo - e_w > 0.0)) return {};
+    const double lo = 1.0 / (w_hi + e_w), hi = 1.0 / (w_lo - e_w);
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    const double big = std::max(std::abs(double(t.x)), std::abs(double(t.y)));
+    out.push_back({double(t.x) * mid, double(t.y) * mid, big * half + 4.0 * kU * big * hi});
+  }
+  return out;
+}
+
 /// [lo, hi] of the PCF mean over `region`: each tap at (u, v) + its offset, over every cell of
 /// texels its coordinate may fall in on part of the region (edges widened by the margins).
 VisibilityRange pcf_over(const Polygon& region, const Coordinate& u, const Coordinate& v, const VctSettings& s,
@@ -159,15 +227,19 @@ VisibilityRange pcf_over(const Polygon& region, const Coordinate& u, const Coord
     u_lo = std::min(u_lo, u.at(p)), u_hi = std::max(u_hi, u.at(p));
     v_lo = std::min(v_lo, v.at(p)), v_hi = std::max(v_hi, v.at(p));
   }
-  const std::vector<vec2> taps = tap_positions(0.0f, 0.0f, s);  // the offsets
+  const std::vector<TapOffset> taps = tap_offsets_over(region, u.den, u.den_margin, u.size, s);
+  if (taps.empty()) return {0.0f, 1.0f};  // w may reach 0 on the region: no bound
+  double largest_offset = 16.0;  // parse_pcf_taps' limit, the largest a texel offset may be
+  for (const TapOffset& o : taps) largest_offset = std::max({largest_offset, std::abs(o.tu), std::abs(o.tv)});
   // Adding an offset rounds once more on each side (as shadow_ties.cpp's pcf_range).
-  const double e_tap = 4.0 * kU * (std::max(std::abs(u_hi), std::abs(v_hi)) + 16.0);
-  const double eu = u.margin + e_tap, ev = v.margin + e_tap;
+  const double e_tap = 4.0 * kU * (std::max(std::abs(u_hi), std::abs(v_hi)) + largest_offset);
   // Nearest reads the texel floor(t); linear the four from floor(t - 1/2).
   const double half = s.shadow_compare == ShadowCompare::Nearest ? 0.0 : 0.5;
   double lo = 0.0, hi = 0.0;
-  for (const vec2& o : taps) {
-    const double tu = double(o.x) - half, tv = double(o.y) - half;
+  for (const TapOffset& offset : taps) {
+    const double eu = u.margin + e_tap + offset.spread, ev = v.margin + e_tap + offset.spread;
+    const TapOffset o{offset.tu - half, offset.tv - half, offset.spread};
+    const double tu = o.tu, tv = o.tv;
     VisibilityRange tap{1.0f, 0.0f};
     for (int i = int(std::floor(u_lo + tu - eu)); i <= int(std::floor(u_hi + tu + eu)); ++i)
       for (int j = int(std::floor(v_lo + tv - ev)); j <= int(std::floor(v_hi + tv + ev)); ++j) {
@@ -176,7 +248,7 @@ VisibilityRange pcf_over(const Polygon& region, const Coordinate& u, const Coord
         cell = clip(cell, v.at_least(double(j) - tv - ev));
         cell = clip(cell, v.at_least(double(j + 1) - tv + ev) * -1.0);
         if (cell.empty()) continue;
-        const VisibilityRange r = tap_over(cell, u, v, tu, tv, i, j, s.shadow_compare, texel);
+        const VisibilityRange r = tap_over(cell, u, v, o, i, j, s, texel);
         tap.lo = std::min(tap.lo, r.lo);
         tap.hi = std::max(tap.hi, r.hi);
       }
@@ -211,14 +283,19 @@ VisibilityRange range_2d(const ShadowMap& map, const SnapParallelogram& q, const
   }
   if (outside_everywhere) return {};
   const Image& depth = map.depth;
-  const Coordinate u{x, w, depth.width, texel_margin(e[0], depth.width)};
+  // A correct GL's clip w: 4 terms within g4 of their magnitude, the point within q.margin.
+  double e_w = 0.0;
+  for (const vec3& p : points_of(q)) {
+    double s_w = std::abs(double(m[3][3])), a_w = 0.0;
+    for (int k = 0; k < 3; ++k) s_w += std::abs(double(m[k][3]) * double(p[k])), a_w += std::abs(double(m[k][3]));
+    e_w = std::max(e_w, kG4 * s_w + a_w * q.margin);
+  }
+  const Coordinate u{x, w, depth.width, texel_margin(e[0], depth.width), e_w};
   const Coordinate v{y, w, depth.height, texel_margin(e[1], depth.height)};
   const double ez = depth_margin(e[2]);
   VisibilityRange r = pcf_over(unit_square(), u, v, s, [&](int i, int j) {
-    return TexelCompare{z, w,
-                        stored_plus_bias(depth, std::clamp(i, 0, depth.width - 1),
-                                         std::clamp(j, 0, depth.height - 1), s.shadow_bias),
-                        ez};
+    // Past the edge: the edge texel (clamp) or the border's depth (stages/shadow_map.h, stored_depth).
+    return TexelCompare{z, w, double(stored_depth(depth, i, j, s.shadow_border) + s.shadow_bias), ez};
   });
   if (!inside_everywhere) r.hi = 1.0f;
   return r;
@@ -281,7 +358,7 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapPa
     if (!(ma_min > er)) return {0.0f, 1.0f};  // a face seen edge-on at the light: no bound here
     // s = (sc / |ma| + 1) / 2 with sc, ma each off by er (shadow_ties.cpp's range_cube).
     const double e_q = 2.0 * er / (ma_min - er) + 3.0 * kU;
-    const Coordinate u{dot_axis(r, axes.sc_axis), ma, size, texel_margin(e_q, size)};
+    const Coordinate u{dot_axis(r, axes.sc_axis), ma, size, texel_margin(e_q, size), er};
     const Coordinate v{dot_axis(r, axes.tc_axis), ma, size, texel_margin(e_q, size)};
     const VisibilityRange one = pcf_over(region, u, v, s, [&](int i, int j) {
       const CubeTexel t = cube_texel(home, i, j, size);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/parallel.h"
+#include "core/pcf_taps.h"
 #include "stages/direct.h"
 #include "stages/reduction.h"
 #include "stages/voxel_fill.h"
@@ -21,7 +22,9 @@ vec3 light_leaving(const Scene& scene, const VoxelFragment& f, const SurfaceMate
 }
 
 std::vector<vec3> fragment_radiance(const Scene& scene, const Voxelization& vox, const std::vector<ShadowMap>& maps,
-                                    const VctSettings& settings, const BounceLight* bounce) {
+                                    const VctSettings& frame_settings, const BounceLight* bounce) {
+  // The voxelizer's own PCF taps where the engine declares them (issue 39).
+  const VctSettings settings = voxel_pass_settings(frame_settings);
   const std::vector<SurfaceLods> lods = voxel_lods_per_triangle(scene, vox.n);
   std::vector<vec3> out(vox.fragments.size());
   parallel_for(int64_t(out.size()), [&](int64_t i) {

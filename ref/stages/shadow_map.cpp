@@ -51,28 +51,55 @@ float tap_visibility(const vec2& t, ShadowCompare compare, const LitTexel& lit) 
          (1.0f - a.x) * a.y * float(lit(x, y + 1)) + a.x * a.y * float(lit(x + 1, y + 1));
 }
 
-// PCF over one 2D depth image: the taps and the test of shadow_visibility (header).
-float pcf_2d(const Image& depth, const vec3& ndc, const VctSettings& settings) {
+// One tap of an engine that filters first (filters_depth_first): GL LINEAR on a plain sampler2D
+// blends the four stored depths around t - 0.5 (GL 4.5 section 8.14.2, equation 8.10's weights),
+// and the point's window depth z is compared once with that blend (the source design's
+// textureProj then `pointDepth - bias >= shadowDepth`). `stored(ix, iy)`: the texel's depth.
+template <typename StoredTexel>
+float filtered_tap_visibility(const vec2& t, float z, float bias, const StoredTexel& stored) {
+  const vec2 s = t - 0.5f;
+  const vec2 i0 = glm::floor(s);
+  const vec2 a = s - i0;
+  const int x = int(i0.x), y = int(i0.y);
+  const float d = (1.0f - a.x) * (1.0f - a.y) * stored(x, y) + a.x * (1.0f - a.y) * stored(x + 1, y) +
+                  (1.0f - a.x) * a.y * stored(x, y + 1) + a.x * a.y * stored(x + 1, y + 1);
+  return z <= d + bias ? 1.0f : 0.0f;
+}
+
+// PCF over one 2D depth image: the taps and the test of shadow_visibility (header). `clip_w`: the
+// point's light-clip w (taps declared with pcf_tap_scale = inv_w shrink with it).
+float pcf_2d(const Image& depth, const vec3& ndc, float clip_w, const VctSettings& settings) {
   const float z = ndc.z * 0.5f + 0.5f;
   const int w = depth.width, h = depth.height;
   // Texel coordinates with y up (GL texture space); the image stores row 0 = top.
   const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
-  // Clamp to edge: a texel past the border reads the border texel.
-  const auto lit = [&](int tx, int ty) {
-    return z <= depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0) + settings.shadow_bias;
-  };
-  const std::vector<vec2> taps = tap_positions(u, v, settings);
+  const auto stored = [&](int tx, int ty) { return stored_depth(depth, tx, ty, settings.shadow_border); };
+  const auto lit = [&](int tx, int ty) { return z <= stored(tx, ty) + settings.shadow_bias; };
+  const std::vector<vec2> taps = tap_positions(u, v, settings, w, clip_w);
+  const bool filter_first = filters_depth_first(settings);
   float sum = 0.0f;
-  for (const vec2& t : taps) sum += tap_visibility(t, settings.shadow_compare, lit);
+  for (const vec2& t : taps)
+    sum += filter_first ? filtered_tap_visibility(t, z, settings.shadow_bias, stored)
+                        : tap_visibility(t, settings.shadow_compare, lit);
   return sum / float(taps.size());
 }
 
 }  // namespace
 
+float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border) {
+  const int w = depth.width, h = depth.height;
+  const bool inside = tx >= 0 && ty >= 0 && tx < w && ty < h;
+  // CLAMP_TO_BORDER: the border colour's R is the depth a texel past the edge holds (GL 4.5
+  // sections 8.14.2, 8.23.1).
+  if (!inside && border != ShadowBorder::Clamp) return border == ShadowBorder::Lit ? 1.0f : 0.0f;
+  // Clamp to edge: a texel past the border reads the border texel.
+  return depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0);
+}
+
 // The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
 // u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
-// or the engine's offsets (core/pcf_taps.h).
-std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings) {
+// or the engine's offsets (core/pcf_taps.h) in its unit and scale.
+std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings, int size, float clip_w) {
   std::vector<vec2> out;
   if (settings.pcf_taps.empty()) {
     const int k = std::max(1, settings.pcf_kernel);
@@ -88,7 +115,13 @@ std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings) {
     offsets = parse_pcf_taps(settings.pcf_taps);
     parsed_text = settings.pcf_taps;
   }
-  for (const vec2& o : offsets) out.emplace_back(u + o.x, v + o.y);
+  const bool uv = settings.pcf_tap_unit == PcfTapUnit::Uv;
+  const bool inv_w = settings.pcf_tap_scale == PcfTapScale::InvW;
+  for (const vec2& o : offsets) {
+    vec2 t = uv ? o * float(size) : o;  // UV offsets: texture coordinates times the map's size
+    if (inv_w) t /= clip_w;            // added to clip xy before the divide: o / w after it
+    out.emplace_back(u + t.x, v + t.y);
+  }
   return out;
 }
 
@@ -178,6 +211,13 @@ namespace {
 // Every light a matrix or box names must exist and have a 2D map (a point light's cube keeps GL's
 // six faces, cube_map.h).
 void check_declared_lights(const Scene& scene, const VctSettings& settings) {
+  // A cube's lookup compares each texel in the face it lies on (cube_shadow_visibility): one
+  // filtered depth over texels of two faces has no single depth to compare with.
+  if (filters_depth_first(settings))
+    for (const Light& light : scene.lights)
+      if (light.is_point())
+        throw InputError("settings", "shadow_filter_order = filter_then_compare is for spot and directional lights' 2D "
+                                     "maps; the scene has a point light (its cube compares per face)");
   std::vector<int> named;
   for (const auto& [i, m] : parse_light_matrices(settings.shadow_view_proj)) named.push_back(i);
   for (const auto& [i, b] : parse_ortho_boxes(settings.shadow_ortho_box)) named.push_back(i);
@@ -230,7 +270,7 @@ float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSe
   if (c.w <= 0.0f) return 1.0f;
   const vec3 ndc = vec3(c) / c.w;
   if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || std::abs(ndc.z) > 1.0f) return 1.0f;
-  return pcf_2d(map.depth, ndc, settings);
+  return pcf_2d(map.depth, ndc, c.w, settings);
 }
 
 float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, const vec3& world_pos,
@@ -250,7 +290,9 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
     if (!(c.w > 0.0f) || z < 0.0f || z > 1.0f) return true;
     return z <= map.cube[size_t(face)].at(tx, size - 1 - ty, 0) + settings.shadow_bias;
   };
-  const std::vector<vec2> taps = tap_positions(st.x * float(size), st.y * float(size), settings);
+  // The home face's clip w (its distance along the face's axis) scales taps declared per 1/w.
+  const float clip_w = (map.cube_view_proj[size_t(home)] * vec4(world_pos, 1.0f)).w;
+  const std::vector<vec2> taps = tap_positions(st.x * float(size), st.y * float(size), settings, size, clip_w);
   float sum = 0.0f;
   for (const vec2& t : taps) sum += tap_visibility(t, settings.shadow_compare, lit);
   return sum / float(taps.size());
@@ -258,7 +300,9 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
 
 vec2 pcf_reach(const VctSettings& settings) {
   vec2 reach(0.0f);
-  for (const vec2& t : tap_positions(0.0f, 0.0f, settings)) reach = glm::max(reach, glm::abs(t));
+  // At w = 1: with pcf_tap_scale = inv_w the normal offset is off (validate_settings).
+  for (const vec2& t : tap_positions(0.0f, 0.0f, settings, settings.shadow_map_size, 1.0f))
+    reach = glm::max(reach, glm::abs(t));
   return reach + (settings.shadow_compare == ShadowCompare::Nearest ? 0.5f : 1.0f);
 }
 

@@ -59,15 +59,24 @@ std::vector<ShadowMap> render_shadow_maps(const Scene& scene, const VctSettings&
 /// per point light): what the memory estimate and the GL texture array count.
 int shadow_map_layers(const Scene& scene);
 
-/// The PCF tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
-/// u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats), or the engine's pcf_taps offsets.
-std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings);
+/// The PCF tap positions of a lookup at texel coordinate (u, v) of a map `size` texels wide: the
+/// pcf_kernel square at u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats), or the
+/// engine's pcf_taps offsets -- in texels, or (pcf_tap_unit = uv) texture coordinates times
+/// `size`, and (pcf_tap_scale = inv_w) divided by the point's light-clip w `clip_w`.
+std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings, int size, float clip_w);
+
+/// The depth texel (tx, ty) (y up, may lie past the edge) of a 2D map holds: the edge texel's
+/// (shadow_border = clamp, GL CLAMP_TO_EDGE), or past the edge 1 (lit) or 0 (shadowed), GL
+/// CLAMP_TO_BORDER's border colour.
+float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border);
 
 /// PCF visibility in [0,1] (1 = lit) of a world point for one light: the mean over the taps --
 /// settings.pcf_kernel^2 at texel offsets (i - (k-1)/2), or the engine's settings.pcf_taps
-/// (core/pcf_taps.h) -- of each tap's compare: its texel (shadow_compare nearest) or GL LINEAR's
-/// bilinear weighting of the four texels around it (linear); clamp to edge; a texel is lit when
-/// the point's window depth <= stored depth + settings.shadow_bias. Points outside the light's frustum are lit
+/// (core/pcf_taps.h, tap_positions) -- of each tap's compare: its texel (shadow_compare nearest)
+/// or GL LINEAR's bilinear weighting of the four texels around it (linear), each compared
+/// (compare_then_filter) or their depths blended and compared once (filter_then_compare);
+/// texels past the edge as shadow_border says (stored_depth); a texel is lit when the point's
+/// window depth <= stored depth + settings.shadow_bias. Points outside the light's frustum are lit
 /// (the spot falloff is zero there anyway). Cube maps: cube_shadow_visibility.
 float shadow_visibility(const ShadowMap& map, const vec3& world_pos, const VctSettings& settings);
 

@@ -170,6 +170,14 @@ TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
       {"validate --no-report --spp 1" + cfg, "settings: the GL backend runs the pcf_kernel square"},
       {"validate --no-report --spp 1 --sweep shadow_depth_format=depth32f,depth16",
        "settings: the GL backend runs the pcf_kernel square"},
+      // An engine's PCF variants (issue 39), each refused by validate with one line.
+      {"validate --no-report --spp 1 --set shadow_border=shadowed", "settings: the GL backend runs one texel PCF kernel"},
+      {"validate --no-report --spp 1 --set shadow_filter_order=filter_then_compare",
+       "settings: the GL backend runs one texel PCF kernel"},
+      {"validate --no-report --spp 1 --set pcf_tap_unit=uv", "settings: the GL backend runs one texel PCF kernel"},
+      {"validate --no-report --spp 1 --set pcf_tap_scale=inv_w --set shadow_normal_offset=0",
+       "settings: the GL backend runs one texel PCF kernel"},
+      {"validate --no-report --spp 1 --set voxel_pcf_taps=0,0", "settings: the GL backend runs one texel PCF kernel"},
       // validate opens its GL context after the run directory exists: the device is checked first.
       {"validate --no-report --spp 1 --gl-device 99", "--gl-device: no EGL device 99"},
       {"validate --no-report --spp 1 --gl-device no-such-gpu", "--gl-device: no EGL device matches 'no-such-gpu'"},
@@ -191,6 +199,11 @@ TEST(RenderCli, WhatTheBackendRefusesLeavesNoRunDirectory) {
     }
     EXPECT_FALSE(std::filesystem::exists(out)) << c.args << " left its run directory behind";
   }
+  // Taps per 1/w have no fixed footprint for the normal offset: refused by every backend.
+  const Result inv_w = vct("render --backend ref --set pcf_tap_scale=inv_w " + std::string(kSmall) + " --out '" +
+                           (test::temp_dir() / "refused_inv_w").string() + "'");
+  EXPECT_EQ(inv_w.exit_code, 2) << inv_w.err;
+  EXPECT_NE(inv_w.err.find("pcf_tap_scale = inv_w needs shadow_normal_offset = 0"), std::string::npos) << inv_w.err;
   // The reference runs the same setting.
   const std::filesystem::path out = test::temp_dir() / "ref_depth16";
   const Result ok = vct("render --backend ref" + cfg + kSmall + " --out '" + out.string() + "'");
