@@ -148,6 +148,7 @@ nlohmann::json validate_row(const BenchOptions& o) {
     row["phases"] = run.at("phases");
     row["settings"] = {{"width", run["settings"]["vct"]["width"]}, {"grid", run["settings"]["vct"]["grid"]},
                        {"spp", run["settings"]["pt"]["spp"]}};
+    if (run.contains("memory")) row["memory"] = run["memory"];  // predicted and peak RSS (validate's own)
   } catch (const std::exception&) {
     row["note"] = "validate wrote no phase times (see its log)";
   }
@@ -217,13 +218,19 @@ std::string format_validate(const nlohmann::json& v) {
                          v["settings"]["width"].get<int>(), v["settings"]["width"].get<int>(),
                          v["settings"]["grid"].get<int>(), v["settings"]["spp"].get<int>(), v["wall_ms"].get<double>() / 1000);
   const double r = p["render_ms"].get<double>(), other = p["other_ms"].get<double>();
-  out += line("  renders %.2f s, everything else %.2f s (%.0f %% of the renders)\n", r / 1000, other / 1000,
-              r > 0 ? 100.0 * other / r : 0.0);
+  out += line("  renders %.2f s, everything else %.2f s (non-render / renders %.2f at grid %d)\n", r / 1000,
+              other / 1000, r > 0 ? other / r : 0.0, v["settings"]["grid"].get<int>());
   // CPU time tells work from waiting on a shared machine (app/phase_times.h).
   if (p.contains("render_cpu_ms") && p.contains("other_cpu_ms")) {
     const double rc = p["render_cpu_ms"].get<double>(), oc = p["other_cpu_ms"].get<double>();
-    out += line("  CPU time: renders %.2f s, everything else %.2f s (%.0f %% of the renders)\n", rc / 1000, oc / 1000,
-                rc > 0 ? 100.0 * oc / rc : 0.0);
+    out += line("  CPU time: renders %.2f s, everything else %.2f s (non-render / renders %.2f)\n", rc / 1000,
+                oc / 1000, rc > 0 ? oc / rc : 0.0);
+  }
+  if (v.contains("memory")) {
+    const double predicted = v["memory"]["predicted_bytes"].get<double>(), peak = v["memory"]["peak_rss_bytes"].get<double>();
+    out += line("  memory predicted %s, peak RSS %s (predicted / peak %.2f)\n",
+                format_bytes(uint64_t(predicted)).c_str(), format_bytes(uint64_t(peak)).c_str(),
+                peak > 0 ? predicted / peak : 0.0);
   }
   out += line("  largest other phases (wall):\n");
   std::vector<std::pair<double, std::string>> rest;

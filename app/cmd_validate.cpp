@@ -2,6 +2,7 @@
 // Exit: 0 when every GPU stage passes (warnings included), 1 when one fails or the GL frame
 // errors, 2 bad input, 3 only with --require-gl and no GL context; without --require-gl a
 // missing GL context is reported ("gl: unavailable") and the ref/pt parts still run.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "compare/stage_compare.h"
 #include "compare/stage_set.h"
 #include "core/error.h"
+#include "core/memory_budget.h"
 #include "core/parallel.h"
 #include "core/parallel_tasks.h"
 #include "io/image_io.h"
@@ -24,6 +26,7 @@
 #include "phase_times.h"
 #include "pt/progress.h"
 #include "stages/explain.h"
+#include "stages/scene_footprint.h"
 #include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
 #include "scene/exposure.h"
@@ -94,6 +97,17 @@ void write_explanation(RunDir& run, const Scene& scene, const BackendRun& ref, c
   RunDir ed(run.file("explain"));
   write_text_atomically(ed.file("explain.json"), e.json.dump(1) + "\n");
   write_png_linear(ed.file("explain.png"), e.picture, 0.0f, 1.0f);
+}
+
+// Predicted (by phase) and measured peak, as `vct render` writes its own.
+nlohmann::json validate_memory_json(const ValidateMemoryEstimate& e) {
+  return {{"predicted_bytes", e.total()},
+          {"predicted", format_bytes(e.total())},
+          {"predicted_during_ref_bytes", e.during_ref()},
+          {"predicted_during_checks_bytes", e.during_checks()},
+          {"predicted_scene_bytes", e.ref.scene},
+          {"peak_rss_bytes", peak_rss_bytes()},
+          {"peak_rss", format_bytes(peak_rss_bytes())}};
 }
 
 nlohmann::json bias_json(const std::vector<cmp::BiasComponent>& bias) {
@@ -294,9 +308,14 @@ int run(const ValidateOptions& o) {
   run.json()["environment"] = environment_info();
   // The report names, orders and explains stages from this table (ref/stages/stage_registry.h).
   run.json()["stage_registry"] = stage_registry_json();
-  std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  -> %s\n", scene.source.c_str(), s.vct.width,
-              s.vct.height, s.vct.grid, s.pt.spp, thread_count(), out.c_str());
+  // Predicted with the loaded scene before anything renders; a run that will not fit is warned
+  // about now, not found out in the allocator (docs/performance.md, "Validate's memory").
+  const ValidateMemoryEstimate predicted = estimate_validate_memory(s, scene_footprint(scene));
+  std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  memory predicted %s  -> %s\n",
+              scene.source.c_str(), s.vct.width, s.vct.height, s.vct.grid, s.pt.spp, thread_count(),
+              format_bytes(predicted.total()).c_str(), out.c_str());
   std::fflush(stdout);
+  warn_if_memory_short(predicted, "vct validate");
 
   // GL first: the reference then emulates the coverage rule the driver actually ran.
   progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
@@ -314,7 +333,7 @@ int run(const ValidateOptions& o) {
     run.json()["settings_effective"] = ref_settings;
   }
   progress.begin("CPU reference frame");
-  const BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings, sample_positions_of(gl)); }, true);
+  BackendRun ref = phases.time("render ref", [&] { return run_ref_backend(scene, ref_settings, sample_positions_of(gl)); }, true);
   progress.end();
   record_frame(run, ref, "ref");
   std::printf("  ref  %-12s %8.1f s\n", ref.status.c_str(), ref.ms / 1000);
@@ -328,7 +347,8 @@ int run(const ValidateOptions& o) {
 
   phases.time("explain one pixel", [&] { write_explanation(run, scene, ref, s); });
   progress.begin("stage sets, GL vs CPU reference, bias against the path tracer");
-  CheckResults checks = run_checks(run, scene, s, ref, gl, pt, phases);
+  // The error budget reads the reference's frame after the checks; otherwise they consume it.
+  CheckResults checks = run_checks(run, scene, s, ref, gl, pt, phases, o.attribute);
   progress.end();
 
   int exit_code = kExitOk;
@@ -360,6 +380,7 @@ int run(const ValidateOptions& o) {
   }
   if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
   run.json()["exit_code"] = exit_code;
+  run.json()["memory"] = validate_memory_json(predicted);  // the report's Python is not counted
   run.json()["phases"] = phases.to_json();  // the report shows the phases before it (its own come after)
   run.save();
   std::string index, why;
@@ -375,6 +396,8 @@ int run(const ValidateOptions& o) {
   }
   run.finish();  // everything is written; the report is rebuilt from these files alone
   std::fputs(phases.table().c_str(), stdout);
+  std::printf("memory: predicted %s, peak RSS %s (predicted / peak %.2f)\n", format_bytes(predicted.total()).c_str(),
+              format_bytes(peak_rss_bytes()).c_str(), double(predicted.total()) / double(std::max<uint64_t>(peak_rss_bytes(), 1)));
   if (!o.no_report) {
     if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
     else std::printf("%s\n", index.c_str());

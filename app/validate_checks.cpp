@@ -30,11 +30,16 @@ struct Task {
 };
 }  // namespace
 
-CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, const BackendRun& ref,
-                        const BackendRun& gl, const PtRun& pt, PhaseTimes& phases) {
+CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, BackendRun& ref, const BackendRun& gl,
+                        const PtRun& pt, PhaseTimes& phases, bool keep_ref_frame) {
   CheckResults r;
   // Named before any task starts: the writers then only read the sets the others read.
-  if (ref.ok()) cmp::name_stage_files(run.file("ref"), r.ref_set = cmp::stage_set_from_frame(*ref.frame, s.vct));
+  if (ref.ok()) {
+    r.ref_set = keep_ref_frame ? cmp::stage_set_from_frame(*ref.frame, s.vct)
+                               : cmp::stage_set_from_frame(std::move(*ref.frame), s.vct);
+    if (!keep_ref_frame) ref.frame->mips = VoxelMips();  // no stage; the cones were traced
+    cmp::name_stage_files(run.file("ref"), r.ref_set);
+  }
   if (gl.ok()) cmp::name_stage_files(run.file("gl"), r.gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
   std::vector<Task> tasks;
   // The longest chain first (one thread: its inner loops run serially inside a task).

@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
-"""Predicted memory against the peak RSS of `vct render` (issue 37, Deliver 4): prints
-predicted / peak for the built-in Cornell box with each triangle split into n² (2 382 to ~1 M
-triangles) at grids 64–256. A benchmark, run by hand; figures in docs/performance.md
-("Scale: memory predicted and measured").
+"""Predicted memory against the peak RSS of `vct render` or `vct validate` (issue 37, Deliver 3
+and 4): prints predicted / peak for the built-in Cornell box with each triangle split into n²
+(2 382 to ~1 M triangles) at grids 64–256, and for validate its non-render / renders ratio (wall
+and CPU time). A benchmark, run by hand; figures in docs/performance.md ("Scale: memory predicted
+and measured", "Validate at grid 256").
 
-  bench/memory_bench.py [--splits 1,4,8,20] [--grids 64,128,256] [--size 128] [--vct build/bin/vct]
+  bench/memory_bench.py [--command render|validate] [--splits 1,4,8,20] [--grids 64,128,256]
+                        [--size 128 (render) / 256 (validate)] [--vct build/bin/vct]
 
-`vct render` writes memory.predicted_bytes (estimate_memory, ref/core/memory_budget.cpp) and
-memory.peak_rss_bytes (getrusage) into run.json; both are read back here.
+`vct render` and `vct validate` write memory.predicted_bytes (estimate_memory /
+estimate_validate_memory, ref/core/memory_budget.cpp) and memory.peak_rss_bytes (getrusage) into
+run.json; both are read back here.
 """
 import argparse
 import base64
@@ -94,12 +97,26 @@ def split_scene(n, path):
     return triangles
 
 
-def measure(vct, scene, grid, size, out):
-    subprocess.run([vct, "render", scene, "--backend", "ref", "--grid", str(grid), "--width", str(size),
-                    "--height", str(size), "--out", out], check=True, stdout=subprocess.DEVNULL)
+def measure(vct, command, scene, grid, size, out):
+    """(predicted bytes, peak RSS bytes, run.json) of one `vct render --backend ref` or one
+    `vct validate --no-report` (its default 64 spp: the path tracer's time counts in its renders)."""
+    if command == "render":
+        args = [vct, "render", scene, "--backend", "ref"]
+    else:
+        args = [vct, "validate", scene, "--no-report"]
+    subprocess.run(args + ["--grid", str(grid), "--width", str(size), "--height", str(size), "--out", out],
+                   check=command == "render", stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "run.json")) as f:
-        m = json.load(f)["memory"]
-    return m["predicted_bytes"], m["peak_rss_bytes"]
+        run = json.load(f)
+    return run["memory"]["predicted_bytes"], run["memory"]["peak_rss_bytes"], run
+
+
+def non_render_ratio(run):
+    """validate's everything-else / renders, wall and CPU (app/phase_times.h: run.json "phases")."""
+    p = run.get("phases", {})
+    wall = p.get("other_ms", 0.0) / max(p.get("render_ms", 0.0), 1e-9)
+    cpu = p.get("other_cpu_ms", 0.0) / max(p.get("render_cpu_ms", 0.0), 1e-9)
+    return wall, cpu
 
 
 def main(argv):
@@ -108,18 +125,27 @@ def main(argv):
     ap.add_argument("--grids", default="64,128,256")
     ap.add_argument("--size", type=int, default=128)
     ap.add_argument("--vct", default=os.environ.get("VCT_BINARY", os.path.join(ROOT, "build", "bin", "vct")))
+    ap.add_argument("--command", choices=("render", "validate"), default="render",
+                    help="validate: its predicted/peak and its non-render/renders ratio (wall, CPU) per row")
     a = ap.parse_args(argv)
+    if a.command == "validate" and a.size == 128 and "--size" not in argv:
+        a.size = 256  # validate's default image
     mib = 1024.0 * 1024.0
     print("load average %s" % " ".join("%.2f" % x for x in os.getloadavg()))
-    print("| triangles | grid | predicted MiB | peak RSS MiB | predicted / peak |")
-    print("| --- | --- | --- | --- | --- |")
+    extra = " validate non-render / renders (wall, CPU) |" if a.command == "validate" else ""
+    print("| triangles | grid | predicted MiB | peak RSS MiB | predicted / peak |" + extra)
+    print("| --- | --- | --- | --- | --- |" + (" --- |" if extra else ""))
     with tempfile.TemporaryDirectory(prefix="vct-memory-") as work:
         for n in (int(s) for s in a.splits.split(",")):
             scene = os.path.join(work, "split_%d.gltf" % n)
             tris = split_scene(n, scene)
             for grid in (int(s) for s in a.grids.split(",")):
-                pred, peak = measure(a.vct, scene, grid, a.size, os.path.join(work, "run_%d_%d" % (n, grid)))
-                print("| %d | %d | %.0f | %.0f | %.2f |" % (tris, grid, pred / mib, peak / mib, pred / peak))
+                pred, peak, run = measure(a.vct, a.command, scene, grid, a.size,
+                                          os.path.join(work, "run_%d_%d" % (n, grid)))
+                row = "| %d | %d | %.0f | %.0f | %.2f |" % (tris, grid, pred / mib, peak / mib, pred / peak)
+                if a.command == "validate":
+                    row += " %.2f, %.2f |" % non_render_ratio(run)
+                print(row)
                 sys.stdout.flush()
     print("load average %s" % " ".join("%.2f" % x for x in os.getloadavg()))
     return 0

@@ -8,6 +8,8 @@ find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(embree 3 REQUIRED)
+# NRRD volumes are written gzip-encoded (ref/io/nrrd.cpp).
+find_package(ZLIB REQUIRED)
 # OpenImageIO 2.4's CMake config drags in /usr/include/opencv4; pkg-config does not.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 # tinygltf includes <stb_image.h>, which Debian keeps in /usr/include/stb.

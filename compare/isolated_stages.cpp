@@ -59,9 +59,25 @@ void decode_display_direct(const DisplayTransform& display, Image& direct) {
         direct.at(x, y, c) = float(display.decode(direct.at(x, y, c)));
 }
 
-FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
-                                     const DisplayTransform* display, int march_end) {
-  FrameResult r = test;
+namespace {
+// `test` without its volumes (voxels, occupancy, holes, mips, bounce frames): what the re-trace
+// writes into and the isolated comparison reads; the cones read the test's mips in place.
+FrameResult frame_without_volumes(const FrameResult& test) {
+  FrameResult r;
+  r.backend = test.backend;
+  r.shadow_maps = test.shadow_maps;
+  r.gbuffer = test.gbuffer;
+  r.images = test.images;
+  r.multibounce_energy = test.multibounce_energy;
+  r.timings_ms = test.timings_ms;
+  r.facts = test.facts;
+  r.info = test.info;
+  return r;
+}
+
+// The re-trace of reference_on_test_inputs into `r` (a copy of `test`, with or without its volumes).
+FrameResult retrace_on_test_inputs(FrameResult r, const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                   const DisplayTransform* display, int march_end) {
   r.backend = "ref-on-" + test.backend + "-inputs";
   // The composite adds the test's own direct light, so image.final judges the cones and the
   // composite, not direct light a second time (image.direct is judged below); an engine's
@@ -69,7 +85,7 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
   // "Display transform"). With soft shadows direct light is re-traced anyway.
   if (direct_input_of(display) == DirectInput::Decoded && !s.soft_shadows)
     decode_display_direct(*display, r.images.direct);
-  trace_cone_stages(scene, s, r, march_end);
+  trace_cone_stages(scene, s, r, test.mips, march_end);
   std::vector<ShadowMap> maps;
   if (!s.soft_shadows) {
     // image.direct re-shaded from the test's G-buffer and shadow maps (docs/compare.md, "Shading
@@ -87,6 +103,18 @@ FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test
   // unshadowed light); it is judged like the other cone stages (docs/compare.md, "Admission rules").
   if (s.soft_shadows) r.gbuffer.tie_range = without_tie_range_group(r.gbuffer.tie_range, stage_names::kImageDirect);
   return r;
+}
+
+// reference_on_test_inputs without the test's volumes: all the isolated comparison reads.
+FrameResult images_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                  const DisplayTransform* display, int march_end = 0) {
+  return retrace_on_test_inputs(frame_without_volumes(test), scene, test, s, display, march_end);
+}
+}  // namespace
+
+FrameResult reference_on_test_inputs(const Scene& scene, const FrameResult& test, const VctSettings& s,
+                                     const DisplayTransform* display, int march_end) {
+  return retrace_on_test_inputs(test, scene, test, s, display, march_end);
 }
 
 bool has_own_shadow_maps(const Scene& scene, const FrameResult& test, const VctSettings& s) {
@@ -275,10 +303,9 @@ StageSet isolated_reference_set(const FrameResult& r, const VctSettings& s, bool
 
 // The test's set with the same stages kept (its header, conventions included, unchanged).
 StageSet isolated_test_set(const StageSet& test, bool soft_shadows) {
-  StageSet set = test;
-  set.volumes.clear();
-  for (auto it = set.images.begin(); it != set.images.end();)
-    it = isolated_stage(it->first, soft_shadows) ? std::next(it) : set.images.erase(it);
+  StageSet set = stage_set_without_stages(test);  // no copy of the volumes it would drop
+  for (const auto& [name, img] : test.images)
+    if (isolated_stage(name, soft_shadows)) set.images[name] = img;
   return set;
 }
 }  // namespace
@@ -318,7 +345,7 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
                                 const StageSet& test_set, const CompareOptions& opt) {
   const DisplayTransform* display = &test_set.conventions.display;
   const DirectInput direct = s.soft_shadows ? DirectInput::Linear : direct_input_of(display);
-  const FrameResult ref_on_test = reference_on_test_inputs(scene, test, s, display);
+  const FrameResult ref_on_test = images_on_test_inputs(scene, test, s, display);
   JudgeContext iso_ctx;
   iso_ctx.direct_decoded_from_display = direct == DirectInput::Decoded;
   const bool soft = s.soft_shadows || soft_shadows_of(test_set);
@@ -328,8 +355,8 @@ void judge_cones_on_test_inputs(Report& end_to_end, const Scene& scene, const Fr
   // cone-image pixel is judged against the closest of the three admissible march ends.
   if (any_cone_stage_fails(isolated, s.soft_shadows)) {
     size_t moved = 0;
-    const FrameResult closest = closest_march_end(ref_on_test, reference_on_test_inputs(scene, test, s, display, -1),
-                                                  reference_on_test_inputs(scene, test, s, display, +1), test, &moved,
+    const FrameResult closest = closest_march_end(ref_on_test, images_on_test_inputs(scene, test, s, display, -1),
+                                                  images_on_test_inputs(scene, test, s, display, +1), test, &moved,
                                                   display);
     const Report plain = std::move(isolated);
     isolated = compare_stage_sets(isolated_reference_set(closest, s, soft), test_judged, opt, iso_ctx);

@@ -37,12 +37,36 @@ StageSet stage_set_header(const FrameResult& f, const VctSettings& s) {
   return set;
 }
 
+StageSet stage_set_without_stages(const StageSet& set) {
+  StageSet out;
+  out.backend = set.backend;
+  out.storage = set.storage;
+  out.reduction = set.reduction;
+  out.settings = set.settings;
+  out.info = set.info;
+  out.conventions = set.conventions;
+  out.facts = set.facts;
+  out.root = set.root;
+  out.files = set.files;
+  return out;
+}
+
 StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s) {
   StageSet set = stage_set_header(f, s);
   for (const StageRow& row : stage_rows())
     for (int i : frame_members(f, row)) {
       if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = *frame_image(f, row, i);
       else set.volumes[stage_name(row, i)] = *frame_volume(f, row, i);
+    }
+  return set;
+}
+
+StageSet stage_set_from_frame(FrameResult&& f, const VctSettings& s) {
+  StageSet set = stage_set_header(f, s);
+  for (const StageRow& row : stage_rows())
+    for (int i : frame_members(f, row)) {  // every member found before any is moved
+      if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = std::move(*row.image(f, i, false));
+      else set.volumes[stage_name(row, i)] = std::move(*row.volume(f, i, false));
     }
   return set;
 }

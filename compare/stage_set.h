@@ -38,8 +38,17 @@ struct StageSet {
 /// Every stage of one frame under its canonical name (docs/external_format.md lists them).
 StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s);
 
+/// Same, moving each stage's image or volume out of `f` instead of copying it (those slots of `f`
+/// are left empty; what is no stage, e.g. the mips' base level, stays): the set of a frame that is
+/// not read again costs no copy (at grid 256, ~700 MB; docs/performance.md).
+StageSet stage_set_from_frame(FrameResult&& f, const VctSettings& s);
+
 /// A frame's stage set without its stages: backend, storage, reduction, settings, info, facts.
 StageSet stage_set_header(const FrameResult& f, const VctSettings& s);
+
+/// `set` without its images and volumes (every other field copied): a subset is then built
+/// without copying the stages it leaves out.
+StageSet stage_set_without_stages(const StageSet& set);
 
 /// Writes every stage (EXR / NRRD + PNG previews) and `dir`/vct-stages.json; fills set.root/files.
 void write_stage_set(const std::string& dir, StageSet& set);

@@ -120,6 +120,56 @@ MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   return e;
 }
 
+namespace {
+// Per voxel, the volumes both frames share as stages: radiance (RGBA float) and fragment count,
+// the coarser mip levels (iso[0] is no stage), and with multibounce the bounce input and the kept
+// frames (RGBA float each).
+uint64_t shared_stage_bytes(const VctSettings& v) {
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  uint64_t bytes = n3 * (16 + 4) + mip_bytes(n3, v.anisotropic) - 16 * n3;
+  if (v.bounces > 1) bytes += 16 * n3 * (1 + (keeps_multibounce_frames(v) ? uint64_t(v.bounces - 1) : 0));
+  return bytes;
+}
+
+// The reference's own voxel stages: shading slack, exactness, occupancy tie, conservative
+// occupancy (1 float each), the hole map with the GPU rule, the CAS bounds (2 RGBA floats).
+uint64_t ref_only_stage_bytes(const VctSettings& v) {
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  return n3 * (4 * 4 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0) + (v.reduction == Reduction::CasRgba8 ? 32 : 0));
+}
+
+// Measured with the built-in scene (2 k and 1 M triangles, grids 64-256; docs/performance.md,
+// "Validate's memory"): while the reference renders, the GL driver (llvmpipe) still holds ~60 MiB
+// beside the frame it read back; after the renders, the driver's and the path tracer's leftovers
+// (their heaps are not returned to the system) hold ~150 MiB. The scene's arrays, twice (as
+// loaded, for an exposure sweep, and as exposed), ~160 B per triangle: the peak RSS after loading
+// 952 800 triangles. The judge's masks and slack volumes, ~12 B per voxel: the occupancy judges'
+// byte masks (missing, extra, surface, both occupancies) and the mip judge's per-voxel slack
+// floats, alive one stage at a time.
+constexpr uint64_t kGlDuringRef = 60 * kMiB;
+constexpr uint64_t kAfterRenders = 150 * kMiB;
+constexpr uint64_t kSceneKeptPerTriangle = 160;
+constexpr uint64_t kJudgeBytesPerVoxel = 12;
+}  // namespace
+
+ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFootprint& scene, bool gl) {
+  const VctSettings& v = s.vct;
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  ValidateMemoryEstimate e;
+  e.ref = estimate_memory(s, scene);
+  const uint64_t shared = shared_stage_bytes(v);
+  e.stage_sets = shared + ref_only_stage_bytes(v);
+  e.scene_kept = kSceneKeptPerTriangle * scene.triangles + 2 * scene.texture_bytes;
+  e.after_renders = kAfterRenders;
+  if (gl) {
+    e.gl_during_ref = kGlDuringRef;
+    e.gl_frame = shared + 16 * n3;  // its mips' base level too: the re-trace reads it
+    e.stage_sets += shared;
+    e.judge_scratch = kJudgeBytesPerVoxel * n3;
+  }
+  return e;
+}
+
 MemoryEstimate estimate_memory(const Settings& s, int shadow_layers) {
   SceneFootprint unknown;
   unknown.shadow_layers = shadow_layers;
@@ -151,6 +201,17 @@ bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t ava
   std::fprintf(stderr, "%s: warning: this run needs about %s (scene %s, voxels %s, images %s), but this machine has %s\n",
                who, format_bytes(e.total()).c_str(), format_bytes(e.scene).c_str(), format_bytes(e.voxels).c_str(),
                format_bytes(e.images).c_str(), format_bytes(available).c_str());
+  return true;
+}
+
+bool warn_if_memory_short(const ValidateMemoryEstimate& e, const char* who, uint64_t available) {
+  if (available == 0 || e.total() <= available) return false;
+  std::fprintf(stderr,
+               "%s: warning: this run needs about %s (while the reference renders beside the GL frame %s; while "
+               "the stage sets are compared %s; scene %s), but this machine has %s\n",
+               who, format_bytes(e.total()).c_str(), format_bytes(e.during_ref()).c_str(),
+               format_bytes(e.during_checks()).c_str(), format_bytes(e.ref.scene).c_str(),
+               format_bytes(available).c_str());
   return true;
 }
 

@@ -54,6 +54,29 @@ MemoryEstimate estimate_memory(const Settings& s, int shadow_layers = 1);
 /// The same with a loaded scene's triangles, textures and alpha masks counted.
 MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene);
 
+/// `vct validate`'s peak (issue 37 item 4): its renders run one after the other, and the GL frame
+/// (read back into host memory) stays alive while the reference renders; then the two stage sets
+/// and the comparison. Whichever of those two phases holds more is the peak (docs/performance.md,
+/// "Validate's memory").
+struct ValidateMemoryEstimate {
+  MemoryEstimate ref;           // the reference frame's own estimate (render's), baseline included
+  uint64_t gl_frame = 0;        // the GL frame's volumes read back (voxels, mips)
+  uint64_t gl_during_ref = 0;   // what the GL driver still holds while the reference renders
+  uint64_t stage_sets = 0;      // both stage sets' volumes (the reference's moved out of its frame)
+  uint64_t judge_scratch = 0;   // the comparison's per-voxel masks and slack volumes
+  uint64_t scene_kept = 0;      // the scene as loaded and as exposed (two copies) after the renders
+  uint64_t after_renders = 0;   // the renderers' leftovers: GL driver, path tracer heaps (measured)
+  uint64_t during_ref() const { return ref.total() + gl_during_ref + gl_frame; }
+  uint64_t during_checks() const {
+    return ref.baseline + scene_kept + ref.images + ref.path_tracer + after_renders + gl_frame + stage_sets +
+           judge_scratch;
+  }
+  uint64_t total() const { return during_ref() > during_checks() ? during_ref() : during_checks(); }
+};
+
+/// `gl`: whether the GL backend will run (without it only the reference's terms count).
+ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFootprint& scene, bool gl = true);
+
 /// Whether the ref pipeline keeps the base level of every multibounce frame before the last (for
 /// the dumps): only while they total at most 256 MiB. Shared so the estimate counts what is kept.
 bool keeps_multibounce_frames(const VctSettings& v);
@@ -68,6 +91,9 @@ void check_memory_budget(const Settings& s, uint64_t available = physical_memory
 /// Prints "WHO: warning: ..." to stderr when `e` exceeds `available` bytes (default: physical
 /// memory; 0 = unknown: silent): the run may not fit. Returns whether it warned.
 bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t available = physical_memory_bytes());
+/// The same for vct validate's estimate (its two phases named).
+bool warn_if_memory_short(const ValidateMemoryEstimate& e, const char* who,
+                          uint64_t available = physical_memory_bytes());
 
 /// Peak resident set size of this process so far in bytes (getrusage); 0 if unknown.
 uint64_t peak_rss_bytes();

@@ -1,4 +1,4 @@
-// Volumes on disk as NRRD 0004 (raw little-endian float, channels as the fastest axis), readable
+// Volumes on disk as NRRD 0004 (gzip-encoded little-endian float, channels as the fastest axis), readable
 // by ParaView, 3D Slicer, Fiji and pynrrd; plus a PNG montage of z slices for looking.
 #pragma once
 
@@ -8,11 +8,11 @@
 
 namespace vct {
 
-/// Writes `vol` as an attached-header NRRD. `spacing` is the world size of one voxel.
+/// Writes `vol` as an attached-header NRRD, gzip-encoded. `spacing` is the world size of one voxel.
 void write_nrrd(const std::string& path, const Volume& vol, float spacing = 1.0f);
 
-/// Reads a NRRD written by us or by another tool (float/uint8/uint16/half? no: float, uint8,
-/// uint16, int32; raw or gzip not supported); throws InputError naming the problem.
+/// Reads a NRRD written by us or by another tool (float, uint8, uint16, int32; raw or gzip
+/// encoding); throws InputError naming the problem.
 Volume read_nrrd(const std::string& path);
 
 /// A grid of z slices (RGB from the first three channels, or grey for one channel), tone-mapped

@@ -52,12 +52,17 @@ std::vector<vec3> run_voxel_light(const Scene& scene, const Voxelization& vox, c
 }  // namespace
 
 void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end) {
+  trace_cone_stages(scene, s, r, r.mips, march_end);
+}
+
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, const VoxelMips& mips,
+                       int march_end) {
   FrameImages& im = r.images;
   if (s.soft_shadows)
     timed(r.timings_ms, "direct_soft_shadows",
-          [&] { im.direct = shade_direct_soft(scene, r.gbuffer, r.mips, s, &im.soft_shadow); });
+          [&] { im.direct = shade_direct_soft(scene, r.gbuffer, mips, s, &im.soft_shadow); });
   timed(r.timings_ms, "indirect_cones", [&] {
-    IndirectImages ind = trace_indirect(scene, r.gbuffer, r.mips, s, march_end);
+    IndirectImages ind = trace_indirect(scene, r.gbuffer, mips, s, march_end);
     im.indirect_diffuse = std::move(ind.diffuse);
     im.indirect_specular = std::move(ind.specular);
     im.diffuse_cones.assign(ind.diffuse_cones.begin(), ind.diffuse_cones.end());

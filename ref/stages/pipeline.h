@@ -20,6 +20,11 @@ namespace vct {
 /// `march_end`: the indirect cones' MarchParams::march_end (the march-end tie's alternatives).
 void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, int march_end = 0);
 
+/// Same, tracing in `mips` (another frame's, read in place) instead of r.mips: a re-trace on a test
+/// frame's inputs then copies no volume (256^3: ~300 MB; docs/performance.md, "Validate at grid 256").
+void trace_cone_stages(const Scene& scene, const VctSettings& s, FrameResult& r, const VoxelMips& mips,
+                       int march_end = 0);
+
 /// What a frame computed on its way that its outputs do not keep, for the judge's freedoms
 /// (freedoms/reference_freedoms.h), which start from the same raster and fragments.
 struct FrameIntermediates {

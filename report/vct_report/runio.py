@@ -19,7 +19,7 @@ def load_json(path):
 
 
 def read_nrrd(path):
-    """Raw little-endian NRRD as written by vct (and most tools): returns array [z, y, x, c]."""
+    """Little-endian NRRD, raw or gzip (vct writes gzip), as most tools write it: returns array [z, y, x, c]."""
     try:
         with open(path, "rb") as f:
             data = f.read()
@@ -34,14 +34,21 @@ def read_nrrd(path):
             continue
         k, v = line.split(":", 1)
         header[k.strip()] = v.strip()
-    if header.get("encoding", "raw") != "raw":
+    encoding = header.get("encoding", "raw")
+    if encoding not in ("raw", "gzip", "gz"):
         return None
     dtype = {"float": "<f4", "uint8": "u1", "unsigned char": "u1", "uint16": "<u2", "int32": "<i4"}.get(
         header.get("type", "float"))
     if dtype is None:
         return None
     sizes = [int(s) for s in header["sizes"].split()]
-    arr = np.frombuffer(data[end + 2:], dtype=dtype).astype(np.float32)
+    payload = data[end + 2:]
+    if encoding != "raw":  # vct writes gzip (ref/io/nrrd.cpp); wbits 31 = one gzip member
+        try:
+            payload = zlib.decompress(payload, 31)
+        except zlib.error:
+            return None
+    arr = np.frombuffer(payload, dtype=dtype).astype(np.float32)
     if len(sizes) == 3:
         sizes = [1] + sizes
     c, nx, ny, nz = sizes

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 TEST(BenchCli, WritesBenchJsonWithRatios) {
   const auto dir = test::fresh_dir("bench");
   ASSERT_EQ(test::run_vct("bench --grid 16 --width 32 --height 24 --repeat 1 --pt-spp 1 --raw-rays 100000 --threads 2 "
-                          "--validate-spp 4 --out '" +
+                          "--validate-spp 4 --validate-grid 32 --out '" +
                           dir.string() + "'"),
             0);
   const nlohmann::json j = nlohmann::json::parse(test::slurp(dir / "bench.json"));
@@ -57,6 +57,10 @@ TEST(BenchCli, WritesBenchJsonWithRatios) {
   ASSERT_TRUE(v.contains("phases")) << v.dump();
   EXPECT_EQ(v["settings"]["width"], 32);
   EXPECT_EQ(v["settings"]["spp"], 4);
+  EXPECT_EQ(v["settings"]["grid"], 32);  // --validate-grid, not the bench's own grid
+  // validate's own memory prediction beside its peak (docs/performance.md, "Validate's memory").
+  EXPECT_GT(v["memory"]["predicted_bytes"].get<double>(), 100.0 * (1 << 20));
+  EXPECT_GT(v["memory"]["peak_rss_bytes"].get<double>(), 100.0 * (1 << 20));
   double render = 0.0, other = 0.0;
   // A group's member tasks ran side by side inside the group's time: counted once, as the group.
   for (const auto& ph : v["phases"]["phases"])

@@ -2,7 +2,11 @@
 // and `vct pathtrace` (every AOV and the checkpoint) write the same bytes with --threads 1, 2, 8.
 // 8 threads oversubscribe the 2-core CI machine, which shuffles the order work is done in.
 // The GL build (fixed-point voxels) writes the same bytes under llvmpipe with LP_NUM_THREADS=1, 2, 4.
+// `vct validate` decides the same verdicts and bias and writes the same files with --threads 1, 2
+// (its checks as concurrent tasks) and 4 (one after the other, each on every thread).
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_run_util.h"
 
@@ -44,6 +48,28 @@ TEST(DeterminismCli, PathtraceSameBytesFor1_2_8Threads) {
       ASSERT_GT(first.size(), 3u);
     } else {
       EXPECT_EQ(differences(first, files), "") << t << " threads";
+    }
+  }
+}
+
+TEST(DeterminismCli, ValidateSameVerdictsAndFilesFor1_2_4Threads) {
+  std::map<std::string, std::string> first;
+  nlohmann::json first_json;
+  for (const char* t : {"1", "2", "4"}) {
+    const auto dir = test::fresh_dir(std::string("validate_t") + t);
+    const int rc = test::run_vct(std::string("validate --no-report --width 48 --height 40 --grid 16 --spp 2 --threads ") +
+                                 t + " --out '" + dir.string() + "'");
+    ASSERT_TRUE(rc == 0 || rc == 1) << rc;  // a FAIL verdict is still a verdict to compare
+    const nlohmann::json run = nlohmann::json::parse(test::slurp(dir / "run.json"));
+    const nlohmann::json decided = {{"verdicts", run["verdicts"]}, {"bias", run["bias"]}, {"exit", run["exit_code"]}};
+    const auto files = files_below(dir);
+    if (first.empty()) {
+      first = files, first_json = decided;
+      ASSERT_TRUE(first.count("ref/voxel_radiance.nrrd"));
+      ASSERT_GT(first.size(), 40u);
+    } else {
+      EXPECT_EQ(differences(first, files), "") << t << " threads";
+      EXPECT_EQ(decided, first_json) << t << " threads";
     }
   }
 }

@@ -1,6 +1,9 @@
 // The up-front memory check: hand-computed estimates and the refusal message.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "core/error.h"
 #include "core/memory_budget.h"
 
@@ -178,6 +181,53 @@ TEST(MemoryBudget, ValidateSettingsRefusesHugeImagesOnThisMachine) {
   ASSERT_GT(estimate_memory(s).total(), physical_memory_bytes());
   EXPECT_THROW(validate_settings(s), InputError);
   EXPECT_NO_THROW(validate_settings(Settings{}));
+}
+
+// vct validate: the GL frame beside the reference's render, or the two stage sets with the
+// comparison, whichever holds more; every per-voxel term by hand (validate's defaults: GPU rule,
+// fixed-point reduction, isotropic, one bounce).
+TEST(MemoryBudget, ValidateEstimateHandCount) {
+  Settings s;
+  s.vct.grid = 64;
+  s.vct.voxelizer = Voxelizer::GpuEmulation;
+  s.vct.reduction = Reduction::FixedPoint;
+  s.vct.width = s.vct.height = 100;
+  s.vct.shadow_map_size = 50;
+  s.pt.width = s.pt.height = 100;
+  SceneFootprint scene;
+  scene.triangles = 1000;
+  scene.texture_bytes = 4096;
+  scene.alpha_tested = false;
+  const ValidateMemoryEstimate e = estimate_validate_memory(s, scene);
+  const uint64_t n3 = 64ull * 64 * 64, coarser_mips = 16 * 37449;
+  // A frame's shared stages: radiance 16 B + fragments 4 B per voxel, the coarser mip levels.
+  const uint64_t shared = 20 * n3 + coarser_mips;
+  EXPECT_EQ(e.gl_frame, shared + 16 * n3);  // + the mips' base level the re-trace reads
+  // Both sets: the shared stages twice, and the reference's slack, exactness, occupancy tie,
+  // conservative occupancy and hole map (4 B each).
+  EXPECT_EQ(e.stage_sets, 2 * shared + 20 * n3);
+  EXPECT_EQ(e.judge_scratch, 12 * n3);
+  EXPECT_EQ(e.scene_kept, 160u * 1000 + 2 * 4096);  // the scene twice: as loaded and as exposed
+  EXPECT_EQ(e.ref.total(), estimate_memory(s, scene).total());
+  EXPECT_EQ(e.during_ref(), e.ref.total() + (60ull << 20) + e.gl_frame);
+  EXPECT_EQ(e.during_checks(), e.ref.baseline + e.scene_kept + e.ref.images + e.ref.path_tracer + (150ull << 20) +
+                                   e.gl_frame + e.stage_sets + e.judge_scratch);
+  EXPECT_EQ(e.total(), std::max(e.during_ref(), e.during_checks()));
+  // Without GL only the reference's terms: no GL frame, one set, no comparison.
+  const ValidateMemoryEstimate ref_only = estimate_validate_memory(s, scene, false);
+  EXPECT_EQ(ref_only.gl_frame, 0u);
+  EXPECT_EQ(ref_only.stage_sets, shared + 20 * n3);
+  EXPECT_EQ(ref_only.judge_scratch, 0u);
+  // CAS keeps its two RGBA float bounds as reference stages.
+  s.vct.reduction = Reduction::CasRgba8;
+  EXPECT_EQ(estimate_validate_memory(s, scene).stage_sets, 2 * shared + 52 * n3);
+  // The warning names both phases.
+  testing::internal::CaptureStderr();
+  EXPECT_TRUE(warn_if_memory_short(e, "vct validate", 1 << 20));
+  const std::string warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find("vct validate: warning: this run needs about"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("while the stage sets are compared"), std::string::npos) << warning;
+  EXPECT_FALSE(warn_if_memory_short(e, "vct validate", e.total()));
 }
 
 TEST(MemoryBudget, FormatsBytes) {
