@@ -64,7 +64,7 @@ VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj,
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   VisibilityBuffer vb = empty_visibility(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
-  for_each_centre_fragment(binned, w, h, [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
+  for_each_fragment_at(binned, w, h, vec2(0.5f), [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
     const int row = h - 1 - f.y;
     const size_t i = vb.index(f.x, row);
     if (!(f.depth < vb.depth[i])) return;  // GL_LESS
