@@ -404,7 +404,9 @@ TEST(PrecisionRows, EveryRowNamesTestsThatExist) {
   for (const PrecisionRow& r : precision_table()) {
     const std::string tests = r.test;
     EXPECT_FALSE(tests.empty()) << r.name;
-    if (r.id == Precision::MsaaResolve) EXPECT_EQ(tests, "-") << "msaa-resolve is carried nowhere";
+    if (r.id == Precision::MsaaResolve) {
+      EXPECT_EQ(tests, "-") << "msaa-resolve is carried nowhere";
+    }
     const std::string prefix = "PrecisionRows.";
     for (size_t at = tests.find(prefix); at != std::string::npos; at = tests.find(prefix, at + 1)) {
       size_t end = at + prefix.size();
