@@ -13,68 +13,98 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "2^-8 px per axis (GL_SUBPIXEL_BITS 8: llvmpipe and current GPUs; the driver's value is read at run time)",
      "GL 4.5 §14.5, §14.6 (the spec's minimum is 4 bits); dEQP MIN_SUBPIXEL_BITS",
      "every raster stage's slope term (d32f-depth, interpolated-attribute), raster and light-space alternatives, "
-     "the voxel shading slack's snap, coverage ties"},
+     "the voxel shading slack's snap, coverage ties",
+     "PrecisionRows.SubpixelSnapAdmitsTheSlopeTerm, PrecisionRows.SubpixelSnapBeyondFails (gbuffer.depth)"},
     {P::DepthInterpolation, "depth-interpolation", "window depth interpolated in float (D32F)", 0x1p-14,
      "2^-14 absolute, plus the snap times the depth's slope",
      "GL 4.5 §14.6.1, §13.8 (how z is interpolated is not fixed); 1/8 of the default shadow bias",
-     "shadow_map.N, shadow_map_cube.M, gbuffer.depth (d32f-depth)"},
+     "shadow_map.N, shadow_map_cube.M, gbuffer.depth (d32f-depth)",
+     "PrecisionRows.DepthInterpolationAdmitsItsError, PrecisionRows.DepthInterpolationBeyondFails "
+     "(gbuffer.depth, shadow_map.0)"},
     {P::DepthUnorm, "depth-unorm", "window depth stored as b-bit UNORM (depth24, depth16)", 2.0,
      "2q, q = 1/(2^b - 1): the engine takes either integer neighbour, the reference the nearest",
-     "GL 4.5 §2.3.5.2", "light-space depth stages under a declared shadow_depth_format (depth_quantum_of)"},
+     "GL 4.5 §2.3.5.2", "light-space depth stages under a declared shadow_depth_format (depth_quantum_of)",
+     "PrecisionRows.DepthUnormAndUnorm16AdmitTwoSteps, PrecisionRows.DepthUnormOneFurtherStepFails "
+     "(shadow_map.0, depth16)"},
     {P::AttributeInterpolation, "attribute-interpolation", "perspective-correct attribute interpolation in float",
      0x1p-12, "1e-4 + 2^-12 |r|, plus the snap times the attribute's slope",
-     "GL 4.5 §14.6.1 eq. 14.9 (the arithmetic is not fixed)", "gbuffer.position (interpolated-attribute)"},
+     "GL 4.5 §14.6.1 eq. 14.9 (the arithmetic is not fixed)", "gbuffer.position (interpolated-attribute)",
+     "PrecisionRows.AttributeInterpolationAdmitsItsRelativeError, "
+     "PrecisionRows.AttributeInterpolationBeyondFails (gbuffer.position)"},
     {P::AttributeExtrapolation, "attribute-extrapolation",
      "attributes at a sample or centre outside the triangle (MSAA coverage without centroid)", 0.0,
      "the snapped point's reach 2^-8 sum|l_i| / (1 - 2^-8 G), l the barycentrics at the centre, G their gradients",
      "GL 4.5 §14.6.1, §14.9.3 (non-centroid inputs are evaluated at the pixel centre)",
      "the voxel shading slack (voxel_snap_reach), coverage ties; the camera G-buffer (single-sampled: a centre "
      "outside a triangle is covered only under the snap, within 2^-8 px of its edge): each raster alternative's "
-     "plane and lookups at the four shifts (gbuffer_ties.cpp)"},
+     "plane and lookups at the four shifts (gbuffer_ties.cpp)",
+     "FragmentSlack.SnapReachCoversExtrapolatedAttributes (tests/ref/fragment_slack_test.cpp), "
+     "PrecisionRows.AttributeExtrapolationBeyondTheReach (voxel_snap_reach)"},
     {P::Unorm8, "unorm8", "float to 8-bit UNORM (storage, normal-map texels, display output)", 1.0 / 255.0,
      "one step 1/255: either neighbour (nearest is only recommended)", "GL 4.5 §2.3.5.1",
      "RGBA8 voxel storage (rgba8-quantised, fixed-point + 1/255, cas-rgba8-interval), RGBA8 mips, the normal-map "
-     "texel precision in the slacks, a declared display transform's last step"},
+     "texel precision in the slacks, a declared display transform's last step",
+     "PrecisionRows.Unorm8AdmitsOneStep, PrecisionRows.Unorm8TwoStepsFail (voxel.radiance, rgba8)"},
     {P::Unorm16, "unorm16", "float to 16-bit UNORM", 1.0 / 65535.0, "one step 1/65535: either neighbour",
-     "GL 4.5 §2.3.5.1", "depth16 shadow maps through depth-unorm; no colour stage stores UNORM16"},
+     "GL 4.5 §2.3.5.1", "depth16 shadow maps through depth-unorm; no colour stage stores UNORM16",
+     "PrecisionRows.DepthUnormAndUnorm16AdmitTwoSteps, PrecisionRows.DepthUnormOneFurtherStepFails "
+     "(shadow_map.0, depth16)"},
     {P::HalfFloat, "half-float", "float to binary16 (RGBA16F storage, the running mean)", 0x1p-11,
      "half an ulp (2^-11 relative) rounding to nearest; one ulp under any rounding mode",
-     "GL 4.5 §2.3.4.2", "voxel.radiance (rgba16f-ulp: 2 half-ulps), every mip level, the running-mean interval"},
+     "GL 4.5 §2.3.4.2", "voxel.radiance (rgba16f-ulp: 2 half-ulps), every mip level, the running-mean interval",
+     "PrecisionRows.HalfFloatAdmitsOneUlpPerSide, PrecisionRows.HalfFloatFourUlpsFail (voxel.radiance, rgba16f)"},
     {P::SrgbDecode, "srgb-decode", "8-bit sRGB texel to linear (base colour, emissive textures)", 0.5,
      "half a step of the 8-bit encoding: the decoded value encodes back to its texel (decode(c +- 1/2 / 255)); "
      "llvmpipe measured at most 0.34 of a step (issue 34)",
      "GL 4.5 §8.24 (the formula; its precision is the format's); dEQP/Vulkan CTS: + 4/255 on sRGB lookups "
      "(looser)",
      "gbuffer.albedo, gbuffer.emission (inside texture-8bit-weights' 2^-7 + 2^-7 |r|), voxel.radiance (the voxel "
-     "shading slack's srgb term: base colour and emission shifted +- half a step); image.direct: not carried"},
+     "shading slack's srgb term: base colour and emission shifted +- half a step); image.direct: not carried",
+     "SrgbDecodePrecision.WithinHalfAStepPassesAndFailsWithoutTheTerm, SrgbDecodePrecision.AWholeStepOffFails "
+     "(tests/compare/srgb_decode_precision_test.cpp), GlSrgbPrecision.* (tests/gl/gl_srgb_precision_test.cpp) "
+     "(voxel.radiance)"},
     {P::SrgbEncode, "srgb-encode", "linear to 8-bit sRGB (an engine's display output)", 1.0,
      "one step of the bit depth after the transform (either neighbour)", "GL 4.5 §17.3.9, §2.3.5.1",
-     "image stages a declared display transform names (the bound carried through the transform + one step)"},
+     "image stages a declared display transform names (the bound carried through the transform + one step)",
+     "PrecisionRows.SrgbEncodeAdmitsOneStep, PrecisionRows.SrgbEncodeOneFurtherStepFails (image.final, gamma "
+     "2.2, 8 bits)"},
     {P::FilterWeights, "filter-weights", "bilinear/trilinear weights of a texture lookup", 0x1p-8,
      "8 sub-texel bits per axis and an 8-bit mip blend: per fetch (2 + 1) 2^-9 of the texel range",
      "GL 4.5 §8.14.2 (open); D3D11 functional spec §7.18.16.1; dEQP LookupPrecision uvwBits 8",
      "texture-8bit-weights, normal-map-8bit-weights, filtered-8bit (cone stages), the slacks' texel shift, "
-     "linear PCF's 2^-7 (kLinearCompareWeightStep)"},
+     "linear PCF's 2^-7 (kLinearCompareWeightStep)",
+     "PrecisionRows.FilterWeightsAdmitTheTextureBound, PrecisionRows.FilterWeightsBeyondFails (gbuffer.albedo)"},
     {P::LodDerivatives, "lod-derivatives", "the texture LOD lambda from derivatives", 0x1p-4,
      "every lambda between the approximations of the scale factor rho the spec permits, +- 2^-4 for log2 itself "
      "(llvmpipe's linear-mantissa log2: up to 0.0431 low)",
      "GL 4.5 §8.14.1 (eq. 8.7 and the max-axis approximation; log2's precision is not fixed); dEQP LodPrecision "
      "lodBits 4 (accepted as QualityWarning after lodBits 6)",
-     "gbuffer.texture_slack (texture LOD), the voxel shading slack (voxel_lod)"},
+     "gbuffer.texture_slack (texture LOD), the voxel shading slack (voxel_lod)",
+     "PrecisionRows.LodDerivativesAdmitTheSumApproximation, "
+     "PrecisionRows.LodDerivativesBeyondTheRangeIsNotACandidate (RhoBounds, lod_candidates)"},
     {P::ShadingArithmetic, "shading-arithmetic", "the shared BRDF evaluated in float", 0x1p-6,
      "2^-6 |r| + 2^-10 mean |r| on inputs that carry 2^-7",
-     "GLSL 4.50 §4.7.1 (+ - x correctly rounded; exp, pow 3 + 2|x| ulp)", "image.direct, image.emission (shading-float)"},
+     "GLSL 4.50 §4.7.1 (+ - x correctly rounded; exp, pow 3 + 2|x| ulp)", "image.direct, image.emission "
+     "(shading-float)",
+     "PrecisionRows.ShadingArithmeticAdmitsItsRelativeError, PrecisionRows.ShadingArithmeticBeyondFails "
+     "(image.direct)"},
     {P::DivisionRcpRsqrt, "division-rcp-rsqrt", "x / y, 1 / x, inversesqrt", 2.5,
      "2.5 ulp for division and reciprocal, 2 ulp for inversesqrt (GLSL); 0.5 ulp in C++",
      "GLSL 4.50 §4.7.1; llvmpipe's results differ by CPU vendor (pygfx issues #1318/#1321): within these ulps",
-     "PCF taps that may flip (ndc_error, freedoms/shadow_ties.h), shading-float"},
+     "PCF taps that may flip (ndc_error, freedoms/shadow_ties.h), shading-float",
+     "PrecisionRows.DivisionTermIsInTheNdcMargin (ndc_error); open: "
+     "PrecisionRows.DISABLED_DivisionTwoPointFiveUlpAtHalfIsCovered (the carried 3u|ndc| is below "
+     "2.5 + 0.5 ulp for ndc in [0.5, 1)); no case beyond the margin"},
     {P::Blending, "blending", "additive blending into a float target", 0x1p-24,
      "each add rounded to the target (float: half an ulp, 2^-24 relative)", "GL 4.5 §17.3.8, §2.3.4.1",
-     "image.particles (filtered-8bit: far larger)"},
+     "image.particles (filtered-8bit: far larger)",
+     "PrecisionRows.BlendingRoundingIsAdmitted, PrecisionRows.BlendingBeyondTheFilteredBoundFails "
+     "(image.particles; subsumed by filtered-8bit, so no case fails without it)"},
     {P::MsaaResolve, "msaa-resolve", "a multisampled image resolved to one value per pixel", 0.0,
      "not used: no stage resolves; the voxelization counts its samples itself at the driver's positions "
      "(facts.sample_positions)",
-     "GL 4.5 §18.3.1 (the resolve's weights are implementation-defined)", "-"},
+     "GL 4.5 §18.3.1 (the resolve's weights are implementation-defined)", "-",
+     "-"},
 }};
 
 constexpr bool rows_in_order() {
@@ -96,11 +126,11 @@ double precision(Precision p) { return kRows[size_t(p)].value; }
 
 std::string precision_table_markdown() {
   std::string md =
-      "| conversion | what | allowed error | source | consumed by |\n"
-      "| --- | --- | --- | --- | --- |\n";
+      "| conversion | what | allowed error | source | consumed by | tested by |\n"
+      "| --- | --- | --- | --- | --- | --- |\n";
   for (const PrecisionRow& r : kRows)
     md += "| `" + std::string(r.name) + "` | " + r.conversion + " | " + r.allowed + " | " + cell(r.source) + " | " +
-          cell(r.consumers) + " |\n";
+          cell(r.consumers) + " | " + cell(r.test) + " |\n";
   return md;
 }
 

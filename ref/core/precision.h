@@ -43,6 +43,10 @@ struct PrecisionRow {
   const char* allowed;     // the allowed error in words
   const char* source;      // the spec section or conformance threshold it comes from
   const char* consumers;   // the stages whose bound or freedom carries it, and where
+  // The tests that fail without the row (an error the row allows is admitted only through its
+  // term) and that a GL off by more FAILs (Suite.Case, tests/compare/precision_rows_test.cpp
+  // unless named; "-" where the row is carried nowhere).
+  const char* test;
 };
 
 /// The table, in Precision order.
