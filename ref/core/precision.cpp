@@ -92,9 +92,8 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "2.5 ulp for division and reciprocal, 2 ulp for inversesqrt (GLSL); 0.5 ulp in C++",
      "GLSL 4.50 §4.7.1; llvmpipe's results differ by CPU vendor (pygfx issues #1318/#1321): within these ulps",
      "PCF taps that may flip (ndc_error, freedoms/shadow_ties.h), shading-float",
-     "PrecisionRows.DivisionTermIsInTheNdcMargin (ndc_error); open: "
-     "PrecisionRows.DISABLED_DivisionTwoPointFiveUlpAtHalfIsCovered (the carried 3u|ndc| is below "
-     "2.5 + 0.5 ulp for ndc in [0.5, 1)); no case beyond the margin"},
+     "PrecisionRows.DivisionTermIsInTheNdcMargin, PrecisionRows.DivisionTwoPointFiveUlpAtHalfIsCovered "
+     "(ndc_error: 2 (2.5 + 0.5) u |ndc|, an ulp being up to 2u|x|); no case beyond the margin"},
     {P::Blending, "blending", "additive blending into a float target", 0x1p-24,
      "each add rounded to the target (float: half an ulp, 2^-24 relative)", "GL 4.5 §17.3.8, §2.3.4.1",
      "image.particles (filtered-8bit: far larger)",

@@ -313,7 +313,10 @@ double ndc_error(const mat4& m, const vec3& p, int row, double e_world) {
   const double ndc = std::abs(c_row / c_w);
   double a_row = 0.0, a_w = 0.0;  // how fast clip row and w move per world unit
   for (int j = 0; j < 3; ++j) a_row += std::abs(double(m[j][row])), a_w += std::abs(double(m[j][3]));
-  return 2.0 * kG4 * (s_row + ndc * s_w) / std::abs(c_w) + 3.0 * kU * ndc + (a_row + ndc * a_w) * e_world / std::abs(c_w);
+  // The division: GLSL's 2.5 ulp on one side, C++'s 0.5 on the other (the precision table's
+  // division-rcp-rsqrt row), and one ulp of a float x is up to 2u|x| (x at the bottom of its binade).
+  const double division = 2.0 * (precision(Precision::DivisionRcpRsqrt) + 0.5) * kU * ndc;
+  return 2.0 * kG4 * (s_row + ndc * s_w) / std::abs(c_w) + division + (a_row + ndc * a_w) * e_world / std::abs(c_w);
 }
 
 VisibilityRange light_visibility_range(const ShadowMap& map, const Light& light, const vec3& p,

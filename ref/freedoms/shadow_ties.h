@@ -42,7 +42,7 @@ double lookup_point_margin(const mat4& m, const vec3& p, const vec3& n, const Vc
 /// world point p through world -> clip matrix m: each side's clip components within g4 of the
 /// sum of their terms' magnitudes S (a 4-term dot product, Higham's g_n = n u / (1 - n u),
 /// u = 2^-24; fused or not), the division within 2.5 ulp (GLSL) or 0.5 (C++), so
-/// |d ndc| <= 2 g4 (S_row + |ndc| S_w) / |w| + 3 u |ndc|.
+/// |d ndc| <= 2 g4 (S_row + |ndc| S_w) / |w| + 2 (2.5 + 0.5) u |ndc| (an ulp of x is up to 2u|x|).
 /// With `e_world` > 0, p itself is known only within e_world per axis (a normal-offset lookup
 /// point): + (sum_j |m_row,j| + |ndc| sum_j |m_w,j|) e_world / |w|, the first-order change.
 double ndc_error(const mat4& m, const vec3& p, int row, double e_world = 0.0);

@@ -356,16 +356,16 @@ TEST(PrecisionRows, DivisionTermIsInTheNdcMargin) {
   const double g4 = 4.0 * kU / (1.0 - 4.0 * kU);
   const double without = 2.0 * g4 * (0.75 + 0.75);
   const double margin = ndc_error(mat4(1.0f), vec3(0.75f, 0.0f, 0.0f), 0);
-  EXPECT_DOUBLE_EQ(margin, without + (precision(Precision::DivisionRcpRsqrt) + 0.5) * kU * 0.75);
+  EXPECT_DOUBLE_EQ(margin, without + 2.0 * (precision(Precision::DivisionRcpRsqrt) + 0.5) * kU * 0.75);
   EXPECT_GT(margin, without);
 }
 
-// The reverse, and a finding (reported, not changed here: other engineers own the judge): GLSL's
-// 2.5 ulp of a result in [0.5, 1) is 2.5 x 2^-24 absolute, up to 2x the 2.5 u |ndc| carried, because
-// one ulp is up to 2u |x| (u = 2^-24 is half an ulp at 1). Two evaluations that differ only in their
-// divisions (2.5 ulp + 0.5 ulp at ndc 0.5) lie further apart than the dot products' terms plus the
-// division term allow. Enable once ndc_error carries 2 x (2.5 + 0.5) u |ndc|.
-TEST(PrecisionRows, DISABLED_DivisionTwoPointFiveUlpAtHalfIsCovered) {
+// The reverse, found by these tests: GLSL's 2.5 ulp of a result in [0.5, 1) is 2.5 x 2^-24 absolute,
+// because one ulp is up to 2u |x| (u = 2^-24 is half an ulp at 1). Two evaluations that differ only in their
+// divisions (2.5 ulp + 0.5 ulp at ndc 0.5) lie no further apart than the dot products' terms plus
+// the division term allow: ndc_error carries 2 (2.5 + 0.5) u |ndc| (it carried 3u |ndc|, half of it,
+// until session 15).
+TEST(PrecisionRows, DivisionTwoPointFiveUlpAtHalfIsCovered) {
   const double g4 = 4.0 * kU / (1.0 - 4.0 * kU);
   const double dots = 2.0 * g4 * (0.5 + 0.5);
   const double ulp = 0x1p-24;  // of a float in [0.5, 1)
