@@ -159,6 +159,8 @@ TEST(RasterTies, DepthSpansItsOwnPlaneAtTheShifts) {
       EXPECT_NEAR(g.tie_range.at(x, row, hi), g.depth.at(x, row, 0) + m, 0.05f * m) << x << "," << row;
     }
   EXPECT_GT(checked, 40);
+}
+
 // An alternative carries its own plane under the snap, as the front surface does (issue 34 kind
 // 2: GL's point on a nearly edge-on triangle far along the view ray). A front quad at z = -1 whose
 // left edge runs through the centres of pixel column 10; behind it a tall quad nearly containing
