@@ -105,6 +105,7 @@ nlohmann::json validate_memory_json(const ValidateMemoryEstimate& e) {
           {"predicted", format_bytes(e.total())},
           {"predicted_during_ref_bytes", e.during_ref()},
           {"predicted_during_checks_bytes", e.during_checks()},
+          {"predicted_with_reinjection_bytes", e.with_reinjection()},
           {"predicted_scene_bytes", e.ref.scene},
           {"peak_rss_bytes", peak_rss_bytes()},
           {"peak_rss", format_bytes(peak_rss_bytes())}};
@@ -311,9 +312,10 @@ int run(const ValidateOptions& o) {
   // Predicted with the loaded scene before anything renders; a run that will not fit is warned
   // about now, not found out in the allocator (docs/performance.md, "Validate's memory").
   const ValidateMemoryEstimate predicted = estimate_validate_memory(s, scene_footprint(scene));
-  std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  memory predicted %s  -> %s\n",
+  std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  memory predicted %s (%s if voxel.radiance is "
+              "re-judged on GL's own shadow maps)  -> %s\n",
               scene.source.c_str(), s.vct.width, s.vct.height, s.vct.grid, s.pt.spp, thread_count(),
-              format_bytes(predicted.total()).c_str(), out.c_str());
+              format_bytes(predicted.total()).c_str(), format_bytes(predicted.with_reinjection()).c_str(), out.c_str());
   std::fflush(stdout);
   warn_if_memory_short(predicted, "vct validate");
 

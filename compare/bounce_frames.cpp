@@ -34,9 +34,7 @@ std::string number(double x) {
 // The test's side of one frame: its header (storage, reduction, facts), the frame's base level and
 // its fragment counts (the voxelization is the same in every frame).
 StageSet test_frame_set(const StageSet& test_set, const Volume& frame) {
-  StageSet ts = test_set;
-  ts.images.clear();
-  ts.volumes.clear();
+  StageSet ts = stage_set_without_stages(test_set);  // no copy of the stages it drops
   ts.volumes[st::kVoxelRadiance] = frame;
   const auto fragments = test_set.volumes.find(st::kVoxelFragments);
   if (fragments != test_set.volumes.end()) ts.volumes[st::kVoxelFragments] = fragments->second;

@@ -6,6 +6,7 @@
 #include "compare/bounce_frames.h"
 #include "compare/tie_range.h"
 #include "compare/tolerance.h"
+#include "compare/volume_judges.h"
 #include "freedoms/coverage_ties.h"
 #include "freedoms/direct_ties.h"
 #include "freedoms/voxel_freedoms.h"
@@ -328,14 +329,23 @@ void judge_radiance_on_test_inputs(Report& end_to_end, const Scene& scene, const
   std::optional<VoxelGrid> grid;
   if (bounce_input || shading_ties) grid = reference_voxels_on_test_inputs(scene, test, s);
   if (grid) {
-    FrameResult r = test;
+    // Only voxel.radiance is taken from this judgement, and its judge reads the reference's voxel
+    // stages (radiance, fragments, shading slack, exactness, CAS bounds: all the grid's) and the
+    // test set's header, radiance and fragments; so the reference side is the grid alone, as in
+    // compare/bounce_frames.cpp, not a copy of the test's frame judged stage by stage again
+    // (demo_room at 256^3: ~1.3 GB of copies and every other stage's judgement; docs/performance.md).
+    FrameResult r;
     r.backend = "ref-on-" + test.backend + "-voxel-inputs";
+    r.facts = test.facts;  // the reduction the test declares (stage_set_header reads it)
     r.voxels = std::move(*grid);
-    const Report iso = compare_stage_sets(stage_set_from_frame(r, s), test_set, opt, voxels_on_own_inputs_context(s));
-    const StageVerdict* v = find_stage(iso, stage_names::kVoxelRadiance);
+    const StageSet reference = stage_set_from_frame(std::move(r), s);
+    const char* radiance = stage_names::kVoxelRadiance;
+    if (!reference.volumes.count(radiance) || !test_set.volumes.count(radiance)) return;  // missing: e2e stands
+    Taint taint;
+    const StageVerdict v = compare_radiance(reference, test_set, opt, voxels_on_own_inputs_context(s), taint);
     for (StageVerdict& e : end_to_end.stages)
-      if (v && e.stage == stage_names::kVoxelRadiance && v->verdict != Verdict::Missing)
-        replace_with_isolated(e, *v,
+      if (e.stage == radiance && v.verdict != Verdict::Missing)
+        replace_with_isolated(e, v,
                               bounce_input ? "the test's own shadow maps and bounce input" : "the test's own shadow maps");
   }
 }

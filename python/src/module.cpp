@@ -218,7 +218,7 @@ void bind_functions(nb::module_& m) {
   m.def("read_image", [](const std::string& path) { return image_array(read_image(path)); }, "path"_a,
         "Any image OpenImageIO reads (EXR, PNG, ...) as H x W x C float32 (row 0 = top).");
   m.def("read_volume", [](const std::string& path) { return volume_array(read_nrrd(path)); }, "path"_a,
-        "A raw NRRD volume as D x H x W x C float32.");
+        "A NRRD volume (raw or gzip) as D x H x W x C float32.");
   m.def("read_path_trace", [](const std::string& dir) {
     PathTraceResult r;
     r.aovs = cmp::read_pt_aovs(dir);

@@ -205,13 +205,14 @@ bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t ava
 }
 
 bool warn_if_memory_short(const ValidateMemoryEstimate& e, const char* who, uint64_t available) {
-  if (available == 0 || e.total() <= available) return false;
+  if (available == 0 || e.with_reinjection() <= available) return false;
   std::fprintf(stderr,
                "%s: warning: this run needs about %s (while the reference renders beside the GL frame %s; while "
-               "the stage sets are compared %s; scene %s), but this machine has %s\n",
+               "the stage sets are compared %s, %s where voxel.radiance is re-judged on GL's own shadow maps; "
+               "scene %s), but this machine has %s\n",
                who, format_bytes(e.total()).c_str(), format_bytes(e.during_ref()).c_str(),
-               format_bytes(e.during_checks()).c_str(), format_bytes(e.ref.scene).c_str(),
-               format_bytes(available).c_str());
+               format_bytes(e.during_checks()).c_str(), format_bytes(e.with_reinjection()).c_str(),
+               format_bytes(e.ref.scene).c_str(), format_bytes(available).c_str());
   return true;
 }
 

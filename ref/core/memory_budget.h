@@ -72,6 +72,14 @@ struct ValidateMemoryEstimate {
            judge_scratch;
   }
   uint64_t total() const { return during_ref() > during_checks() ? during_ref() : during_checks(); }
+  /// Where voxel.radiance is re-judged on the test's own shadow maps (only when its end-to-end
+  /// verdict counted shading ties: not known before the comparison), the reference's voxelization
+  /// and injection run again beside the sets (compare/isolated_stages.h, VoxelInjection): at most
+  /// the reference frame's voxel peak once more.
+  uint64_t with_reinjection() const {
+    const uint64_t again = gl_frame > 0 ? during_checks() + ref.voxels : 0;
+    return again > total() ? again : total();
+  }
 };
 
 /// `gl`: whether the GL backend will run (without it only the reference's terms count).
