@@ -3,7 +3,9 @@
 // for what it shares with it -- shadow map, G-buffer, voxelization and light injection with the
 // oracle's 3x3 PCF -- and runs its own passes after it (GlOptions::extra_passes) where it differs:
 //  - its own direct light: |n.v| in the BRDF (sh::view_cosine NV_ABS) and its own frame PCF, 4x4
-//    taps off centre at {-3, -2, -1, 0} texels given as UV offsets ((uv + o) * size, nearest);
+//    taps off centre at {-3, -2, -1, 0} texels given as UV offsets, each the map's depth filtered
+//    by the driver (GL_LINEAR on a plain sampler2DArray, CLAMP_TO_BORDER with border depth 0) and
+//    compared once (filter then compare, a shadowed border);
 //  - its own isotropic mips, a plain box filter of the 2x2x2 children (x 1;
 //    VCT_TEST_ENGINE_MIP_SCALE=s multiplies each level by s, the source design's x1.9 bug);
 //  - its own composite and display: our final with its direct light in place of ours, then
@@ -71,9 +73,10 @@ void main() {
 )";
 
 // The engine's direct light on our G-buffer, lights and shadow map (lights.glsl, gbuffer_read.glsl).
-// Its PCF: the lookup point moved by our normal offset with its own taps' reach (u_pcf_kernel 7:
-// 3.5 texels, the reference's pcf_reach of taps up to 3 texels away), then 16 nearest taps at
-// floor((uv + o) * size), clamped to the edge; outside the frustum lit.
+// Its PCF: the lookup point moved by our normal offset with its own taps' reach (u_pcf_kernel 8:
+// 4 texels, the reference's pcf_reach of linear taps up to 3 texels away), then 16 taps at uv + o,
+// each the driver's bilinear blend of the four depths around it (the sampler object bound to unit
+// 4) compared once with the point's depth; outside the frustum lit.
 const char* const kDirectShader = R"(
 #include "lights.glsl"
 #include "gbuffer_read.glsl"
@@ -90,10 +93,8 @@ float engine_visibility(int i, vec3 p, vec3 n) {
   float z = ndc.z * 0.5f + 0.5f;
   vec2 uv = ndc.xy * 0.5f + 0.5f;
   int lit = 0;
-  for (int k = 0; k < 16; ++k) {
-    ivec2 t = clamp(ivec2(floor((uv + u_engine_taps[k]) * float(u_shadow_size))), ivec2(0), ivec2(u_shadow_size - 1));
-    if (z <= texelFetch(u_shadow_maps, ivec3(t, layer), 0).r + u_shadow_bias) ++lit;
-  }
+  for (int k = 0; k < 16; ++k)
+    if (z <= texture(u_shadow_maps, vec3(uv + u_engine_taps[k], float(layer))).r + u_shadow_bias) ++lit;
   return float(lit) / 16.0f;
 }
 
@@ -196,9 +197,20 @@ GLuint engine_direct(vct::gl::GlFrame& f) {
   glDisable(GL_BLEND);
   prog.use();
   f.geo.set_lights(prog, f.s, f.layer_view_proj, f.light_layer);
-  prog.set("u_pcf_kernel", 7);  // the normal offset's reach: 3.5 texels, its taps'
+  prog.set("u_pcf_kernel", 8);  // the normal offset's reach: 4 texels, its linear taps'
   for (int k = 0; k < 16; ++k) prog.set(("u_engine_taps[" + std::to_string(k) + "]").c_str(), vct::vec2(kTapUv[k % 4], kTapUv[k / 4]));
   glBindTextureUnit(4, f.shadow_maps);
+  // Its sampler: depths filtered bilinearly (no compare), a border of depth 0 read as shadowed.
+  GLuint sampler = 0;
+  glCreateSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  const float border[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
+  glBindSampler(4, sampler);
   for (GLuint i = 0; i < 6; ++i) glBindTextureUnit(12 + i, f.gbuffer[i]);
   prog.set("u_camera_position", f.scene.camera.position);
   prog.set("u_camera_forward", glm::normalize(f.scene.camera.forward));
@@ -208,6 +220,7 @@ GLuint engine_direct(vct::gl::GlFrame& f) {
   glBindVertexArray(f.empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindSampler(4, 0);
   glPopDebugGroup();
   return out;
 }
@@ -245,13 +258,17 @@ nlohmann::json capture_map(const vct::FrameResult& r, const vct::Settings& s, in
   };
   for (int level = 1; level < levels; ++level)
     stages["mip.iso." + std::to_string(level)] = {{"resource", "engine.voxels"}, {"mip", level}, {"event", "engine.mips"}};
-  // Its conventions as settings: |n.v|; the frame's taps in UV and the voxelizer's own, the
-  // oracle's 3x3 square (our GL frame injects with it) written in UV.
-  const float square[3] = {-1.0f / 256.0f, 0.0f, 1.0f / 256.0f};
-  const nlohmann::json settings = {{"n_dot_v", "abs"},           {"voxelizer", "gpu"},
+  // Its conventions as settings: |n.v|; the frame's PCF; the voxelizer's is the oracle's (our GL
+  // frame injects with it).
+  const nlohmann::json settings = {{"n_dot_v", "abs"},
+                                   {"voxelizer", "gpu"},
                                    {"shadow_map_size", s.vct.shadow_map_size},
-                                   {"pcf_tap_unit", "uv"},       {"pcf_taps", tap_list(kTapUv, 4)},
-                                   {"voxel_pcf_taps", tap_list(square, 3)}};
+                                   {"shadow_compare", "linear"},
+                                   {"shadow_filter_order", "filter_then_compare"},
+                                   {"pcf_tap_unit", "uv"},
+                                   {"pcf_taps", tap_list(kTapUv, 4)},
+                                   {"shadow_border", "shadowed"},
+                                   {"voxel_pcf", "oracle"}};
   return {{"format", "vct-capture-map"},
           {"version", 1},
           {"rows", "bottom_first"},

@@ -1,8 +1,9 @@
 // The issue 39 "Done when": a small engine with its own conventions (tests/capture/test_engine.cpp:
 // |n.v|, its own box-filter mips, a Reinhard + gamma 2.2 display in RGBA8) captured with RenderDoc,
 // imported with the map it writes, its manifest turned into the reference's settings
-// (config-from-manifest) and judged: no FAIL with its conventions declared (its own frame PCF, UV
-// taps off centre, passes image.direct with 0 pixels beyond the bound); its PCF left undeclared
+// (config-from-manifest) and judged: no FAIL with its conventions declared (its own frame PCF --
+// UV taps off centre, the driver's filtered depth compared once, a shadowed border -- passes
+// image.direct); its PCF left undeclared
 // FAILs image.direct first; with a bug injected (each mip level x1.9, VCT_TEST_ENGINE_MIP_SCALE)
 // it FAILs first at mip.iso.1. Skipped, with the
 // reason, without RenderDoc, GL, or under a sanitizer (import_capture_cli_test.cpp says why).
@@ -59,7 +60,8 @@ test::VctOutput capture_and_judge(const fs::path& program, const fs::path& dir, 
 test::VctOutput judge_without_pcf(const fs::path& dir) {
   nlohmann::json config;
   std::ifstream(dir / "config.json") >> config;
-  for (const char* key : {"pcf_taps", "pcf_tap_unit", "voxel_pcf_taps"}) config["vct"].erase(key);
+  for (const char* key : {"pcf_taps", "pcf_tap_unit", "shadow_compare", "shadow_filter_order", "shadow_border", "voxel_pcf"})
+    config["vct"].erase(key);
   std::ofstream(dir / "config_no_pcf.json") << config.dump();
   const auto ref = test::run_vct_captured("render --backend ref --config " + q(dir / "config_no_pcf.json") +
                                           " --facts-from " + q(dir / "imported") + " --dump --out " + q(dir / "ref_no_pcf"));
