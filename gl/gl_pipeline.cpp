@@ -132,6 +132,7 @@ FrameResult render_gl_frame(GlContext& context, const Scene& scene, const Settin
     direct_pass(f);
     indirect_pass(f);
     particle_pass(f);
+    if (options.extra_passes) options.extra_passes(f);
     label_frame_textures(f);
     glFinish();
     if (capture) capture->end();

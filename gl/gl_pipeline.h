@@ -4,6 +4,7 @@
 // context, std::runtime_error on shader or GL errors (naming the shader / the call site).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "core/settings.h"
@@ -13,6 +14,7 @@
 namespace vct::gl {
 
 class GlContext;
+struct GlFrame;
 
 /// How the GL frame runs, apart from the VCT settings both backends share.
 struct GlOptions {
@@ -21,6 +23,9 @@ struct GlOptions {
   // Whether the frame brackets its own RenderDoc capture (gl_renderdoc.h); false for a program
   // that renders its own passes after it in one capture (tests/capture/test_engine.cpp).
   bool renderdoc_capture = true;
+  // Passes of a program that embeds the frame, run after ours on the frame's textures (gl_frame.h)
+  // inside the same capture: tests/capture/test_engine.cpp's own direct light and display.
+  std::function<void(GlFrame&)> extra_passes;
 };
 
 /// What the GL frame refuses, found without a context (vct::InputError): more lights than the

@@ -89,12 +89,16 @@ ProgramBuilder::ProgramBuilder(const std::string& fault) {
   defines_ = "#define VCT_FAULT_" + upper + " 1\n";
 }
 
-std::string assemble_shader(const std::string& file, const std::string& defines) {
-  std::vector<std::string> seen{file};
+std::string assemble_source(const std::string& name, const std::string& text, const std::string& defines) {
+  std::vector<std::string> seen{name};
   // "#line 1 1" makes the driver's line numbers count from the top of the shader file itself
   // (source string 1), after the shared header (source string 0).
   return "#version 450\n#define VCT_GLSL 1\n" + defines + "#line 1 0\n" + embedded("vct_shared.h") + "\n#line 1 1\n" +
-         expand_includes(file, embedded(file), seen, 0);
+         expand_includes(name, text, seen, 0);
+}
+
+std::string assemble_shader(const std::string& file, const std::string& defines) {
+  return assemble_source(file, embedded(file), defines);
 }
 
 ShaderSource shader_file(const std::string& file, const std::string& defines) {

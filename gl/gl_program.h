@@ -26,6 +26,10 @@ struct ShaderSource {
 /// includes). `defines` is whole lines, e.g. "#define VCT_FAULT_WRONG_MIP 1\n".
 std::string assemble_shader(const std::string& file, const std::string& defines = "");
 
+/// The same for a program's own shader text `text` (its `#include "x"` lines name embedded files):
+/// a program that embeds the frame writes its own passes with our includes (tests/capture).
+std::string assemble_source(const std::string& name, const std::string& text, const std::string& defines = "");
+
 /// Source for `file`, with its stage guessed from the extension (.vert/.geom/.frag/.comp).
 ShaderSource shader_file(const std::string& file, const std::string& defines = "");
 

@@ -58,6 +58,15 @@ std::vector<vec2> pcf_tap_offsets(const VctSettings& settings) {
 VctSettings voxel_pass_settings(const VctSettings& settings) {
   VctSettings out = settings;
   if (!settings.voxel_pcf_taps.empty()) out.pcf_taps = settings.voxel_pcf_taps;
+  if (settings.voxel_pcf == VoxelPcf::Oracle) {
+    const VctSettings oracle;
+    out.pcf_taps = oracle.pcf_taps;
+    out.shadow_compare = oracle.shadow_compare;
+    out.shadow_filter_order = oracle.shadow_filter_order;
+    out.pcf_tap_unit = oracle.pcf_tap_unit;
+    out.pcf_tap_scale = oracle.pcf_tap_scale;
+    out.shadow_border = oracle.shadow_border;
+  }
   return out;
 }
 

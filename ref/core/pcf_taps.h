@@ -22,7 +22,9 @@ std::vector<vec2> parse_pcf_taps(const std::string& text, const std::string& nam
 std::vector<vec2> pcf_tap_offsets(const VctSettings& settings);
 
 /// The settings the voxelizer's lookups (light injection, voxel.radiance, and its freedoms) run
-/// with (issue 39): `settings` with pcf_taps replaced by voxel_pcf_taps where one is declared.
+/// with (issue 39): `settings` with pcf_taps replaced by voxel_pcf_taps where one is declared, and
+/// with voxel_pcf = oracle the oracle's PCF (the pcf_kernel square, nearest, texel, unscaled,
+/// clamped to edge) whatever the frame declares.
 /// Taken once per stage (a copy), not per fragment.
 VctSettings voxel_pass_settings(const VctSettings& settings);
 

@@ -132,6 +132,8 @@ void validate_settings(const Settings& s) {
           "shadow_near must be below shadow_far");
   (void)parse_pcf_taps(s.vct.pcf_taps);  // throws for a malformed tap list
   (void)parse_pcf_taps(s.vct.voxel_pcf_taps, "voxel_pcf_taps");
+  require(s.vct.voxel_pcf == VoxelPcf::Same || s.vct.voxel_pcf_taps.empty(),
+          "voxel_pcf_taps needs voxel_pcf = same (with oracle the voxelizer runs the pcf_kernel square)");
   // The normal offset is derived for a footprint fixed in texels (stages/shadow_map.h,
   // normal_offset_per_w); taps that shrink with 1/w have no such footprint.
   require(s.vct.pcf_tap_scale == PcfTapScale::None || s.vct.shadow_normal_offset == 0.0f,

@@ -52,6 +52,10 @@ enum class PcfTapScale { None, InvW };
 // or 0 (shadowed: the source design's border colour). A cube map has no border (GL 4.5 section
 // 8.13: seamless filtering reads the neighbouring face).
 enum class ShadowBorder { Clamp, Lit, Shadowed };
+// The voxelizer's PCF (issue 39): the declared one, with voxel_pcf_taps for its taps (same), or
+// the oracle's own whatever the frame declares -- the pcf_kernel square, nearest, in texels,
+// clamped to edge (oracle): an engine whose voxelizer uses a plain kernel and whose frame does not.
+enum class VoxelPcf { Same, Oracle };
 // How a shadow map stores depth: float (ours), or 24/16-bit UNORM -- an engine's depth texture
 // format (issue 21); the reference quantises its window depth as GL 4.5 section 2.3.5.2 converts.
 enum class ShadowDepthFormat { Depth32f, Depth24, Depth16 };
@@ -112,6 +116,7 @@ struct VctSettings {
   PcfTapUnit pcf_tap_unit = PcfTapUnit::Texel;
   PcfTapScale pcf_tap_scale = PcfTapScale::None;
   std::string voxel_pcf_taps;
+  VoxelPcf voxel_pcf = VoxelPcf::Same;
   ShadowBorder shadow_border = ShadowBorder::Clamp;
   ShadowDepthFormat shadow_depth_format = ShadowDepthFormat::Depth32f;
   // An engine's light matrices (issue 21; core/light_matrices.h): per light, world -> clip as 16
@@ -241,6 +246,7 @@ std::string to_string(ShadowFilterOrder o);
 std::string to_string(PcfTapUnit u);
 std::string to_string(PcfTapScale s);
 std::string to_string(ShadowBorder b);
+std::string to_string(VoxelPcf v);
 std::string to_string(ShadowDepthFormat f);
 std::string to_string(ConeTangentFrame f);
 std::string to_string(IndirectFresnel f);

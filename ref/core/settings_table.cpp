@@ -132,6 +132,12 @@ const std::vector<std::pair<ShadowBorder, const char*>>& enum_names() {
 }
 
 template <>
+const std::vector<std::pair<VoxelPcf, const char*>>& enum_names() {
+  static const std::vector<std::pair<VoxelPcf, const char*>> m{{VoxelPcf::Same, "same"}, {VoxelPcf::Oracle, "oracle"}};
+  return m;
+}
+
+template <>
 const std::vector<std::pair<ShadowDepthFormat, const char*>>& enum_names() {
   static const std::vector<std::pair<ShadowDepthFormat, const char*>> m{
       {ShadowDepthFormat::Depth32f, "depth32f"}, {ShadowDepthFormat::Depth24, "depth24"},
@@ -313,6 +319,7 @@ std::string to_string(ShadowFilterOrder o) { return enum_name(o); }
 std::string to_string(PcfTapUnit u) { return enum_name(u); }
 std::string to_string(PcfTapScale s) { return enum_name(s); }
 std::string to_string(ShadowBorder b) { return enum_name(b); }
+std::string to_string(VoxelPcf v) { return enum_name(v); }
 std::string to_string(NdotV v) { return enum_name(v); }
 int nv_mode(NdotV v) { return v == NdotV::Abs ? sh::NV_ABS : v == NdotV::Clamp ? sh::NV_CLAMP : sh::NV_ZERO; }
 std::string to_string(ShadowDepthFormat f) { return enum_name(f); }
@@ -336,6 +343,7 @@ const std::vector<SettingField<VctSettings>>& vct_setting_fields() {
     choice("shadow_compare", &V::shadow_compare, "a PCF tap's compare: its texel (nearest) or GL LINEAR's bilinear weighting of 4 compares"),
     field("pcf_taps", &V::pcf_taps, any(), "PCF taps as offsets \"dx,dy dx,dy ...\" in pcf_tap_unit (empty = the pcf_kernel square); the frame's, and the voxelizer's unless voxel_pcf_taps is given"),
     field("voxel_pcf_taps", &V::voxel_pcf_taps, any(), "the voxelizer's (light injection's) PCF taps, as pcf_taps (empty = pcf_taps); reference only"),
+    choice("voxel_pcf", &V::voxel_pcf, "the voxelizer's PCF: the declared one with voxel_pcf_taps (same), or the oracle's pcf_kernel square, nearest, texel, clamped (oracle) whatever the frame declares"),
     choice("shadow_filter_order", &V::shadow_filter_order, "with shadow_compare = linear: compare the four texels then weight (compare_then_filter, a shadow sampler) or weight the four depths then compare once (filter_then_compare, a plain sampler2D); reference only"),
     choice("pcf_tap_unit", &V::pcf_tap_unit, "unit of the PCF tap offsets: texels, or texture coordinates (uv, x the map size); reference only"),
     choice("pcf_tap_scale", &V::pcf_tap_scale, "tap offsets as given (none) or divided by the light-clip w (inv_w: added before the projective divide); needs shadow_normal_offset = 0; reference only"),

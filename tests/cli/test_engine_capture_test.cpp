@@ -1,14 +1,20 @@
 // The issue 39 "Done when": a small engine with its own conventions (tests/capture/test_engine.cpp:
 // |n.v|, its own box-filter mips, a Reinhard + gamma 2.2 display in RGBA8) captured with RenderDoc,
 // imported with the map it writes, its manifest turned into the reference's settings
-// (config-from-manifest) and judged: no FAIL with its conventions declared; with a bug injected
-// (each mip level x1.9, VCT_TEST_ENGINE_MIP_SCALE) it FAILs first at mip.iso.1. Skipped, with the
+// (config-from-manifest) and judged: no FAIL with its conventions declared (its own frame PCF --
+// UV taps off centre, the driver's filtered depth compared once, a shadowed border -- passes
+// image.direct); its PCF left undeclared
+// FAILs image.direct first; with a bug injected (each mip level x1.9, VCT_TEST_ENGINE_MIP_SCALE)
+// it FAILs first at mip.iso.1. Skipped, with the
 // reason, without RenderDoc, GL, or under a sanitizer (import_capture_cli_test.cpp says why).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_run_util.h"
 
@@ -50,6 +56,19 @@ test::VctOutput capture_and_judge(const fs::path& program, const fs::path& dir, 
   return test::run_vct_captured("compare " + q(dir / "ref") + " " + q(dir / "imported"));
 }
 
+// The same capture judged against a reference rendered without the engine's PCF settings.
+test::VctOutput judge_without_pcf(const fs::path& dir) {
+  nlohmann::json config;
+  std::ifstream(dir / "config.json") >> config;
+  for (const char* key : {"pcf_taps", "pcf_tap_unit", "shadow_compare", "shadow_filter_order", "shadow_border", "voxel_pcf"})
+    config["vct"].erase(key);
+  std::ofstream(dir / "config_no_pcf.json") << config.dump();
+  const auto ref = test::run_vct_captured("render --backend ref --config " + q(dir / "config_no_pcf.json") +
+                                          " --facts-from " + q(dir / "imported") + " --dump --out " + q(dir / "ref_no_pcf"));
+  if (ref.exit_code != 0) return {-1, "", "render: " + ref.err};
+  return test::run_vct_captured("compare " + q(dir / "ref_no_pcf") + " " + q(dir / "imported"));
+}
+
 TEST(TestEngineCapture, DeclaredConventionsPassAndAMipBugFailsAtMipIso1) {
   if (const std::string why = why_no_capture(); !why.empty()) GTEST_SKIP() << why;
   const fs::path program = fs::path(VCT_BINARY).parent_path() / "test_engine";
@@ -61,6 +80,11 @@ TEST(TestEngineCapture, DeclaredConventionsPassAndAMipBugFailsAtMipIso1) {
   const auto clean = capture_and_judge(program, root / "clean", "");
   ASSERT_NE(clean.exit_code, -1) << clean.err;
   EXPECT_EQ(clean.exit_code, 0) << clean.out;
+  EXPECT_NE(clean.out.find("pass image.direct"), std::string::npos) << clean.out;
+  const auto undeclared = judge_without_pcf(root / "clean");
+  ASSERT_NE(undeclared.exit_code, -1) << undeclared.err;
+  EXPECT_EQ(undeclared.exit_code, 1) << undeclared.out;
+  EXPECT_NE(undeclared.out.find("first failing stage: image.direct"), std::string::npos) << undeclared.out;
   fs::create_directories(root / "mip19");
   const auto bug = capture_and_judge(program, root / "mip19", "VCT_TEST_ENGINE_MIP_SCALE=1.9");
   ASSERT_NE(bug.exit_code, -1) << bug.err;

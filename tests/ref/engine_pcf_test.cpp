@@ -116,6 +116,24 @@ TEST(EnginePcf, VoxelPassTakesItsOwnTaps) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("voxel_pcf_taps"), std::string::npos) << e.what();
   }
+  // voxel_pcf = oracle: the voxelizer runs the oracle's PCF whatever the frame declares.
+  VctSettings framed = one_tap("-0.01,0");
+  framed.shadow_compare = ShadowCompare::Linear;
+  framed.shadow_filter_order = ShadowFilterOrder::FilterThenCompare;
+  framed.pcf_tap_unit = PcfTapUnit::Uv;
+  framed.shadow_border = ShadowBorder::Shadowed;
+  framed.voxel_pcf = VoxelPcf::Oracle;
+  const VctSettings v = voxel_pass_settings(framed);
+  EXPECT_EQ(v.pcf_taps, "");
+  EXPECT_EQ(v.shadow_compare, ShadowCompare::Nearest);
+  EXPECT_EQ(v.shadow_filter_order, ShadowFilterOrder::CompareThenFilter);
+  EXPECT_EQ(v.pcf_tap_unit, PcfTapUnit::Texel);
+  EXPECT_EQ(v.shadow_border, ShadowBorder::Clamp);
+  EXPECT_EQ(tap_positions(10.0f, 10.0f, v, 64, 1.0f).size(), 9u);  // the 3x3 square
+  Settings both;
+  both.vct.voxel_pcf = VoxelPcf::Oracle;
+  both.vct.voxel_pcf_taps = "0,0";
+  EXPECT_THROW(validate_settings(both), InputError);
   const Settings t = with_setting(Settings{}, "shadow_filter_order", "filter_then_compare", "--set");
   EXPECT_EQ(t.vct.shadow_filter_order, ShadowFilterOrder::FilterThenCompare);
   EXPECT_EQ(with_setting(Settings{}, "shadow_border", "shadowed", "--set").vct.shadow_border, ShadowBorder::Shadowed);
