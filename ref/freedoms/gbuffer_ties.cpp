@@ -127,32 +127,40 @@ void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const Win
     }
 }
 
+// Pixel (x, row) of `other` joins the range: its values, its negated normal where its facing ties,
+// and its own freedoms, as the front surface's: its plane and its lookups under the snap
+// (docs/compare.md, "Raster alternatives", "An alternative's own freedoms").
+void widen_by_alternative(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
+                          const VisibilityBuffer& other, int x, int row, GBuffer& g) {
+  const size_t i = other.index(x, row);
+  const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
+  widen(g.tie_range, x, row, alt);
+  if (other.triangle[i] < 0) return;  // the clear values: nothing looked up
+  if (other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
+  widen_by_plane_at_shifts(scene, view_proj, wb, x, row, uint32_t(other.triangle[i]), other.bary[i], g);
+  widen_by_texture_slack(scene, view_proj, wb, other, x, row, alt, g);
+}
+
 void widen_by(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, const VisibilityBuffer& other,
               GBuffer& g) {
   const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
-    for (int x = 0; x < vb.width; ++x) {
-      const size_t i = vb.index(x, row);
-      if (other.triangle[i] == vb.triangle[i]) continue;  // same surface (or empty) there
-      const GBufferSample alt = sample_of(scene, view_proj, other, x, row);
-      widen(g.tie_range, x, row, alt);
-      if (other.triangle[i] < 0) continue;  // the clear values: nothing looked up
-      if (other.facing_tie[i]) widen(g.tie_range, x, row, negated_normal(alt));
-      // The alternative's own freedoms, as the front surface's: its plane and its lookups under
-      // the snap (docs/compare.md, "Raster alternatives", "An alternative's own freedoms").
-      widen_by_plane_at_shifts(scene, view_proj, wb, x, row, uint32_t(other.triangle[i]), other.bary[i], g);
-      widen_by_texture_slack(scene, view_proj, wb, other, x, row, alt, g);
-    }
+    for (int x = 0; x < vb.width; ++x)
+      if (other.triangle[vb.index(x, row)] != vb.triangle[vb.index(x, row)])  // else the same surface (or empty)
+        widen_by_alternative(scene, view_proj, wb, other, x, row, g);
   });
 }
 
 // Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface, masks ignored, may pass or
-// fail its alpha test in a correct GL, the other outcome is admissible (raster_alternatives.h).
+// fail its alpha test in a correct GL, the other outcome is admissible (raster_alternatives.h),
+// with its own freedoms as every alternative (hunt seed 660: a masked, textured flip whose albedo
+// lay in its own texture slack, not at its centre value).
 void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
   const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
   parallel_rows(vb.height, [&](int row) {
     for (int x = 0; x < vb.width; ++x)
-      if (flips.may_flip[vb.index(x, row)]) widen(g.tie_range, x, row, sample_of(scene, view_proj, flips.surface, x, row));
+      if (flips.may_flip[vb.index(x, row)]) widen_by_alternative(scene, view_proj, wb, flips.surface, x, row, g);
   });
 }
 
