@@ -36,11 +36,15 @@ void for_each_fragment_at(const BinnedTriangles& binned, int w, int h, vec2 samp
   });
 }
 
-// The front-most fragment at each pixel centre that a correct GL may keep: an alpha-tested
-// fragment the reference cuts away is skipped only where its test cannot flip. Layers in front
-// that are cut away for certain (a leaf's transparent corner over another leaf) do not hide a
-// tie behind them. Rasterized as render_visibility (bands, triangles in index order).
-VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
+// Which alpha-tested fragments a front-most search keeps: every one a correct GL may keep (a
+// fragment the reference cuts away is skipped only where its test cannot flip), or only those no
+// correct GL discards (passing, and no flip).
+enum class AlphaKeep { MayPass, SurelyPasses };
+
+// The front-most fragment at each pixel centre that `keep` keeps. Layers in front that are cut
+// away for certain (a leaf's transparent corner over another leaf) do not hide a tie behind them.
+// Rasterized as render_visibility (bands, triangles in index order).
+VisibilityBuffer front_most(const Scene& scene, const mat4& view_proj, int w, int h, AlphaKeep keep) {
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   VisibilityBuffer vb = empty_visibility(w, h);
   const WindowBarycentrics wb(view_proj, w, h);
@@ -48,9 +52,13 @@ VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_pro
     const int row = h - 1 - f.y;
     const size_t i = vb.index(f.x, row);
     if (!(f.depth < vb.depth[i])) return;  // GL_LESS
-    if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z) &&
-        !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary))
-      return;
+    if (triangle_alpha_tested(scene, t.source)) {
+      const bool cut = surface_masked(scene, t.source, f.bary.y, f.bary.z);
+      const bool skip = keep == AlphaKeep::MayPass
+                            ? cut && !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary)
+                            : cut || alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary);
+      if (skip) return;
+    }
     store_fragment(vb, i, t, f);
   });
   return vb;
@@ -58,22 +66,8 @@ VisibilityBuffer front_that_may_be_kept(const Scene& scene, const mat4& view_pro
 
 }  // namespace
 
-// The front-most fragment at each pixel centre whose alpha test cannot discard it: an untested
-// triangle, or a tested one that passes with no flip (alpha_test_may_flip false).
 VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj, int w, int h) {
-  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
-  VisibilityBuffer vb = empty_visibility(w, h);
-  const WindowBarycentrics wb(view_proj, w, h);
-  for_each_fragment_at(binned, w, h, vec2(0.5f), [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
-    const int row = h - 1 - f.y;
-    const size_t i = vb.index(f.x, row);
-    if (!(f.depth < vb.depth[i])) return;  // GL_LESS
-    if (triangle_alpha_tested(scene, t.source) && (surface_masked(scene, t.source, f.bary.y, f.bary.z) ||
-                                                   alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary)))
-      return;
-    store_fragment(vb, i, t, f);
-  });
-  return vb;
+  return front_most(scene, view_proj, w, h, AlphaKeep::SurelyPasses);
 }
 
 double depth_tie_margin(const RasterTriangle& t) {
@@ -118,7 +112,7 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 
 AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb) {
   const int w = vb.width, h = vb.height;
-  const VisibilityBuffer unmasked = front_that_may_be_kept(scene, view_proj, w, h);
+  const VisibilityBuffer unmasked = front_most(scene, view_proj, w, h, AlphaKeep::MayPass);
   AlphaFlipSurfaces out;
   out.surface = other_surfaces(scene, view_proj, vb, false);  // behind the reference's front
   out.may_flip.assign(vb.triangle.size(), 0);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli_run_util.h"
+#include "renderdoc_available.h"
 #include "compare/stage_set.h"
 
 namespace vct {
@@ -20,25 +21,6 @@ namespace fs = std::filesystem;
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 std::string gl_map() { return std::string(VCT_SOURCE_DIR) + "/tools/import_capture/vct_gl_map.json"; }
-
-// Why RenderDoc cannot be used here ("" when it can).
-std::string renderdoc_missing() {
-  if (std::system("command -v renderdoccmd > /dev/null 2>&1") != 0) return "renderdoccmd not installed (apt-get install renderdoccmd)";
-  if (std::system("/usr/bin/python3 -c 'import renderdoc' > /dev/null 2>&1") != 0)
-    return "python3-renderdoc not installed for /usr/bin/python3 (apt-get install python3-renderdoc)";
-  return "";
-}
-
-// Why this build cannot capture a frame, or "". renderdoccmd injects RenderDoc's library with
-// LD_PRELOAD, ahead of everything, which an AddressSanitizer binary refuses ("ASan runtime does not
-// come first in initial library list"): the sanitizer tier (scripts/sanitize.sh) skips the captures.
-std::string capture_impossible() {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  return "a sanitizer build cannot run under RenderDoc's LD_PRELOAD injection";
-#else
-  return renderdoc_missing();
-#endif
-}
 
 TEST(ImportCaptureCli, BadMapIsOneLineExit2AndWritesNothing) {
   const fs::path dir = test::fresh_dir("import_bad_map");
@@ -58,7 +40,7 @@ TEST(ImportCaptureCli, BadMapIsOneLineExit2AndWritesNothing) {
 }
 
 TEST(ImportCaptureCli, NotACaptureIsExit2) {
-  if (const std::string why = renderdoc_missing(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = test::renderdoc_missing(); !why.empty()) GTEST_SKIP() << why;
   const fs::path dir = test::fresh_dir("import_not_rdc");
   { std::ofstream(dir / "frame.rdc") << "not a capture"; }
   const auto r = test::run_vct_captured("import-capture " + q(dir / "frame.rdc") + " --map " + q(gl_map()) + " --out " + q(dir / "out"));
@@ -90,7 +72,7 @@ std::string capture_and_import(const fs::path& dir, const std::string& render_ar
 }
 
 TEST(ImportCaptureCli, OurGlFrameImportsToItsOwnDump) {
-  if (const std::string why = capture_impossible(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = test::capture_impossible(); !why.empty()) GTEST_SKIP() << why;
   const fs::path dir = test::fresh_dir("import_gl");
   if (test::run_vct("render " + kFrame + "--out " + q(dir / "probe")) == 3) GTEST_SKIP() << "no GL context";
   ASSERT_EQ(capture_and_import(dir, kFrame + "--dump"), "");
@@ -116,7 +98,7 @@ TEST(ImportCaptureCli, OurGlFrameImportsToItsOwnDump) {
 // render the reference with the run's facts, compare. A correct frame passes; a frame with a bug
 // compiled in (gl_faults.h: iso mip l built from level l-2) fails first at mip.iso.2.
 TEST(ImportCaptureCli, ACapturedFrameIsJudgedAndItsBugFoundAtItsStage) {
-  if (const std::string why = capture_impossible(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = test::capture_impossible(); !why.empty()) GTEST_SKIP() << why;
   const fs::path root = test::fresh_dir("import_judged");
   if (test::run_vct("render " + kFrame + "--out " + q(root / "probe")) == 3) GTEST_SKIP() << "no GL context";
   for (const std::string fault : {"", "wrong_mip"}) {

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "cli_run_util.h"
+#include "renderdoc_available.h"
 #include "compare/stage_set.h"
 
 namespace vct {
@@ -25,19 +26,8 @@ namespace fs = std::filesystem;
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
-std::string why_no_capture() {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  return "a sanitizer build cannot run under RenderDoc's LD_PRELOAD injection";
-#else
-  if (std::system("command -v renderdoccmd > /dev/null 2>&1") != 0) return "renderdoccmd not installed (apt-get install renderdoccmd)";
-  if (std::system("/usr/bin/python3 -c 'import renderdoc' > /dev/null 2>&1") != 0)
-    return "python3-renderdoc not installed for /usr/bin/python3 (apt-get install python3-renderdoc)";
-  return "";
-#endif
-}
-
 TEST(ImportCaptureDepth, PackedDepthStencilTexturesDecodeToTheirDepths) {
-  if (const std::string why = why_no_capture(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = test::capture_impossible(); !why.empty()) GTEST_SKIP() << why;
   const fs::path program = fs::path(VCT_BINARY).parent_path() / "depth_formats_frame";
   if (!fs::exists(program)) GTEST_SKIP() << "depth_formats_frame not built (a build without GL)";
   const fs::path dir = test::fresh_dir("import_depth_formats");

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run_util.h"
+#include "renderdoc_available.h"
 
 namespace vct {
 namespace {
@@ -24,17 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
-std::string why_no_capture() {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  return "a sanitizer build cannot run under RenderDoc's LD_PRELOAD injection";
-#else
-  if (std::system("command -v renderdoccmd > /dev/null 2>&1") != 0) return "renderdoccmd not installed (apt-get install renderdoccmd)";
-  if (std::system("/usr/bin/python3 -c 'import renderdoc' > /dev/null 2>&1") != 0)
-    return "python3-renderdoc not installed for /usr/bin/python3 (apt-get install python3-renderdoc)";
-  return "";
-#endif
-}
 
 // Captures the engine (with `env` before it) into dir and judges it; the verdict's output.
 test::VctOutput capture_and_judge(const fs::path& program, const fs::path& dir, const std::string& env) {
@@ -70,7 +60,7 @@ test::VctOutput judge_without_pcf(const fs::path& dir) {
 }
 
 TEST(TestEngineCapture, DeclaredConventionsPassAndAMipBugFailsAtMipIso1) {
-  if (const std::string why = why_no_capture(); !why.empty()) GTEST_SKIP() << why;
+  if (const std::string why = test::capture_impossible(); !why.empty()) GTEST_SKIP() << why;
   const fs::path program = fs::path(VCT_BINARY).parent_path() / "test_engine";
   if (!fs::exists(program)) GTEST_SKIP() << "test_engine not built (a build without GL)";
   const fs::path root = test::fresh_dir("test_engine");
