@@ -249,6 +249,35 @@ TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
   EXPECT_EQ(g.tie_range.at(3, 8, n_hi), 1.0f);
 }
 
+// The flip's other outcome carries its own freedoms, as every alternative (hunt seed 660: a
+// masked, textured flip whose albedo lay in its own texture slack). The backdrop behind the card
+// gets a 2 x 1 NEAREST texture, black left of x = 0 and white right of it: at the centre column,
+// where the card's alpha flips, the backdrop's lookup sits on its texel edge, so its texture slack
+// (a 2^-8 pixel shift) reaches the black texel, which its centre lookup alone does not.
+TEST(RasterTies, AnAlphaFlipsOtherOutcomeCarriesItsTextureSlack) {
+  Scene s = test::half_masked_card(true);
+  Texture t;
+  t.name = "black_white";
+  t.width = 2;
+  t.height = 1;
+  t.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
+  t.wrap_s = t.wrap_t = Wrap::ClampToEdge;
+  t.mag_filter = Filter::Nearest;
+  t.min_filter = MinFilter::Nearest;
+  s.textures.push_back(t);
+  s.materials[1].base_color_factor = vec4(1.0f);
+  s.materials[1].base_color_texture.texture = int(s.textures.size() - 1);
+  VctSettings st;
+  st.width = st.height = 33;
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  ASSERT_GT(g.albedo.at(16, 16, 0), 0.05f);  // the reference keeps the card (alpha = cutoff)
+  for (int row = 8; row <= 24; ++row) {
+    EXPECT_LT(g.tie_range.at(16, row, lo), 1e-3f) << row;  // the backdrop's black texel
+    EXPECT_GT(g.tie_range.at(16, row, hi), 0.99f) << row;  // and its white one
+  }
+}
+
 }  // namespace
 }  // namespace vct
 
