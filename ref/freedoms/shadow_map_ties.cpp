@@ -251,19 +251,41 @@ void sweep_alternatives(const Scene& scene, const mat4& view_proj, Image& range)
 // reference discarded) to the front-most one no GL discards (front_certainly_kept), or the clear
 // value where every fragment may be cut away. Two flips in a row (a masked fold over a masked
 // fold, seed-207 in scenes/regressions) reach past the surface behind the first.
+// Per source triangle, the largest depth_tie_margin of its raster pieces (a clipped triangle's
+// pieces share its plane).
+std::vector<double> plane_margins(const Scene& scene, const mat4& view_proj, int size) {
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, size, size);
+  std::vector<double> m(scene.triangles.size(), 0.0);
+  for (const RasterTriangle& t : binned.triangles) m[t.source] = std::max(m[t.source], depth_tie_margin(t));
+  return m;
+}
+
 void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, Image& range) {
   const int size = range.width;
   const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, size, size, &scene);
   const AlphaFlipSurfaces flips = alpha_flip_surfaces(scene, view_proj, vb);
   const VisibilityBuffer kept = front_certainly_kept(scene, view_proj, size, size);
+  // Each outcome's plane under the snap too, as every fragment's in the sweep (a sliver's plane
+  // tilts far across its width: scenes/regressions/seed-482-small, 2.1e-4 at a 0.1-texel sliver).
+  const std::vector<double> margin = plane_margins(scene, view_proj, size);
+  const auto lo_hi = [&](const VisibilityBuffer& v, size_t i, float& lo, float& hi) {
+    if (v.triangle[i] < 0) {
+      lo = hi = 1.0f;  // the clear value
+      return;
+    }
+    const double m = margin[size_t(v.triangle[i])];
+    lo = clamped(double(v.depth[i]) - m), hi = clamped(double(v.depth[i]) + m);
+  };
   parallel_rows(size, [&](int row) {
     for (int x = 0; x < size; ++x) {
       const size_t i = vb.index(x, row);
       if (!flips.may_flip[i]) continue;
-      const float deepest = kept.triangle[i] >= 0 ? kept.depth[i] : 1.0f;
+      float flip_lo, flip_hi, deep_lo, deep_hi;
+      lo_hi(flips.surface, i, flip_lo, flip_hi);
+      lo_hi(kept, i, deep_lo, deep_hi);
       float* out = range.pixel(x, row);
-      out[0] = std::min({out[0], flips.surface.depth[i], deepest});
-      out[1] = std::max({out[1], flips.surface.depth[i], deepest});
+      out[0] = std::min({out[0], flip_lo, deep_lo});
+      out[1] = std::max({out[1], flip_hi, deep_hi});
     }
   });
 }

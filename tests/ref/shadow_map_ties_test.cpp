@@ -151,6 +151,25 @@ TEST(ShadowMapTies, ASliverThinnerThanTwoStepsMayCoverACentreNoCommonShiftCovers
   EXPECT_EQ(lo_of(r, 24, 119), 1.0f);
 }
 
+TEST(ShadowMapTies, AnAlphaFlipsPlaneCarriesItsSnapMargin) {
+  // scenes/regressions/seed-482-small: a masked fold under a sun; at texel (19, row 17) the
+  // reference cuts a 0.1-texel-wide sliver whose alpha may flip. Its plane tilts far across its
+  // width, so one snap step moves its depth at the centre by ~2e-4: Mesa llvmpipe stored 0.57960
+  // against the plane's 0.57981. The flip's outcome is a range (its depth -+ its plane's margin),
+  // as every fragment's in the sweep.
+  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-482-small/scene.gltf");
+  VctSettings settings;
+  settings.shadow_map_size = 64;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  ASSERT_EQ(maps.size(), 1u);
+  const Image r = shadow_depth_range(s, maps[0].view_proj, 64, ShadowDepthFormat::Depth32f);
+  EXPECT_LE(lo_of(r, 19, 17), 0.57960f);
+  // A margin, not the whole map: 2^-8 (|dz/dx| + |dz/dy|) per step of a plane that tilts 0.037 in
+  // depth across a 0.1-texel width is 2.1e-3 here.
+  EXPECT_GE(lo_of(r, 19, 17), 0.5775f);
+  EXPECT_EQ(hi_of(r, 19, 17), 1.0f);     // the reference's own (cut: the clear value)
+}
+
 TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
   Scene s = test::stage_room();
   s.lights.resize(1);
