@@ -6,8 +6,10 @@
 // opaque) so that what lies behind a cut-away point shows.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "scene/scene.h"
 #include "stage_test_scene.h"
@@ -30,18 +32,24 @@ inline void add_card_quad(Scene& s, float z, float half, uint32_t material) {
   s.triangle_material.push_back(material);
 }
 
+/// A 2 x 1 texture (left texel, right texel: RGBA8 each), CLAMP_TO_EDGE, LINEAR unless `nearest`.
+inline Texture two_texel_texture(const std::string& name, std::array<uint8_t, 8> rgba8, bool nearest = false) {
+  Texture t;
+  t.name = name;
+  t.width = 2;
+  t.height = 1;
+  t.rgba8.assign(rgba8.begin(), rgba8.end());
+  t.wrap_s = t.wrap_t = Wrap::ClampToEdge;
+  if (nearest) t.mag_filter = Filter::Nearest, t.min_filter = MinFilter::Nearest;
+  return t;
+}
+
 /// Material 0: the card (albedo 0.5, alpha_mode, cutoff); material 1: the backdrop (albedo 0.8).
 inline Scene half_masked_card(bool backdrop, AlphaMode mode = AlphaMode::Mask,
                               float cutoff = 0.5f) {
   Scene s;
   s.source = "test:half_masked_card";
-  Texture t;
-  t.name = "left_transparent";
-  t.width = 2;
-  t.height = 1;
-  t.rgba8 = {128, 128, 128, 0, 128, 128, 128, 255};
-  t.wrap_s = t.wrap_t = Wrap::ClampToEdge;
-  s.textures.push_back(t);
+  s.textures.push_back(two_texel_texture("left_transparent", {128, 128, 128, 0, 128, 128, 128, 255}));
   Material card;
   card.name = "card";
   card.base_color_factor = vec4(1.0f);

@@ -256,15 +256,7 @@ TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
 // (a 2^-8 pixel shift) reaches the black texel, which its centre lookup alone does not.
 TEST(RasterTies, AnAlphaFlipsOtherOutcomeCarriesItsTextureSlack) {
   Scene s = test::half_masked_card(true);
-  Texture t;
-  t.name = "black_white";
-  t.width = 2;
-  t.height = 1;
-  t.rgba8 = {0, 0, 0, 255, 255, 255, 255, 255};
-  t.wrap_s = t.wrap_t = Wrap::ClampToEdge;
-  t.mag_filter = Filter::Nearest;
-  t.min_filter = MinFilter::Nearest;
-  s.textures.push_back(t);
+  s.textures.push_back(test::two_texel_texture("black_white", {0, 0, 0, 255, 255, 255, 255, 255}, true));
   s.materials[1].base_color_factor = vec4(1.0f);
   s.materials[1].base_color_texture.texture = int(s.textures.size() - 1);
   VctSettings st;
