@@ -16,6 +16,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
+#include "snapped_triangle_fixture.h"
 #include "../ref/stage_test_scene.h"
 #include "compare/display_transform.h"
 #include "compare/stage_compare.h"
@@ -176,22 +177,7 @@ TEST(PrecisionRows, AttributeExtrapolationBeyondTheReach) {
               1e-12);
   // Without the extrapolation (the centre's reach as if inside: one snap step) it would be 2^-8.
   EXPECT_GT(reach, 6.5 * precision(Precision::SubpixelSnap));
-  const glm::dvec2 p[3] = {{4.0, 4.0}, {4.25, 4.0}, {4.0, 4.25}}, c(4.5, 4.5);
-  const auto moved = [&](const double (&d)[6]) {  // c's barycentrics in the snapped triangle, on the original
-    const glm::dvec2 q0 = p[0] + glm::dvec2(d[0], d[1]), q1 = p[1] + glm::dvec2(d[2], d[3]),
-                     q2 = p[2] + glm::dvec2(d[4], d[5]);
-    const glm::dvec2 e1 = q1 - q0, e2 = q2 - q0, r = c - q0;
-    const double det = e1.x * e2.y - e2.x * e1.y;
-    const double l1 = (r.x * e2.y - e2.x * r.y) / det, l2 = (e1.x * r.y - r.x * e1.y) / det;
-    return (1.0 - l1 - l2) * p[0] + l1 * p[1] + l2 * p[2] - c;
-  };
-  double largest = 0.0;
-  for (int k = 0; k < 64; ++k) {
-    double d[6];
-    for (int i = 0; i < 6; ++i) d[i] = (k >> i & 1) ? 0x1p-7 : -0x1p-7;
-    const glm::dvec2 e = moved(d);
-    largest = std::max({largest, std::abs(e.x), std::abs(e.y)});
-  }
+  const double largest = vct::test::largest_corner_move(0x1p-7);
   EXPECT_GT(largest, 1.5 * reach);
 }
 

@@ -95,6 +95,13 @@ Scene snapped(const Scene& s, int n, std::mt19937& rng) {
   return moved;
 }
 
+// The GPU rule's voxelization of `s` at grid n (4 samples) with its coverage ties.
+Voxelization voxelization_with_ties(const Scene& s, int n) {
+  Voxelization vox = voxelize_gpu_rule(s, n, 4);
+  add_coverage_ties(s, vox);
+  return vox;
+}
+
 // tilted_triangles, then voxelized again with the same samples after snapped(), 200 times. Every
 // fragment that run loses must be one the reference marked may_drop, and every fragment it gains
 // one of may_add.
@@ -102,8 +109,7 @@ TEST(CoverageTies, EverySnappedVoxelizationIsAmongTheTies) {
   std::mt19937 rng(11);
   const Scene s = tilted_triangles(rng);
   const int n = 16;
-  Voxelization vox = voxelize_gpu_rule(s, n, 4);
-  add_coverage_ties(s, vox);
+  const Voxelization vox = voxelization_with_ties(s, n);
   std::set<FragmentKey> droppable, addable = keys(vox.may_add);
   for (size_t i = 0; i < vox.fragments.size(); ++i)
     if (vox.may_drop[i]) droppable.insert({vox.fragments[i].voxel.x, vox.fragments[i].voxel.y, vox.fragments[i].voxel.z, vox.fragments[i].triangle});
@@ -135,8 +141,7 @@ TEST(CoverageTies, EverySnappedOccupancyChangeIsAnOccupancyTie) {
   std::mt19937 rng(11);
   const Scene s = tilted_triangles(rng);
   const int n = 16;
-  Voxelization vox = voxelize_gpu_rule(s, n, 4);
-  add_coverage_ties(s, vox);
+  const Voxelization vox = voxelization_with_ties(s, n);
   const Volume ties = occupancy_ties(vox);
   size_t changed = 0, flagged = 0;
   for (float t : ties.data) flagged += t > 0.0f;
@@ -161,8 +166,7 @@ TEST(CoverageTies, EverySnappedFragmentCountIsInsideTheCountRange) {
   std::mt19937 rng(11);
   const Scene s = tilted_triangles(rng);
   const int n = 16;
-  Voxelization vox = voxelize_gpu_rule(s, n, 4);
-  add_coverage_ties(s, vox);
+  const Voxelization vox = voxelization_with_ties(s, n);
   const Volume range = fragment_count_ranges(vox);
   ASSERT_EQ(range.channels, 2);
   const auto counts = [&](const Voxelization& v) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <random>
 
+#include "snapped_triangle_fixture.h"
 #include "freedoms/fragment_exactness.h"
 #include "freedoms/fragment_slack.h"
 #include "freedoms/lookup_precision.h"
@@ -199,29 +200,13 @@ TEST(FragmentSlack, SnapReachCoversExtrapolatedAttributes) {
   const double reach = voxel_snap_reach(s, 16, f);
   EXPECT_NEAR(reach, 7.0 / 240.0, 1e-12);
   const double step = 1.0 / 256.0;
-  const glm::dvec2 p[3] = {{4.0, 4.0}, {4.25, 4.0}, {4.0, 4.25}}, c(4.5, 4.5);
-  // The point of the original triangle with c's barycentrics in the snapped one.
-  const auto moved = [&](const double (&d)[6]) {
-    const glm::dvec2 q0 = p[0] + glm::dvec2(d[0], d[1]), q1 = p[1] + glm::dvec2(d[2], d[3]),
-                     q2 = p[2] + glm::dvec2(d[4], d[5]);
-    const glm::dvec2 e1 = q1 - q0, e2 = q2 - q0, r = c - q0;
-    const double det = e1.x * e2.y - e2.x * e1.y;
-    const double l1 = (r.x * e2.y - e2.x * r.y) / det, l2 = (e1.x * r.y - r.x * e1.y) / det;
-    return (1.0 - l1 - l2) * p[0] + l1 * p[1] + l2 * p[2] - c;
-  };
-  double largest = 0.0;
-  for (int k = 0; k < 64; ++k) {
-    double d[6];
-    for (int i = 0; i < 6; ++i) d[i] = (k >> i & 1) ? step : -step;
-    const glm::dvec2 e = moved(d);
-    largest = std::max({largest, std::abs(e.x), std::abs(e.y)});
-  }
+  double largest = test::largest_corner_move(step);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-step, step);
   for (int k = 0; k < 4000; ++k) {
     double d[6];
     for (double& x : d) x = u(rng);
-    const glm::dvec2 e = moved(d);
+    const glm::dvec2 e = test::extrapolated_point_move(d);
     largest = std::max({largest, std::abs(e.x), std::abs(e.y)});
   }
   EXPECT_LE(largest, reach * (1.0 + 1e-9));  // attained: the bound is tight here
