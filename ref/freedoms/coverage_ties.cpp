@@ -186,7 +186,7 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
   extra.n = vox.n;
   extra.fragments = vox.may_add;
   const std::vector<vec3> extra_values = fragment_radiance(scene, extra, maps, settings, bounce);
-  const std::vector<float> extra_slack = fragment_shading_slack(scene, extra, extra_values, maps, settings, bounce);
+  const std::vector<float> extra_slack = fragment_shading_slack(scene, extra, maps, settings, bounce);
   for_each_uncertain_voxel(vox, [&](const VoxelRuns& r) {
     double widest = 0.0;
     for (int c = 0; c < 3; ++c) {

@@ -9,11 +9,15 @@
 #include "core/precision.h"
 #include "freedoms/direct_slack.h"
 #include "freedoms/direct_ties.h"
+#include "freedoms/light_terms.h"
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/snap_visibility.h"
 #include "freedoms/tangent_handedness.h"
+#include "freedoms/texel_breakpoints.h"
 #include "freedoms/texture_slack.h"
+#include "scene/texture_lod.h"
+#include "scene/texture_mips.h"
 #include "stages/direct.h"
 #include "stages/light_sample.h"
 #include "stages/raster.h"
@@ -80,20 +84,170 @@ VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const Vo
   return out;
 }
 
-/// Largest change over the four corners of the snap's reach, every lookup at the reference's own
-/// lambdas.
+SurfacePoint surface_at(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+  const VoxelFragment g = shifted_fragment(scene, w, f, du, dv);
+  return interpolate_surface(scene, g.triangle, g.b1, g.b2);
+}
+
+/// One NEAREST-filtered level a slot's lookup reads at the fragment's own lambda, as a map from
+/// window offsets to that level's texel coordinates (freedoms/texel_breakpoints.h).
+void nearest_level_maps(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
+                        std::vector<TexelMap>& out) {
+  const Material& m = scene.materials[scene.triangle_material[f.triangle]];
+  // Texture coordinates are affine in the window: three points give the map.
+  const SurfacePoint at[3] = {surface_at(scene, w, f, 0.0, 0.0), surface_at(scene, w, f, w.reach, 0.0),
+                              surface_at(scene, w, f, 0.0, w.reach)};
+  for (int slot = 0; slot < kTextureSlots; ++slot) {
+    const TextureRef* ref = slot_texture(m, slot);
+    if (!ref) continue;
+    const Texture& tex = scene.textures[size_t(ref->texture)];
+    const bool srgb = slot_is_srgb(slot);
+    const LevelBlend b = select_levels(tex, lods.lambda[slot], available_levels(tex, srgb) - 1);
+    if (b.linear) continue;
+    const glm::dvec2 uv(slot_uv(*ref, at[0]));
+    const glm::dvec2 per_u = (glm::dvec2(slot_uv(*ref, at[1])) - uv) / w.reach;
+    const glm::dvec2 per_v = (glm::dvec2(slot_uv(*ref, at[2])) - uv) / w.reach;
+    const int levels[2] = {b.level1, b.level2};
+    const int read = b.weight2 != 0.0f && b.level2 != b.level1 ? 2 : 1;
+    for (int k = 0; k < read; ++k) {
+      int width = 0, height = 0;
+      mip_level_texels(tex, srgb, levels[k], width, height);
+      const glm::dvec2 size(width, height);
+      out.push_back({uv * size, per_u * size, per_v * size});
+    }
+  }
+}
+
+/// The window offsets whose light spans the light over the whole snap square: its four corners
+/// (+-r, +-r), and where a NEAREST lookup jumps inside it, each texel piece's corners
+/// (freedoms/texel_breakpoints.h). Beyond kBreakpointCap points (texels thousands of times smaller
+/// than the snap: a texture sampled far above its resolution without mipmaps) a 64 x 64 grid
+/// over the square stands in for them: the one place the square is sampled, not enumerated.
+constexpr size_t kBreakpointCap = 4096;
+std::vector<glm::dvec2> snap_offsets(const Scene& scene, const SnapWindow& w, const VoxelFragment& f,
+                                     const SlotLods& lods) {
+  const double r = w.reach;
+  std::vector<glm::dvec2> out = {{-r, -r}, {r, -r}, {-r, r}, {r, r}};
+  std::vector<TexelMap> maps;
+  nearest_level_maps(scene, w, f, lods, maps);
+  for (const TexelMap& m : maps) {
+    if (texel_breakpoints(m, r, kBreakpointCap, out)) continue;
+    constexpr int kGrid = 64;
+    for (int i = 0; i <= kGrid; ++i)
+      for (int j = 0; j <= kGrid; ++j) out.push_back({r * (2.0 * i / kGrid - 1.0), r * (2.0 * j / kGrid - 1.0)});
+  }
+  return out;
+}
+
+/// Largest change over the snap square's `offsets` (snap_offsets), every lookup at the reference's
+/// own lambdas and visibility, against the reference's terms `ref` (freedoms/light_terms.h).
 float position_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
-                     const vec3& value, const std::vector<ShadowMap>& maps, const VctSettings& settings,
-                     const BounceLight* bounce) {
+                     const std::vector<glm::dvec2>& offsets, const LightTerms& ref, const std::vector<ShadowMap>& maps,
+                     const VctSettings& settings, const BounceLight* bounce) {
   float slack = 0.0f;
-  for (int k = 1; k < kTexelShifts; ++k) {  // the four corners (+-r, +-r)
-    const VoxelFragment g = shifted_fragment(scene, w, f, (k & 1) ? w.reach : -w.reach, (k & 2) ? w.reach : -w.reach);
-    const SurfaceMaterial m =
-        evaluate_material(scene, interpolate_surface(scene, g.triangle, g.b1, g.b2), lods);
-    slack = std::max(slack,
-                     largest_channel(glm::abs(light_leaving(scene, g, m, maps, settings, bounce) - value)));
+  for (const glm::dvec2& d : offsets) {
+    const VoxelFragment g = shifted_fragment(scene, w, f, d.x, d.y);
+    const SurfaceMaterial m = evaluate_material(scene, surface_at(scene, w, f, d.x, d.y), lods);
+    slack = std::max(slack, light_change(light_terms(scene, g, m, maps, settings, bounce), ref));
   }
   return slack;
+}
+
+/// A light's unshadowed diffuse light, per channel, at a surface point with material `m`, with the
+/// signed cosine (negative behind the shading normal; GL's light is its max with 0).
+vec3 unshadowed_light(const Light& light, const VctSettings& settings, const vec3& position, const SurfaceMaterial& m) {
+  const LightSample ls = sample_light(light, settings.light_model, position);
+  return m.albedo * ls.irradiance * glm::dot(m.shading_normal, ls.l) * kInvPi;
+}
+
+/// Every material a correct GL may compute at the reference's position, one group per freedom
+/// (each group's changes are summed, freedoms/fragment_slack.h):
+/// - every admissible lambda of the slots diffuse light reads, each with the sRGB decode before or
+///   after filtering, times the sub-texel weight shifts. Diffuse light reads albedo (base colour),
+///   the normal map and emission and mixes them (albedo x n.l + emission), so every combination of
+///   the three slots' candidates is tried: a normal map lit at a grazing angle turns a 2^-8 texel
+///   shift into a large relative change of n.l, which no share of the voxel's own value bounds;
+/// - the 8-bit precision of the filtered normal-map texel (kUnorm8Step per channel);
+/// - the other bitangent, where the triangle's vertices disagree on the tangent's handedness
+///   (freedoms/tangent_handedness.h);
+/// - the sRGB decode's precision at both ends (core/precision.h, srgb-decode): the light is
+///   monotonic in albedo and emission.
+using MaterialGroups = std::vector<std::vector<SurfaceMaterial>>;
+
+std::vector<SurfaceMaterial> lookup_alternatives(const Scene& scene, const SurfacePoint& p, const SurfaceLods& l) {
+  static constexpr int kSlots[3] = {kSlotBaseColor, kSlotNormal, kSlotEmissive};
+  double cand[3][kMaxLodCandidates];
+  int count[3];
+  for (int k = 0; k < 3; ++k) count[k] = lod_candidates(l.range[kSlots[k]], cand[k]);
+  std::vector<SurfaceMaterial> out;
+  SlotLods s = l.exact;
+  for (int k = 0; k < kTexelShifts; ++k)
+    for (int i0 = 0; i0 < count[0]; ++i0)
+      for (int i1 = 0; i1 < count[1]; ++i1)
+        for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
+          s.texel_shift = texel_shift(k);
+          s.srgb_after_filter = i2 >= count[2];
+          s.lambda[kSlots[0]] = cand[0][i0];
+          s.lambda[kSlots[1]] = cand[1][i1];
+          s.lambda[kSlots[2]] = cand[2][i2 % count[2]];
+          out.push_back(evaluate_material(scene, p, s));
+        }
+  return out;
+}
+
+MaterialGroups material_alternatives(const Scene& scene, const VoxelFragment& f, const SurfaceLods& l) {
+  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
+  const Material& material = scene.materials[scene.triangle_material[f.triangle]];
+  MaterialGroups groups;
+  if (is_textured(material)) groups.push_back(lookup_alternatives(scene, p, l));
+  if (material.normal_texture.present()) {
+    std::vector<SurfaceMaterial>& g = groups.emplace_back();
+    SlotLods s = l.exact;
+    for (int k = 0; k < kUnorm8Corners; ++k) {
+      s.normal_texel_offset = unorm8_corner(k);
+      g.push_back(evaluate_material(scene, p, s));
+    }
+  }
+  if (handedness_may_flip(scene, f.triangle))
+    groups.push_back({evaluate_material(scene, with_other_handedness(p), l.exact)});
+  if (material.base_color_texture.present() || material.emissive_texture.present()) {
+    std::vector<SurfaceMaterial>& g = groups.emplace_back();
+    SlotLods s = l.exact;
+    for (float sign : {-1.0f, 1.0f}) {
+      s.srgb_decode_steps = sign * float(precision(Precision::SrgbDecode));
+      g.push_back(evaluate_material(scene, p, s));
+    }
+  }
+  return groups;
+}
+
+/// Each group's largest change of the fragment's light against the reference's terms `ref`
+/// (freedoms/light_terms.h), summed over the groups.
+float material_slack(const Scene& scene, const VoxelFragment& f, const MaterialGroups& groups, const LightTerms& ref,
+                     const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce) {
+  float slack = 0.0f;
+  for (const std::vector<SurfaceMaterial>& g : groups) {
+    float largest = 0.0f;
+    for (const SurfaceMaterial& m : g)
+      largest = std::max(largest, light_change(light_terms(scene, f, m, maps, settings, bounce), ref));
+    slack += largest;
+  }
+  return slack;
+}
+
+/// How far the material freedoms may raise one light's unshadowed light above `exact`'s: each
+/// group's largest rise (signed cosine), summed.
+float unshadowed_rise(const Light& light, const VctSettings& settings, const vec3& position, const SurfaceMaterial& exact,
+                      const MaterialGroups& groups) {
+  const vec3 base = unshadowed_light(light, settings, position, exact);
+  float rise = 0.0f;
+  for (const std::vector<SurfaceMaterial>& g : groups) {
+    float largest = 0.0f;
+    for (const SurfaceMaterial& m : g)
+      largest = std::max(largest, largest_channel(unshadowed_light(light, settings, position, m) - base));
+    rise += largest;
+  }
+  return rise;
 }
 
 /// The parallelogram the snap may move the fragment over, in world space.
@@ -110,7 +264,14 @@ SnapParallelogram snap_parallelogram(const SnapWindow& w, const VoxelFragment& f
 /// depth tie crossed inside it: on atrium a point lamp's cube face is nearly edge-on to a wall,
 /// and GL's fragment, 0.05 texel from the reference's (well inside the snap), read one row of the
 /// 3x3 kernel lit that every corner reads shadowed (docs/compare.md, "Voxel shading slack").
+/// The visibility's change counts at the unshadowed light GL's fragment may have: the light at a
+/// moved point, other material and other visibility differs from the reference's by (the position's
+/// and material's changes, taken at the reference's visibility) + that unshadowed light x (the
+/// visibility's change); so the largest unshadowed light over the square plus the material
+/// freedoms' rise, not the centre's (seed 559: a normal map's LOD turned a light past the horizon
+/// where the snap also lit the fragment).
 float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
+                        const std::vector<glm::dvec2>& offsets, const MaterialGroups& groups,
                         const std::vector<ShadowMap>& maps, const VctSettings& settings) {
   if (maps.empty()) return 0.0f;
   const SnapParallelogram q = snap_parallelogram(w, f);
@@ -118,90 +279,19 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
   float slack = 0.0f;
   for (size_t i = 0; i < std::min(maps.size(), scene.lights.size()); ++i) {
     const Light& light = scene.lights[i];
-    const LightSample ls = sample_light(light, settings.light_model, f.position);
-    const float n_dot_l = glm::dot(m.shading_normal, ls.l);
-    if (n_dot_l <= 0.0f || ls.irradiance == vec3(0.0f)) continue;
-    const float open = largest_channel(m.albedo * ls.irradiance * n_dot_l * kInvPi);
     const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
     // A sliver's shift has no bound: any visibility.
     const VisibilityRange r = w.bounded ? snap_surface_visibility_range(maps[i], light, q, m.shading_normal, settings) : VisibilityRange{0.0f, 1.0f};
-    slack += open * std::max(r.hi - vis, vis - r.lo);
-  }
-  return slack;
-}
-
-/// Largest change over every admissible lambda of the slots diffuse light reads, each with the
-/// sRGB decode before or after filtering, times the sub-texel weight shifts.
-float lookup_slack(const Scene& scene, const VoxelFragment& f, const SurfaceLods& l,
-                   const vec3& value, const std::vector<ShadowMap>& maps,
-                   const VctSettings& settings, const BounceLight* bounce) {
-  // Diffuse light reads albedo (base colour), the normal map and emission; the light mixes them
-  // (albedo x n.l + emission), so every combination of the three slots' candidates is tried. A
-  // normal map lit at a grazing angle turns a 2^-8 texel shift into a large relative change of
-  // n.l, which no share of the voxel's own value bounds.
-  static constexpr int kSlots[3] = {kSlotBaseColor, kSlotNormal, kSlotEmissive};
-  double cand[3][kMaxLodCandidates];
-  int count[3];
-  for (int k = 0; k < 3; ++k) count[k] = lod_candidates(l.range[kSlots[k]], cand[k]);
-  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
-  float slack = 0.0f;
-  SlotLods s = l.exact;
-  for (int k = 0; k < kTexelShifts; ++k)
-    for (int i0 = 0; i0 < count[0]; ++i0)
-      for (int i1 = 0; i1 < count[1]; ++i1)
-        for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
-          s.texel_shift = texel_shift(k);
-          s.srgb_after_filter = i2 >= count[2];
-          s.lambda[kSlots[0]] = cand[0][i0];
-          s.lambda[kSlots[1]] = cand[1][i1];
-          s.lambda[kSlots[2]] = cand[2][i2 % count[2]];
-          const vec3 d = glm::abs(
-              light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) - value);
-          slack = std::max(slack, largest_channel(d));
-        }
-  return slack;
-}
-
-/// Largest change over the 8-bit precision of the filtered normal-map texel (kUnorm8Step per
-/// channel), at the reference's position and lambdas.
-float normal_precision_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods,
-                             const vec3& value, const std::vector<ShadowMap>& maps,
-                             const VctSettings& settings, const BounceLight* bounce) {
-  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
-  SlotLods s = lods;
-  float slack = 0.0f;
-  for (int k = 0; k < kUnorm8Corners; ++k) {
-    s.normal_texel_offset = unorm8_corner(k);
-    const vec3 d =
-        glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) - value);
-    slack = std::max(slack, largest_channel(d));
-  }
-  return slack;
-}
-
-/// A triangle whose vertices disagree on the tangent's handedness (freedoms/tangent_handedness.h):
-/// the change of the fragment's light with the other bitangent, at the reference's position and
-/// lambdas.
-float handedness_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const vec3& value,
-                       const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce) {
-  const SurfacePoint p = with_other_handedness(interpolate_surface(scene, f.triangle, f.b1, f.b2));
-  return largest_channel(
-      glm::abs(light_leaving(scene, f, evaluate_material(scene, p, lods), maps, settings, bounce) - value));
-}
-
-float srgb_precision_slack(const Scene& scene, const VoxelFragment& f, const SlotLods& lods, const vec3& value,
-                           const std::vector<ShadowMap>& maps, const VctSettings& settings,
-                           const BounceLight* bounce) {
-  // The light grows with albedo and emission, so the two ends of the decode's precision are the
-  // extremes (core/precision.h, srgb-decode).
-  const SurfacePoint p = interpolate_surface(scene, f.triangle, f.b1, f.b2);
-  SlotLods s = lods;
-  float slack = 0.0f;
-  for (float sign : {-1.0f, 1.0f}) {
-    s.srgb_decode_steps = sign * float(precision(Precision::SrgbDecode));
-    const vec3 d =
-        glm::abs(light_leaving(scene, f, evaluate_material(scene, p, s), maps, settings, bounce) - value);
-    slack = std::max(slack, largest_channel(d));
+    const float moves = std::max(r.hi - vis, vis - r.lo);
+    if (moves <= 0.0f) continue;
+    float open = 0.0f;
+    for (const glm::dvec2& d : offsets) {
+      const SurfacePoint p = surface_at(scene, w, f, d.x, d.y);
+      const vec3 lit = unshadowed_light(light, settings, p.position, evaluate_material(scene, p, lods));
+      open = std::max(open, largest_channel(glm::max(lit, vec3(0.0f))));
+    }
+    open += unshadowed_rise(light, settings, f.position, m, groups);
+    slack += open * moves;
   }
   return slack;
 }
@@ -269,7 +359,6 @@ VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f)
 }
 
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
-                                          const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,
                                           const VctSettings& frame_settings,
                                           const BounceLight* bounce) {
@@ -281,19 +370,17 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
   parallel_for(int64_t(out.size()), [&](int64_t i) {
     const VoxelFragment& f = vox.fragments[size_t(i)];
     const SurfaceLods& l = lods[f.triangle];
+    // Every change below is taken light by light from the reference's terms (freedoms/light_terms.h).
+    const SurfaceMaterial exact = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), l.exact);
+    const LightTerms ref = light_terms(scene, f, exact, maps, settings, bounce);
+    const MaterialGroups groups = material_alternatives(scene, f, l);
+    float slack = material_slack(scene, f, groups, ref, maps, settings, bounce);
     SnapWindow w;
-    float slack = 0.0f;
-    if (snap_window(scene, vox.n, f, w))
-      slack = position_slack(scene, w, f, l.exact, values[size_t(i)], maps, settings, bounce) +
-              shadow_snap_slack(scene, w, f, l.exact, maps, settings);
-    const Material& m = scene.materials[scene.triangle_material[f.triangle]];
-    if (is_textured(m)) slack += lookup_slack(scene, f, l, values[size_t(i)], maps, settings, bounce);
-    if (m.normal_texture.present())
-      slack += normal_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
-    if (handedness_may_flip(scene, f.triangle))
-      slack += handedness_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
-    if (m.base_color_texture.present() || m.emissive_texture.present())
-      slack += srgb_precision_slack(scene, f, l.exact, values[size_t(i)], maps, settings, bounce);
+    if (snap_window(scene, vox.n, f, w)) {
+      const std::vector<glm::dvec2> offsets = snap_offsets(scene, w, f, l.exact);
+      slack += position_slack(scene, w, f, l.exact, offsets, ref, maps, settings, bounce) +
+               shadow_snap_slack(scene, w, f, l.exact, offsets, groups, maps, settings);
+    }
     // Filtering first, the weights' freedom moves the filtered depth instead: snap_visibility's
     // filtered taps carry it (freedoms/snap_visibility.h).
     if (settings.shadow_compare == ShadowCompare::Linear && !filters_depth_first(settings))

@@ -46,14 +46,16 @@ struct VoxelDepthTie {
 };
 VoxelDepthTie voxel_depth_tie(const Scene& scene, int n, const VoxelFragment& f);
 
-/// Per fragment, the largest |change| (over RGB) of its light against `values`
-/// (fragment_radiance): the largest over the four corners of the snap's reach at the reference's
-/// lookups, plus, on textured materials, the largest over every admissible lambda x sub-texel
-/// shift at the fragment itself, plus, with a normal map, the largest over the normal texel's
-/// 8-bit precision, plus hard_spot_slack (the freedoms are independent; the sum bounds their combination by the
-/// triangle inequality, each term taken where the reference sits).
+/// Per fragment, how far a correct GL's light may lie from the reference's (largest over RGB): the
+/// sum, each taken where the reference sits, of the largest changes over the snap square (its
+/// corners and every NEAREST texel piece's corners, freedoms/texel_breakpoints.h), over each group
+/// of material freedoms (every admissible lambda x sub-texel shift x sRGB staging; the normal
+/// texel's 8-bit precision; the other bitangent; the sRGB decode's precision), over the shadow
+/// visibility anywhere in the square (at the largest unshadowed light GL's fragment may have), and
+/// hard_spot_slack. The freedoms are independent; each change is taken light by light on the
+/// signed cosine (freedoms/light_terms.h), so the sum bounds their combination by the triangle
+/// inequality to first order (docs/compare.md, "Voxel shading slack").
 std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization& vox,
-                                          const std::vector<vec3>& values,
                                           const std::vector<ShadowMap>& maps,
                                           const VctSettings& settings,
                                           const BounceLight* bounce = nullptr);

@@ -12,7 +12,7 @@ namespace vct {
 void add_voxel_freedoms(const Scene& scene, const Voxelization& vox, const std::vector<vec3>& values,
                         const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce,
                         VoxelGrid& g) {
-  const std::vector<float> slack = fragment_shading_slack(scene, vox, values, maps, settings, bounce);
+  const std::vector<float> slack = fragment_shading_slack(scene, vox, maps, settings, bounce);
   g.shading_slack = voxel_shading_slack(vox, slack);
   g.exact = voxel_exactness(scene, vox, settings, bounce && *bounce);
   widen_for_coverage_ties(scene, vox, values, slack, maps, settings, bounce, g.shading_slack, g.exact);

@@ -40,13 +40,16 @@ namespace {
 
 vec4 sample_ref(const Scene& scene, const TextureRef& ref, const SurfacePoint& p, bool srgb,
                 double lambda, bool srgb_after_filter, vec2 texel_shift) {
-  const Texture& tex = scene.textures[size_t(ref.texture)];
-  vec2 uv = ref.texcoord == 1 ? p.uv1 : p.uv0;
-  if (!ref.transform.is_identity()) uv = ref.transform.apply(uv);
-  return sample_texture_lod(tex, uv, srgb, lambda, srgb_after_filter, texel_shift);
+  return sample_texture_lod(scene.textures[size_t(ref.texture)], slot_uv(ref, p), srgb, lambda, srgb_after_filter,
+                            texel_shift);
 }
 
 }  // namespace
+
+vec2 slot_uv(const TextureRef& ref, const SurfacePoint& p) {
+  const vec2 uv = ref.texcoord == 1 ? p.uv1 : p.uv0;
+  return ref.transform.is_identity() ? uv : ref.transform.apply(uv);
+}
 
 const TextureRef* slot_texture(const Material& m, int slot) {
   const TextureRef* refs[kTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture,

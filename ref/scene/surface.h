@@ -84,6 +84,9 @@ inline bool slot_is_srgb(int slot) {
   return slot == kSlotBaseColor || slot == kSlotEmissive;
 }
 
+/// The texture coordinates `ref` reads at `p`: its UV set, through its KHR_texture_transform.
+vec2 slot_uv(const TextureRef& ref, const SurfacePoint& p);
+
 /// Evaluates the triangle's material at `p`, each texture looked up at its slot's lambda
 /// (scene/texture_sample.h: GL's texel centres, wrap modes, min/mag filters and mip levels);
 /// sRGB textures (base colour, emissive) are decoded per texel before filtering, as GL does for

@@ -59,7 +59,7 @@ TEST(FragmentSlack, PositionTermIsTheLightsChangeOverASnapOfTheVoxelRaster) {
   const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
   ASSERT_FALSE(vox.fragments.empty());
   const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, values, maps, settings);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
   const double step = double(s.volume.size) / double(settings.grid) / 256.0;  // 2^-8 voxel, metres
   const auto falloff = [&](double x, double z) {
     const double d = std::sqrt(x * x + z * z + double(h) * double(h));
@@ -113,7 +113,7 @@ TEST(FragmentSlack, NormalMapTexelMayBeOneUnorm8StepOff) {
   const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
   const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
   const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, values, maps, settings);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
   const auto n_dot_l = [&](double tx, double ty, double tz) {
     const glm::dvec3 tn(2.0 * tx - 1.0, 2.0 * ty - 1.0, 2.0 * tz - 1.0);
     return (tn.x * std::cos(e) + tn.z * std::sin(e)) / glm::length(tn);
@@ -135,6 +135,64 @@ TEST(FragmentSlack, NormalMapTexelMayBeOneUnorm8StepOff) {
     ++checked;
   }
   EXPECT_GT(checked, 10);
+}
+
+// A floor textured with a 4096 x 1 strip of random grey texels, NEAREST without mipmaps, under a
+// sun: the light is albedo(u) E cos / pi with nothing else varying. At grid 8 a voxel holds about
+// 560 texels along u, so the snap square (+-2^-8 voxel and a little more) spans about four texels,
+// and a texel inside it may be brighter or darker than those under all four corners. The slack must
+// reach the largest |albedo change| over every texel the square covers
+// (freedoms/texel_breakpoints.h); the corners alone miss them.
+TEST(FragmentSlack, PositionTermReachesEveryNearestTexelInsideTheSnap) {
+  Scene s;
+  const uint32_t m = test::add_material(s, vec3(1.0f));
+  test::add_quad(s, {-2, 0, -2}, {2, 0, -2}, {2, 0, 2}, {-2, 0, 2}, {0, 1, 0}, m);
+  for (size_t i = 0; i < s.positions.size(); ++i) s.uv0[i] = vec2((s.positions[i].x + 2.0f) / 4.0f, 0.5f);
+  Texture t;
+  t.width = 4096;
+  t.height = 1;
+  t.min_filter = MinFilter::Nearest;
+  t.mag_filter = Filter::Nearest;
+  std::mt19937 rng(3);
+  for (int i = 0; i < t.width; ++i) {
+    const uint8_t g = uint8_t(rng() % 256);
+    t.rgba8.insert(t.rgba8.end(), {g, g, g, 255});
+  }
+  s.textures.push_back(t);
+  s.materials[m].base_color_texture.texture = 0;
+  Light sun;
+  sun.kind = LightKind::Directional;
+  sun.direction = glm::normalize(vec3(0.3f, -1.0f, 0.2f));
+  sun.intensity = 2.0f;
+  s.lights.push_back(sun);
+  s.volume = fit_volume(s.bounds);
+  build_texture_mips(s);
+  VctSettings settings;
+  settings.grid = 8;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
+  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
+  const double e_cos = double(sun.intensity) * double(-sun.direction.y) * double(kInvPi);
+  // The square's half-width along u: at least 2^-8 voxel (the reach grows a little with the
+  // triangle's gradients, never shrinks).
+  const double half = double(s.volume.size) / settings.grid / 256.0 / 4.0 * t.width;  // texels
+  int checked = 0, inside_beyond_corners = 0;
+  for (size_t i = 0; i < vox.fragments.size(); ++i) {
+    const double centre = (double(vox.fragments[i].position.x) + 2.0) / 4.0 * t.width;
+    const double albedo = double(values[i].x) / e_cos;
+    double largest = 0.0, corners = 0.0;
+    for (int k = int(std::floor(centre - half)); k <= int(std::floor(centre + half)); ++k)
+      largest = std::max(largest, std::abs(double(srgb8_to_linear(t.rgba8[size_t(4 * k)])) - albedo));
+    for (double c : {centre - half, centre + half})
+      corners = std::max(corners, std::abs(double(srgb8_to_linear(t.rgba8[size_t(4 * int(std::floor(c)))])) - albedo));
+    if (largest > corners + 0.01) ++inside_beyond_corners;
+    // Float rounding of the light: a few ulps.
+    EXPECT_GE(double(slack[i]), largest * e_cos - 1e-5) << "fragment " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+  EXPECT_GT(inside_beyond_corners, 5);  // the case the corners alone would miss
 }
 
 // Exact fragments: untextured, no light reaching them by the margin, no bounce. A floor with

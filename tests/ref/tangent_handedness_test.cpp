@@ -70,7 +70,7 @@ Voxels voxels(const Scene& s) {
   v.maps = render_shadow_maps(s, v.settings);
   v.vox = voxelize_gpu_rule(s, v.settings.grid, 4);
   v.values = fragment_radiance(s, v.vox, v.maps, v.settings);
-  v.slack = fragment_shading_slack(s, v.vox, v.values, v.maps, v.settings);
+  v.slack = fragment_shading_slack(s, v.vox, v.maps, v.settings);
   return v;
 }
 
