@@ -205,6 +205,9 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
       }
       const MeanRange m = admissible_mean_range(clo, chi, std::move(ulo), std::move(uhi));
       widest = std::max({widest, m.hi - mean, mean - m.lo});
+      // Every fragment may land in a neighbour: GL may write none here, and a voxel the fills
+      // still occupy keeps RGB 0 (stages/voxel_fill.h; seed 290's thickened voxel).
+      if (clo.empty()) widest = std::max(widest, std::abs(mean));
     }
     const ivec3 v = vox.fragments[r.begin].voxel;
     float& s = *slack.voxel(v.x, v.y, v.z);

@@ -11,6 +11,7 @@
 
 #include "freedoms/coverage_ties.h"
 #include "stage_test_scene.h"
+#include "stages/inject.h"
 #include "stages/raster.h"
 #include "stages/voxelize.h"
 
@@ -191,6 +192,37 @@ TEST(CoverageTies, EverySnappedFragmentCountIsInsideTheCountRange) {
   std::printf("%zu voxels with a count range, %zu count changes over the snaps\n", wide, changed);
   EXPECT_GT(changed, 0u);
   EXPECT_LT(wide, size_t(vox.covered));
+}
+
+// A voxel whose every fragment may land in a neighbour may be written no fragment at all: a fill
+// that still occupies it leaves RGB 0 (stages/voxel_fill.h), so its slack reaches down to 0. The
+// triangles glow (emission 0.5), so every fragment carries light without shadow maps.
+TEST(CoverageTies, AVoxelEveryFragmentMayLeaveAdmitsNoLight) {
+  std::mt19937 rng(11);
+  Scene s = tilted_triangles(rng);
+  for (Material& m : s.materials) m.emissive_factor = vec3(0.5f);
+  const int n = 16;
+  const Voxelization vox = voxelization_with_ties(s, n);
+  VctSettings settings;
+  settings.grid = n;
+  const std::vector<vec3> values = fragment_radiance(s, vox, {}, settings);
+  const std::vector<float> fragment_slack(vox.fragments.size(), 0.0f);
+  Volume slack(n, n, n, 1), exact(n, n, n, 1);
+  widen_for_coverage_ties(s, vox, values, fragment_slack, {}, settings, nullptr, slack, exact);
+  size_t all_may_leave = 0;
+  for (size_t b = 0, e = 0; b < vox.fragments.size(); b = e) {
+    bool every = true;
+    double mean = 0.0;
+    for (e = b; e < vox.fragments.size() && vox.fragments[e].voxel == vox.fragments[b].voxel; ++e) {
+      every = every && vox.may_drop[e];
+      mean += double(values[e].x);
+    }
+    if (!every) continue;
+    ++all_may_leave;
+    const ivec3 v = vox.fragments[b].voxel;
+    EXPECT_GE(double(*slack.voxel(v.x, v.y, v.z)), mean / double(e - b)) << "voxel " << v.x << " " << v.y << " " << v.z;
+  }
+  EXPECT_GT(all_may_leave, 0u);
 }
 
 bool has(const std::vector<VoxelFragment>& fragments, const std::vector<uint8_t>* only, ivec3 voxel) {
