@@ -276,12 +276,18 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
   if (maps.empty()) return 0.0f;
   const SnapParallelogram q = snap_parallelogram(w, f);
   const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
+  // The normal-offset lookup moves with the shading normal: as far as any material freedom moves it
+  // (seed 248: a normal map's LOD moved the lookup a third of a texel, lighting two more taps).
+  float normal_spread = 0.0f;
+  for (const std::vector<SurfaceMaterial>& g : groups)
+    for (const SurfaceMaterial& alt : g) normal_spread = std::max(normal_spread, glm::length(alt.shading_normal - m.shading_normal));
   float slack = 0.0f;
   for (size_t i = 0; i < std::min(maps.size(), scene.lights.size()); ++i) {
     const Light& light = scene.lights[i];
     const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
     // A sliver's shift has no bound: any visibility.
-    const VisibilityRange r = w.bounded ? snap_surface_visibility_range(maps[i], light, q, m.shading_normal, settings) : VisibilityRange{0.0f, 1.0f};
+    const VisibilityRange r = w.bounded ? snap_surface_visibility_range(maps[i], light, q, m.shading_normal, settings, normal_spread)
+                                        : VisibilityRange{0.0f, 1.0f};
     const float moves = std::max(r.hi - vis, vis - r.lo);
     if (moves <= 0.0f) continue;
     float open = 0.0f;
