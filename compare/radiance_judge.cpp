@@ -98,7 +98,7 @@ WorstChannel radiance_worst(const RadianceInputs& in, size_t i, bool exact_voxel
     const size_t k = i * size_t(in.ref.channels) + size_t(c);
     const double r = in.ref.data[k], t = in.test.data[i * size_t(in.test.channels) + size_t(c)];
     const double slack = in.slack && c < 3 ? double(channel0(in.slack, i)) : 0.0;
-    double d = std::abs(t - r), bound = exact_voxel ? 0.0 : m.bound(r, n) + slack;
+    double d = std::abs(t - r), bound = exact_voxel ? 0.0 : m.bound(r, n, slack);
     double admitted = bound;
     if (interval) {
       const double l = double(in.lo->data[k]) - m.abs - slack, h = double(in.hi->data[k]) + m.abs + slack;

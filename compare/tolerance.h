@@ -71,8 +71,11 @@ struct VoxelModel {
   bool cas_interval = false;      // use the reference's interval [cas_lo, cas_hi] +- abs (CAS or running mean)
   std::string source;
 
-  /// |test - ref| allowed for a voxel channel of value `ref` reduced from `fragments` fragments.
-  double bound(double ref, double fragments) const;
+  /// |test - ref| allowed for a voxel channel of value `ref` reduced from `fragments` fragments
+  /// whose mean may move by `slack` (the reference's shading slack): the binary16 storage term is
+  /// taken at |ref| + the rest, where the test's mean may lie (seed 2191: a voxel the reference
+  /// leaves dark, GL's mean 0.17 rounded to half by 6e-5, when half-ulp(0) is 2^-24).
+  double bound(double ref, double fragments, double slack = 0.0) const;
 };
 
 /// The bound a voxel model states, written from its numbers.

@@ -47,17 +47,19 @@ struct VoxelRuns {
   size_t begin = 0, end = 0, extra_begin = 0, extra_end = 0;
 };
 
-// Calls visit(runs) for every voxel of `vox` that has an uncertain fragment or an extra one.
+// Calls visit(runs) for every voxel that has an uncertain fragment of `vox` or an extra one,
+// including voxels only extra fragments reach (begin == end there).
 void for_each_uncertain_voxel(const Voxelization& vox, const std::function<void(const VoxelRuns&)>& visit) {
   const auto& f = vox.fragments;
   const auto& x = vox.may_add;
   size_t b = 0, xb = 0;
-  while (b < f.size()) {
+  while (b < f.size() || xb < x.size()) {
+    const int64_t key = b == f.size()    ? key_voxel(vox, x[xb])
+                        : xb == x.size() ? key_voxel(vox, f[b])
+                                         : std::min(key_voxel(vox, f[b]), key_voxel(vox, x[xb]));
     size_t e = b;
     bool uncertain = false;
-    while (e < f.size() && f[e].voxel == f[b].voxel) uncertain |= vox.may_drop[e++] != 0;
-    const int64_t key = key_voxel(vox, f[b]);
-    while (xb < x.size() && key_voxel(vox, x[xb]) < key) ++xb;
+    while (e < f.size() && key_voxel(vox, f[e]) == key) uncertain |= vox.may_drop[e++] != 0;
     size_t xe = xb;
     while (xe < x.size() && key_voxel(vox, x[xe]) == key) ++xe;
     if (uncertain || xe > xb) visit({b, e, xb, xe});
@@ -191,14 +193,14 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
     double widest = 0.0;
     for (int c = 0; c < 3; ++c) {
       std::vector<double> clo, chi, ulo, uhi;
-      double mean = 0.0;
+      double mean = 0.0;  // a voxel only extra fragments reach holds no light in the reference
       for (size_t k = r.begin; k < r.end; ++k) {
         const double v = double(values[k][c]), s = double(fragment_slack[k]);
         mean += v;
         (vox.may_drop[k] ? ulo : clo).push_back(v - s);
         (vox.may_drop[k] ? uhi : chi).push_back(v + s);
       }
-      mean /= double(r.end - r.begin);
+      if (r.end > r.begin) mean /= double(r.end - r.begin);
       for (size_t k = r.extra_begin; k < r.extra_end; ++k) {
         ulo.push_back(double(extra_values[k][c]) - double(extra_slack[k]));
         uhi.push_back(double(extra_values[k][c]) + double(extra_slack[k]));
@@ -209,7 +211,7 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
       // still occupy keeps RGB 0 (stages/voxel_fill.h; seed 290's thickened voxel).
       if (clo.empty()) widest = std::max(widest, std::abs(mean));
     }
-    const ivec3 v = vox.fragments[r.begin].voxel;
+    const ivec3 v = r.end > r.begin ? vox.fragments[r.begin].voxel : vox.may_add[r.extra_begin].voxel;
     float& s = *slack.voxel(v.x, v.y, v.z);
     s = std::max(s, std::nextafter(float(widest), std::numeric_limits<float>::infinity()));  // rounded up
     if (exact.voxel_count() > 0) *exact.voxel(v.x, v.y, v.z) = 0.0f;

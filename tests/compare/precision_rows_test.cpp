@@ -234,6 +234,17 @@ TEST(PrecisionRows, HalfFloatAdmitsOneUlpPerSide) {
   EXPECT_EQ(radiance_verdict("rgba16f", ref, test), Verdict::Pass);
 }
 
+// The half-ulps are taken where the test's mean may lie: a dark reference voxel (0) whose
+// fragments may move its mean by a slack of 0.17 stores a half rounded at 0.17 (spacing 2^-13),
+// not at 0 (2^-24).
+TEST(PrecisionRows, HalfFloatUlpsAtTheFarEndOfTheSlack) {
+  const VoxelModel m = voxel_model("rgba16f", "fixed_point");
+  const double slack = 0.17;
+  const double bound = m.bound(0.0, 1.0, slack);
+  EXPECT_DOUBLE_EQ(bound, m.abs + slack + m.half_ulps * 0x1p-13);
+  EXPECT_GT(bound - (m.bound(0.0, 1.0) + slack), 1e-4);  // what half-ulp(0) would have left out
+}
+
 TEST(PrecisionRows, HalfFloatFourUlpsFail) {
   const Volume ref = voxel_grey(0.5f);
   EXPECT_EQ(radiance_verdict("rgba16f", ref, shifted_rgb(ref, 4.0 * half_ulp(0.5))), Verdict::Fail);

@@ -225,6 +225,34 @@ TEST(CoverageTies, AVoxelEveryFragmentMayLeaveAdmitsNoLight) {
   EXPECT_GT(all_may_leave, 0u);
 }
 
+// A voxel only fragments that may be added reach holds no light in the reference (RGB 0 where a
+// fill occupies it); GL may write any of them, so its slack reaches up to the largest one's light.
+TEST(CoverageTies, AVoxelOnlyAddedFragmentsReachAdmitsTheirLight) {
+  std::mt19937 rng(11);
+  Scene s = tilted_triangles(rng);
+  for (Material& m : s.materials) m.emissive_factor = vec3(0.5f);
+  const int n = 16;
+  const Voxelization vox = voxelization_with_ties(s, n);
+  VctSettings settings;
+  settings.grid = n;
+  const std::vector<vec3> values = fragment_radiance(s, vox, {}, settings);
+  Volume slack(n, n, n, 1), exact(n, n, n, 1);
+  widen_for_coverage_ties(s, vox, values, std::vector<float>(vox.fragments.size(), 0.0f), {}, settings, nullptr, slack,
+                          exact);
+  Voxelization added;
+  added.n = n;
+  added.fragments = vox.may_add;
+  const std::vector<vec3> added_values = fragment_radiance(s, added, {}, settings);
+  size_t only_added = 0;
+  for (size_t k = 0; k < vox.may_add.size(); ++k) {
+    const ivec3 v = vox.may_add[k].voxel;
+    if (vox.occupancy.voxel(v.x, v.y, v.z)[0] > 0.0f) continue;
+    ++only_added;
+    EXPECT_GE(double(*slack.voxel(v.x, v.y, v.z)), double(added_values[k].x)) << "voxel " << v.x << " " << v.y << " " << v.z;
+  }
+  EXPECT_GT(only_added, 0u);
+}
+
 bool has(const std::vector<VoxelFragment>& fragments, const std::vector<uint8_t>* only, ivec3 voxel) {
   for (size_t i = 0; i < fragments.size(); ++i)
     if (fragments[i].voxel == voxel && (!only || (*only)[i])) return true;
