@@ -138,11 +138,13 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox) {
     keep_unique(vox, added);
     return;
   }
-  for (const vec2 shift : {vec2(-1, -1), vec2(-1, 1), vec2(1, -1), vec2(1, 1)}) {
-    std::vector<vec2> moved = vox.samples;
-    for (vec2& p : moved) p += shift * float(kVertexSnapStep);
-    merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, moved), vox.may_drop, added);
-  }
+  // Each vertex snaps on its own (one step per axis at most): what every snap covers keeps its
+  // fragments, what some snap covers may add one (stages/voxelize.h SnapWorld). The four common
+  // shifts of the sample pattern are among those snaps, but they missed seed 2429: a fragment whose
+  // only covered sample lies on its triangle's top edge (e = 0), kept by every common shift, which
+  // llvmpipe did not write. Per vertex, an edge also turns (extrapolated samples beyond its ends).
+  for (const SnapWorld world : {SnapWorld::Certain, SnapWorld::Possible})
+    merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, vox.samples, AlphaTest::Apply, world), vox.may_drop, added);
   add_depth_ties(scene, vox, added);
   add_voxel_alpha_ties(scene, vox, vox.may_drop, added);
   keep_unique(vox, added);

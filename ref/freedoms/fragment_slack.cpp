@@ -258,6 +258,29 @@ SnapParallelogram snap_parallelogram(const SnapWindow& w, const VoxelFragment& f
   return {f.position, vec3(along_u), vec3(along_v)};
 }
 
+/// The normal-offset lookup moves with the shading normal (seed 248: a normal map's LOD moved it a
+/// third of a texel, lighting two more taps), so the visibility is looked up with every shading
+/// normal the material freedoms give: these representatives, each standing for the normals within
+/// kNormalCluster of it (snap_surface_visibility_range's normal_spread), the reference's first.
+constexpr float kNormalCluster = 1.0f / 64.0f;
+struct NormalCover {
+  std::vector<vec3> normals;
+  float spread = 0.0f;  // the farthest any normal lies from its representative (<= kNormalCluster)
+};
+NormalCover normal_representatives(const vec3& exact, const MaterialGroups& groups) {
+  NormalCover c{{exact}, 0.0f};
+  for (const std::vector<SurfaceMaterial>& g : groups)
+    for (const SurfaceMaterial& alt : g) {
+      float nearest = INFINITY;
+      for (const vec3& r : c.normals) nearest = std::min(nearest, glm::length(alt.shading_normal - r));
+      if (nearest <= kNormalCluster)
+        c.spread = std::max(c.spread, nearest);
+      else
+        c.normals.push_back(alt.shading_normal);
+    }
+  return c;
+}
+
 /// The PCF taps a correct GL may read anywhere the snap may put the fragment: per light, its
 /// unshadowed light times how far the visibility moves over the whole parallelogram (and the
 /// lookup's own float ties), freedoms/snap_visibility.h. The corners alone miss a texel edge or
@@ -276,18 +299,20 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
   if (maps.empty()) return 0.0f;
   const SnapParallelogram q = snap_parallelogram(w, f);
   const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
-  // The normal-offset lookup moves with the shading normal: as far as any material freedom moves it
-  // (seed 248: a normal map's LOD moved the lookup a third of a texel, lighting two more taps).
-  float normal_spread = 0.0f;
-  for (const std::vector<SurfaceMaterial>& g : groups)
-    for (const SurfaceMaterial& alt : g) normal_spread = std::max(normal_spread, glm::length(alt.shading_normal - m.shading_normal));
+  const NormalCover cover = normal_representatives(m.shading_normal, groups);
   float slack = 0.0f;
   for (size_t i = 0; i < std::min(maps.size(), scene.lights.size()); ++i) {
     const Light& light = scene.lights[i];
     const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
     // A sliver's shift has no bound: any visibility.
-    const VisibilityRange r = w.bounded ? snap_surface_visibility_range(maps[i], light, q, m.shading_normal, settings, normal_spread)
-                                        : VisibilityRange{0.0f, 1.0f};
+    VisibilityRange r{0.0f, 1.0f};
+    if (w.bounded) {
+      r = {1.0f, 0.0f};
+      for (const vec3& n : cover.normals) {
+        const VisibilityRange one = snap_surface_visibility_range(maps[i], light, q, n, settings, cover.spread);
+        r.lo = std::min(r.lo, one.lo), r.hi = std::max(r.hi, one.hi);
+      }
+    }
     const float moves = std::max(r.hi - vis, vis - r.lo);
     if (moves <= 0.0f) continue;
     float open = 0.0f;

@@ -160,6 +160,11 @@ EdgeSetup edge_setup(const RasterTriangle& t) {
   return e;
 }
 
+int64_t edge_snap_reach(const RasterTriangle& t, int i, int64_t px, int64_t py) {
+  const int j = (i + 1) % 3, k = (i + 2) % 3;  // edge i runs from vertex j to vertex k (edge_setup)
+  return std::abs(px - t.x[j]) + std::abs(py - t.y[j]) + std::abs(px - t.x[k]) + std::abs(py - t.y[k]) + 4;
+}
+
 void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f) {
   const int64_t px = int64_t(x) * kSubpixelScale + kSubpixelScale / 2;
   const int64_t py = int64_t(y) * kSubpixelScale + kSubpixelScale / 2;

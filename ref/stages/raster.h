@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/math.h"
@@ -87,6 +88,11 @@ struct EdgeSetup {
 };
 EdgeSetup edge_setup(const RasterTriangle& t);
 
+/// How far a snap of each vertex by up to one subpixel step per axis may move edge i's function
+/// at (px, py): the signed area of (v_j', v_k', p) moves by at most s (|p - v_j|_1 + |p - v_k|_1)
+/// + 4 s^2 with s = 1 (stages/voxelize.h SnapWorld), for any p.
+int64_t edge_snap_reach(const RasterTriangle& t, int i, int64_t px, int64_t py);
+
 /// Interpolates at the centre of pixel (x, y) (window coordinates), filling depth and bary.
 void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f);
 
@@ -110,15 +116,17 @@ bool centre_row_span(const EdgeSetup& e, int y, int& x0, int& x1);
 /// lower-left corner: what rasterize() covers with that one sample (centre_row_span is (128, 128)).
 bool sample_row_span(const EdgeSetup& e, int y, int64_t sx, int64_t sy, int& x0, int& x1);
 
-/// Calls emit(const RasterFragment&) for every pixel of [x0,x1]x[y0,y1] (inclusive, window
-/// coordinates) with at least one covered sample, in row-major order (y, then x).
-template <class Emit>
-void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0, int x1, int y0, int y1,
-               Emit&& emit) {
-  x0 = x0 > t.xmin ? x0 : t.xmin;
-  x1 = x1 < t.xmax ? x1 : t.xmax;
-  y0 = y0 > t.ymin ? y0 : t.ymin;
-  y1 = y1 < t.ymax ? y1 : t.ymax;
+/// rasterize with the sample test `covers(edges, px, py)` (subpixel coordinates) and the pixel box
+/// grown by `grow` pixels: the raster of a triangle whose edges may lie elsewhere (a vertex snap's
+/// worlds, freedoms/voxel_snap_coverage.h); attributes are still interpolated at the pixel centre
+/// from `t`.
+template <class Covers, class Emit>
+void rasterize_covering(const RasterTriangle& t, const std::vector<vec2>& samples, int x0, int x1, int y0, int y1,
+                        int grow, Covers&& covers, Emit&& emit) {
+  x0 = x0 > t.xmin - grow ? x0 : t.xmin - grow;
+  x1 = x1 < t.xmax + grow ? x1 : t.xmax + grow;
+  y0 = y0 > t.ymin - grow ? y0 : t.ymin - grow;
+  y1 = y1 < t.ymax + grow ? y1 : t.ymax + grow;
   if (x0 > x1 || y0 > y1) return;
   const EdgeSetup e = edge_setup(t);
   int64_t sx[32], sy[32];
@@ -131,12 +139,8 @@ void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       uint32_t mask = 0;
-      for (int s = 0; s < ns; ++s) {
-        const int64_t px = int64_t(x) * kSubpixelScale + sx[s], py = int64_t(y) * kSubpixelScale + sy[s];
-        bool in = true;
-        for (int i = 0; i < 3 && in; ++i) in = e.a[i] * px + e.b[i] * py + e.c[i] + e.bias[i] >= 0;
-        if (in) mask |= 1u << s;
-      }
+      for (int s = 0; s < ns; ++s)
+        if (covers(e, int64_t(x) * kSubpixelScale + sx[s], int64_t(y) * kSubpixelScale + sy[s])) mask |= 1u << s;
       if (!mask) continue;
       f.x = x;
       f.y = y;
@@ -145,6 +149,19 @@ void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0
       emit(static_cast<const RasterFragment&>(f));
     }
   }
+}
+
+/// Calls emit(const RasterFragment&) for every pixel of [x0,x1]x[y0,y1] (inclusive, window
+/// coordinates) with at least one covered sample, in row-major order (y, then x).
+template <class Emit>
+void rasterize(const RasterTriangle& t, const std::vector<vec2>& samples, int x0, int x1, int y0, int y1,
+               Emit&& emit) {
+  const auto covers = [](const EdgeSetup& e, int64_t px, int64_t py) {
+    for (int i = 0; i < 3; ++i)
+      if (e.a[i] * px + e.b[i] * py + e.c[i] + e.bias[i] < 0) return false;
+    return true;
+  };
+  rasterize_covering(t, samples, x0, x1, y0, y1, 0, covers, std::forward<Emit>(emit));
 }
 
 /// Every triangle of a mesh set up for one viewport (clipped, projected, snapped; flattened in

@@ -18,7 +18,26 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
   return voxelize_gpu_rule(scene, n, standard_sample_positions(msaa_samples));
 }
 
-Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& samples, AlphaTest alpha) {
+namespace {
+
+// The sample test of `world` (voxelize.h SnapWorld).
+auto sample_test(const RasterTriangle& t, SnapWorld world) {
+  return [&t, world](const EdgeSetup& e, int64_t px, int64_t py) {
+    for (int i = 0; i < 3; ++i) {
+      const int64_t v = e.a[i] * px + e.b[i] * py + e.c[i];
+      const bool in = world == SnapWorld::Reference ? v + e.bias[i] >= 0
+                      : world == SnapWorld::Certain ? v - edge_snap_reach(t, i, px, py) + e.bias[i] >= 0
+                                                    : v + edge_snap_reach(t, i, px, py) >= 0;
+      if (!in) return false;
+    }
+    return true;
+  };
+}
+
+}  // namespace
+
+Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& samples, AlphaTest alpha,
+                               SnapWorld world) {
   if (samples.empty() || samples.size() > 32)
     throw std::invalid_argument("voxelize_gpu_rule: 1 to 32 sample positions (one coverage bit each)");
   std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
@@ -40,7 +59,9 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
     auto& out = per_tri[size_t(ti)];
     const bool alpha_tested = alpha == AlphaTest::Apply && triangle_alpha_tested(scene, uint32_t(ti));
     for (const RasterTriangle& r : rt) {
-      rasterize(r, samples, 0, n - 1, 0, n - 1, [&](const RasterFragment& f) {
+      // A snap moves coverage by a few subpixels at most: one pixel of margin holds it.
+      const int grow = world == SnapWorld::Possible ? 1 : 0;
+      rasterize_covering(r, samples, 0, n - 1, 0, n - 1, grow, sample_test(r, world), [&](const RasterFragment& f) {
         // A masked fragment adds neither opacity nor light (voxelize.frag discards it); tested at
         // the pixel centre where the fragment's attributes are evaluated.
         if (alpha_tested && surface_masked(scene, uint32_t(ti), f.bary.y, f.bary.z)) return;
