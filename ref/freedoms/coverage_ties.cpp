@@ -89,21 +89,36 @@ std::vector<double> negated(std::vector<double> v) {
   return v;
 }
 
+// The voxels across a depth boundary that fragment f may be written to instead (within its
+// margin of the boundary), appended to `out`; true when there is one.
+bool depth_tie_neighbours(const Scene& scene, int n, const VoxelFragment& f, std::vector<VoxelFragment>& out) {
+  const VoxelDepthTie tie = voxel_depth_tie(scene, n, f);
+  const int index = f.voxel[tie.axis];
+  // A sliver's depth has no bound (its snapped plane may tilt without limit): any layer of its
+  // column (medium seed 2: a sliver 0.8 px wide across four layers, written two layers over).
+  const int lo = std::isinf(tie.margin) ? 0 : std::max(0, int(std::floor(tie.depth - tie.margin)));
+  const int hi = std::isinf(tie.margin) ? n - 1 : std::min(n - 1, int(std::floor(tie.depth + tie.margin)));
+  bool any = false;
+  for (int layer = lo; layer <= hi; ++layer) {
+    if (layer == index) continue;
+    VoxelFragment moved = f;
+    moved.voxel[tie.axis] = layer;
+    out.push_back(moved);
+    any = true;
+  }
+  return any;
+}
+
 // A fragment whose depth lies within its margin of a voxel boundary may be written to the voxel
-// on the other side: it may be dropped here and added there.
+// on the other side: it may be dropped here and added there. So may a fragment a snap may add
+// (medium seed 2: a fragment only the Possible world covers, written one layer over).
 void add_depth_ties(const Scene& scene, Voxelization& vox, std::vector<VoxelFragment>& added) {
-  for (size_t i = 0; i < vox.fragments.size(); ++i) {
-    const VoxelFragment& f = vox.fragments[i];
-    const VoxelDepthTie tie = voxel_depth_tie(scene, vox.n, f);
-    const int index = f.voxel[tie.axis];
-    for (const int side : {-1, 1}) {
-      const double to_boundary = side < 0 ? tie.depth - double(index) : double(index + 1) - tie.depth;
-      if (!(to_boundary <= tie.margin) || index + side < 0 || index + side >= vox.n) continue;
-      vox.may_drop[i] = 1;
-      VoxelFragment moved = f;
-      moved.voxel[tie.axis] += side;
-      added.push_back(moved);
-    }
+  for (size_t i = 0; i < vox.fragments.size(); ++i)
+    if (depth_tie_neighbours(scene, vox.n, vox.fragments[i], added)) vox.may_drop[i] = 1;
+  const size_t snapped = added.size();
+  for (size_t k = 0; k < snapped; ++k) {
+    const VoxelFragment f = added[k];  // a copy: the vector grows
+    depth_tie_neighbours(scene, vox.n, f, added);
   }
 }
 
@@ -145,8 +160,8 @@ void add_coverage_ties(const Scene& scene, Voxelization& vox) {
   // llvmpipe did not write. Per vertex, an edge also turns (extrapolated samples beyond its ends).
   for (const SnapWorld world : {SnapWorld::Certain, SnapWorld::Possible})
     merge_shifted(vox, voxelize_gpu_rule(scene, vox.n, vox.samples, AlphaTest::Apply, world), vox.may_drop, added);
-  add_depth_ties(scene, vox, added);
   add_voxel_alpha_ties(scene, vox, vox.may_drop, added);
+  add_depth_ties(scene, vox, added);  // every fragment kept or added may also change layer
   keep_unique(vox, added);
 }
 

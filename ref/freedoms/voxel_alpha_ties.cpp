@@ -1,6 +1,9 @@
 #include "freedoms/voxel_alpha_ties.h"
 
+#include <cmath>
+
 #include "freedoms/alpha_ties.h"
+#include "freedoms/fragment_slack.h"
 #include "scene/alpha_mask.h"
 
 namespace vct {
@@ -32,6 +35,9 @@ void barycentric_gradients(const Scene& scene, int n, uint32_t t, glm::dvec2& db
 
 bool may_flip(const Scene& scene, int n, const VoxelFragment& f) {
   if (!triangle_alpha_tested(scene, f.triangle)) return false;
+  // A sliver's snapped barycentrics have no bound (freedoms/fragment_slack.h voxel_snap_reach):
+  // any texel, any alpha (medium seed 2).
+  if (std::isinf(voxel_snap_reach(scene, n, f))) return true;
   glm::dvec2 dx, dy;
   barycentric_gradients(scene, n, f.triangle, dx, dy);
   return alpha_test_may_flip_affine(scene, f.triangle, vec3(1.0f - f.b1 - f.b2, f.b1, f.b2), dx, dy);
@@ -42,9 +48,9 @@ bool may_flip(const Scene& scene, int n, const VoxelFragment& f) {
 void add_voxel_alpha_ties(const Scene& scene, const Voxelization& vox, std::vector<uint8_t>& may_drop,
                           std::vector<VoxelFragment>& may_add) {
   if (vox.samples.empty() || !scene_has_alpha_test(scene)) return;
-  // Every covered pixel, masks ignored: a superset of vox.fragments in the same (voxel, triangle)
-  // order, so one walk pairs each kept fragment with its entry.
-  const Voxelization all = voxelize_gpu_rule(scene, vox.n, vox.samples, AlphaTest::Ignore);
+  // Every pixel some snap covers, masks ignored: a superset of vox.fragments in the same (voxel,
+  // triangle) order, so one walk pairs each kept fragment with its entry.
+  const Voxelization all = voxelize_gpu_rule(scene, vox.n, vox.samples, AlphaTest::Ignore, SnapWorld::Possible);
   size_t k = 0;
   for (const VoxelFragment& f : all.fragments) {
     while (k < vox.fragments.size() && fragment_before(vox.n, vox.fragments[k], f)) ++k;
