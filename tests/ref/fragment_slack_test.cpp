@@ -11,6 +11,7 @@
 #include "freedoms/fragment_slack.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/texture_slack.h"
+#include "scene/gltf_loader.h"
 #include "scene/texture_mips.h"
 #include "scene/texture_sample.h"
 #include "stage_test_scene.h"
@@ -193,6 +194,22 @@ TEST(FragmentSlack, PositionTermReachesEveryNearestTexelInsideTheSnap) {
   }
   EXPECT_GT(checked, 50);
   EXPECT_GT(inside_beyond_corners, 5);  // the case the corners alone would miss
+}
+
+// scenes/regressions/seed-229-small: the voxel at (10, 8, 8) holds one fragment extrapolated far
+// past its triangle, under a sun; its snap square covers a dark texel of a 33x33 NEAREST texture
+// that no corner reads. Mesa llvmpipe stored 0.01678 (red) against the reference's 0.58643: the
+// slack must reach that 0.5697 (the square's corners alone gave 0.551).
+TEST(FragmentSlack, Seed229SnapSquareReachesTheDarkTexel) {
+  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-229-small/scene.gltf");
+  VctSettings settings;
+  settings.grid = 16;
+  settings.shadow_map_size = 64;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
+  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
+  const Volume v = voxel_shading_slack(vox, slack);
+  EXPECT_GE(*v.voxel(10, 8, 8), 0.58643f - 0.01678f);
 }
 
 // Exact fragments: untextured, no light reaching them by the margin, no bounce. A floor with
