@@ -191,9 +191,12 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
     // with another one covering that sample (two faces meeting at a fold's edge, one front- and
     // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
     // order under a shift").
-    widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, shifted, true, sample), g);
+    for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, shifted, sample))
+      widen_by(scene, view_proj, vb, tied, g);
   }
-  widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
+  // Every surface tied in depth with the reference's own front at the centre, not only the nearest
+  // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717).
+  for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, vb)) widen_by(scene, view_proj, vb, tied, g);
   if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);
 }
 
