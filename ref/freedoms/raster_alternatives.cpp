@@ -104,38 +104,46 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   const auto discarded = [&](const RasterTriangle& t, const RasterFragment& f) {
     return triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z);
   };
-  // The deepest any fragment may be and still be in front of all others: min over them of z + m.
+  // The deepest a fragment may lie and still come out in front of all the others: the smallest
+  // z + m at the pixel.
   std::vector<double> ceiling(front.depth.size(), 1e300);
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     if (discarded(t, f)) return;
     const size_t i = front.index(f.x, h - 1 - f.y);
     ceiling[i] = std::min(ceiling[i], double(f.depth) + margins[ti]);
   });
-  // Every other surface whose nearest admissible depth reaches it (one entry per source triangle:
-  // a clipped triangle's pieces are one surface). Bands own their rows, so each pixel's list is
-  // filled by one thread, in triangle order.
-  struct Tied {
+  // Every other surface whose z - m reaches it: the first at a pixel into layer 0, any further one
+  // (three surfaces or more tied at one pixel: rare) into its row's overflow. Bands own their rows,
+  // so each pixel and row is written by one thread, in triangle order.
+  struct Extra {
+    int x;
     uint32_t ti;
     RasterFragment f;
   };
-  std::vector<std::vector<Tied>> tied(front.depth.size());
+  std::vector<VisibilityBuffer> out(1, front);
+  std::vector<uint8_t> has_first(front.depth.size(), 0);
+  std::vector<std::vector<Extra>> overflow(static_cast<size_t>(h));
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     if (discarded(t, f)) return;
-    const size_t i = front.index(f.x, h - 1 - f.y);
+    const int row = h - 1 - f.y;
+    const size_t i = front.index(f.x, row);
     if (int32_t(t.source) == front.triangle[i] || !(double(f.depth) - margins[ti] <= ceiling[i])) return;
-    for (const Tied& other : tied[i])
-      if (binned.triangles[other.ti].source == t.source) return;
-    tied[i].push_back({ti, f});
-  });
-  size_t layers = 0;
-  for (const std::vector<Tied>& list : tied) layers = std::max(layers, list.size());
-  std::vector<VisibilityBuffer> out(layers, front);
-  parallel_rows(h, [&](int row) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = front.index(x, row);
-      for (size_t k = 0; k < tied[i].size(); ++k) store_fragment(out[k], i, binned.triangles[tied[i][k].ti], tied[i][k].f);
+    if (!has_first[i]) {
+      has_first[i] = 1;
+      store_fragment(out[0], i, t, f);
+    } else if (out[0].triangle[i] != int32_t(t.source)) {  // else a clipped triangle's other piece
+      overflow[size_t(row)].push_back({f.x, ti, f});
     }
   });
+  for (int row = 0; row < h; ++row) {
+    std::vector<size_t> placed(size_t(w), 1);  // layer 0 holds each pixel's first
+    for (const Extra& e : overflow[size_t(row)]) {
+      const size_t layer = placed[size_t(e.x)]++;
+      if (out.size() <= layer) out.push_back(front);
+      store_fragment(out[layer], front.index(e.x, row), binned.triangles[e.ti], e.f);
+    }
+  }
+  if (std::none_of(has_first.begin(), has_first.end(), [](uint8_t first) { return first != 0; })) out.clear();
   return out;
 }
 
