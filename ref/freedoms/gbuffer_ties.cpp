@@ -162,6 +162,13 @@ void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const Visib
     for (int x = 0; x < vb.width; ++x)
       if (flips.may_flip[vb.index(x, row)]) widen_by_alternative(scene, view_proj, wb, flips.surface, x, row, g);
   });
+  // The end of a chain of flips (docs/compare.md, "Alpha-mask ties"), as in the shadow maps: every
+  // layer in front of the front-most fragment no GL discards is cut away for certain or may flip,
+  // so a correct GL may discard them all and show that fragment (or the clear values where there is
+  // none) wherever it is not the reference's own front. Hunt seed 524: both faces of a masked thin
+  // wall may flip at a pixel; the reference cut the first and kept the second, llvmpipe cut both
+  // and showed the room behind.
+  widen_by(scene, view_proj, vb, front_certainly_kept(scene, view_proj, vb.width, vb.height), g);
 }
 
 }  // namespace

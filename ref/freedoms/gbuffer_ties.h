@@ -47,7 +47,8 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 /// tied in depth with it at that sample, by every surface whose depth at the centre ties with the
 /// front one's (each fragment whose depth minus its margin reaches the smallest depth plus margin
 /// at the pixel: depth_tied_surfaces), by the negated normal where a front surface's facing may flip,
-/// and, where an alpha test may go either way (freedoms/alpha_ties.h), by its other outcome. Each
+/// and, where an alpha test may go either way (freedoms/alpha_ties.h), by its other outcome and by
+/// the end of the chain of flips (the front-most fragment no GL discards, or the clear values). Each
 /// alternative surface comes with its own freedoms: its plane at the shifts and its values +- its
 /// own texture slack.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
