@@ -98,9 +98,11 @@ MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   e.images = image_bytes(v, scene.shadow_layers);
   // Besides the G-buffer's VisibilityBuffer (counted in the images: it is kept for the freedoms),
   // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel
-  // (a shifted sample's, the depth-tied surfaces', or with alpha masks the unmasked front and
-  // the surfaces behind) with two doubles per pixel for the depth ties' margins, all freed when
-  // the G-buffer is done. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
+  // (a shifted sample's, the depth-tied surfaces' first layer, or with alpha masks the unmasked
+  // front and the surfaces behind) with two doubles per pixel (the depth ties' ceiling and a flag),
+  // all freed when the G-buffer is done. A further layer of 22 B/pixel exists only where three or
+  // more surfaces tie in depth at one pixel (raster_alternatives.h, depth_tied_surfaces): not
+  // counted. Shadow maps are rasterized depth-only (stages/depth_raster.h) into
   // the map itself, counted in the images. Before the G-buffer, one map (or face) at a time, its
   // range of alternatives (freedoms/shadow_map_ties.h) is written straight into its image (counted
   // there) through one band of scratch per thread; with alpha masks the alpha ties add the

@@ -162,6 +162,13 @@ void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const Visib
     for (int x = 0; x < vb.width; ++x)
       if (flips.may_flip[vb.index(x, row)]) widen_by_alternative(scene, view_proj, wb, flips.surface, x, row, g);
   });
+  // The end of a chain of flips (docs/compare.md, "Alpha-mask ties"), as in the shadow maps: every
+  // layer in front of the front-most fragment no GL discards is cut away for certain or may flip,
+  // so a correct GL may discard them all and show that fragment (or the clear values where there is
+  // none) wherever it is not the reference's own front. Hunt seed 524: both faces of a masked thin
+  // wall may flip at a pixel; the reference cut the first and kept the second, llvmpipe cut both
+  // and showed the room behind.
+  widen_by(scene, view_proj, vb, front_certainly_kept(scene, view_proj, vb.width, vb.height), g);
 }
 
 }  // namespace
@@ -191,9 +198,12 @@ void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityB
     // with another one covering that sample (two faces meeting at a fold's edge, one front- and
     // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
     // order under a shift").
-    widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, shifted, true, sample), g);
+    for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, shifted, sample))
+      widen_by(scene, view_proj, vb, tied, g);
   }
-  widen_by(scene, view_proj, vb, other_surfaces(scene, view_proj, vb, true), g);
+  // Every surface tied in depth with the reference's own front at the centre, not only the nearest
+  // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717).
+  for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, vb)) widen_by(scene, view_proj, vb, tied, g);
   if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);
 }
 

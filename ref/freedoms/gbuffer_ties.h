@@ -44,10 +44,11 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 /// triangle's position moves along the view ray under a one-step snap), re-rasterizes the scene
 /// with the sample at each of the four (+-2^-8, +-2^-8) shifts and widens each pixel's range by
 /// the values of any other front surface (or of an empty pixel) found there and of the surface
-/// tied in depth with it at that sample, by the surface whose depth at the centre ties with the
-/// front one's (the other fragment with the smallest depth minus margin, when that is within the
-/// front's depth plus its margin), by the negated normal where a front surface's facing may flip,
-/// and, where an alpha test may go either way (freedoms/alpha_ties.h), by its other outcome. Each
+/// tied in depth with it at that sample, by every surface whose depth at the centre ties with the
+/// front one's (each fragment whose depth minus its margin reaches the smallest depth plus margin
+/// at the pixel: depth_tied_surfaces), by the negated normal where a front surface's facing may flip,
+/// and, where an alpha test may go either way (freedoms/alpha_ties.h), by its other outcome and by
+/// the end of the chain of flips (the front-most fragment no GL discards, or the clear values). Each
 /// alternative surface comes with its own freedoms: its plane at the shifts and its values +- its
 /// own texture slack.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);

@@ -80,41 +80,78 @@ double depth_tie_margin(const RasterTriangle& t) {
   return std::ldexp(1.0, -22) + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
 }
 
-VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
-                                bool depth_ties, vec2 sample) {
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front) {
+  const int w = front.width, h = front.height;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  VisibilityBuffer alt = empty_visibility(w, h);
+  std::vector<float> best(front.depth.size(), 2.0f);  // above every clamped depth
+  for_each_fragment_at(binned, w, h, vec2(0.5f), [&](uint32_t, const RasterTriangle& t, const RasterFragment& f) {
+    const size_t i = front.index(f.x, h - 1 - f.y);
+    if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
+    if (int32_t(t.source) == front.triangle[i] || !(f.depth < best[i])) return;
+    best[i] = f.depth;
+    store_fragment(alt, i, t, f);
+  });
+  return alt;
+}
+
+std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
+                                                  const VisibilityBuffer& front, vec2 sample) {
   const int w = front.width, h = front.height;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   std::vector<double> margins(binned.triangles.size());
-  if (depth_ties)
-    for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
-  // The front fragment's margin, found again by its source triangle at the pixel.
-  std::vector<double> front_margin(front.depth.size(), 0.0), best(front.depth.size(), 1e300);
-  VisibilityBuffer alt = empty_visibility(w, h);
+  for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
+  const auto discarded = [&](const RasterTriangle& t, const RasterFragment& f) {
+    return triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z);
+  };
+  // The deepest a fragment may lie and still come out in front of all the others: the smallest
+  // z + m at the pixel.
+  std::vector<double> ceiling(front.depth.size(), 1e300);
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    if (discarded(t, f)) return;
     const size_t i = front.index(f.x, h - 1 - f.y);
-    if (triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z)) return;
-    if (int32_t(t.source) == front.triangle[i]) {
-      front_margin[i] = std::max(front_margin[i], margins[ti]);
-      return;
-    }
-    const double key = double(f.depth) - margins[ti];
-    if (!(key < best[i])) return;
-    best[i] = key;
-    store_fragment(alt, i, t, f);
+    ceiling[i] = std::min(ceiling[i], double(f.depth) + margins[ti]);
   });
-  if (!depth_ties) return alt;
-  // No tie: the front surface itself, whole (callers skip it where it is the reference's own
-  // front; under a shifted sample it is that sample's front, read with its own barycentrics).
-  for (size_t i = 0; i < alt.triangle.size(); ++i)
-    if (front.triangle[i] < 0 || !(best[i] <= double(front.depth[i]) + front_margin[i])) copy_entry(front, i, alt);
-  return alt;
+  // Every other surface whose z - m reaches it: the first at a pixel into layer 0, any further one
+  // (three surfaces or more tied at one pixel: rare) into its row's overflow. Bands own their rows,
+  // so each pixel and row is written by one thread, in triangle order.
+  struct Extra {
+    int x;
+    uint32_t ti;
+    RasterFragment f;
+  };
+  std::vector<VisibilityBuffer> out(1, front);
+  std::vector<uint8_t> has_first(front.depth.size(), 0);
+  std::vector<std::vector<Extra>> overflow(static_cast<size_t>(h));
+  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    if (discarded(t, f)) return;
+    const int row = h - 1 - f.y;
+    const size_t i = front.index(f.x, row);
+    if (int32_t(t.source) == front.triangle[i] || !(double(f.depth) - margins[ti] <= ceiling[i])) return;
+    if (!has_first[i]) {
+      has_first[i] = 1;
+      store_fragment(out[0], i, t, f);
+    } else if (out[0].triangle[i] != int32_t(t.source)) {  // else a clipped triangle's other piece
+      overflow[size_t(row)].push_back({f.x, ti, f});
+    }
+  });
+  for (int row = 0; row < h; ++row) {
+    std::vector<size_t> placed(size_t(w), 1);  // layer 0 holds each pixel's first
+    for (const Extra& e : overflow[size_t(row)]) {
+      const size_t layer = placed[size_t(e.x)]++;
+      if (out.size() <= layer) out.push_back(front);
+      store_fragment(out[layer], front.index(e.x, row), binned.triangles[e.ti], e.f);
+    }
+  }
+  if (std::none_of(has_first.begin(), has_first.end(), [](uint8_t first) { return first != 0; })) out.clear();
+  return out;
 }
 
 AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb) {
   const int w = vb.width, h = vb.height;
   const VisibilityBuffer unmasked = front_most(scene, view_proj, w, h, AlphaKeep::MayPass);
   AlphaFlipSurfaces out;
-  out.surface = other_surfaces(scene, view_proj, vb, false);  // behind the reference's front
+  out.surface = other_surfaces(scene, view_proj, vb);  // behind the reference's front
   out.may_flip.assign(vb.triangle.size(), 0);
   const WindowBarycentrics wb(view_proj, w, h);
   parallel_rows(h, [&](int row) {

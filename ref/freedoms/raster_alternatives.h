@@ -32,16 +32,27 @@ inline void shifted_sample_steps(int k, int64_t& sx, int64_t& sy) {
 /// values below 1, each at most half an ulp of 1, 2^-24, with room to spare).
 double depth_tie_margin(const RasterTriangle& t);
 
-/// Per pixel, the fragment other than `front`'s (a different source triangle) whose key is
-/// smallest. `depth_ties`: key = depth minus depth_tie_margin, kept when it ties with the front,
-/// z - m <= z_front + m_front (elsewhere the front itself: no alternative). Otherwise key = depth:
-/// the surface behind the front one (triangle -1: none). Alpha-masked fragments are discarded.
-/// Coverage is taken at `sample` (pixel units from the pixel's corner; `front` rendered with the
-/// same sample), depths and barycentrics at the centre, as render_visibility. Rasterized as
+/// Per pixel, the surface behind `front`'s: the fragment of another source triangle with the
+/// smallest depth (triangle -1: none). Alpha-masked fragments are discarded. Rasterized as
 /// render_visibility does (bands, triangles in index order), so the result does not depend on the
 /// thread count.
-VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front,
-                                bool depth_ties, vec2 sample = vec2(0.5f));
+VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front);
+
+/// Depth order (docs/compare.md, "Raster alternatives", "Depth order" and "Every surface tied in
+/// depth"): every surface other than `front`'s that a correct GL may keep under GL_LESS at each
+/// pixel. Each fragment's depth may lie anywhere in [z - m, z + m] (m = depth_tie_margin, its plane
+/// moved by one snap step and the float evaluation), each on its own, so fragment S may come out in
+/// front iff z_S - m_S <= min over the other fragments T of z_T + m_T; since z_S - m_S <= z_S + m_S,
+/// that is z_S - m_S <= the minimum of z + m over all fragments at the pixel, the front's included.
+/// Every such fragment is admissible, not only the one with the smallest z - m: a plane, its
+/// coplanar twin and a third surface crossing them at one centre tie all three ways (hunt seed
+/// 2717). Returned as layers: layer k holds each pixel's k-th tied fragment (in triangle order),
+/// and `front`'s own entry where a pixel has fewer (callers skip what equals their front). Coverage
+/// is taken at `sample` (pixel units from the pixel's corner; `front` rendered with the same
+/// sample), depths and barycentrics at the centre, as render_visibility; alpha-masked fragments are
+/// discarded.
+std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
+                                                  const VisibilityBuffer& front, vec2 sample = vec2(0.5f));
 
 /// Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface a correct GL may keep (masks
 /// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)

@@ -131,5 +131,81 @@ TEST(CoplanarTwin, OnlyTheTwinsSlackIsAdmittedNotBeyond) {
             Verdict::Fail);
 }
 
+// Three surfaces tied in depth at one centre (hunt seed 2717, scenes/regressions/seed-2717-small: a
+// plane, its coplanar twin and a sphere crossing the plane): a green quad on z = -2, its red twin
+// 10^-6 behind it (1.3e-7 in window depth, within the two flat planes' margins 2 x 2^-22), and a
+// blue quad tilted 45 degrees that crosses z = -2 on the line the centres of pixel column 10 see.
+// On that column all three tie: each one's depth minus its margin reaches the smallest depth plus
+// margin (the green's). The tilted quad's margin (2^-8 of its steep slope) makes its depth minus
+// margin the smallest there, so the nearest-key rule found it alone, and the twin GL may show was
+// "not among the alternatives". One column left the tilted quad is 1/2^8 x 256 = a whole pixel's
+// slope in front: nothing ties there.
+constexpr float kCrossingColumn = 10;
+
+float column_x(float col, float depth) {
+  return (col + 0.5f - 0.5f * float(kSize)) * 2.0f * std::tan(0.5f) * depth / float(kSize);
+}
+
+GBuffer crossing_view() {
+  Scene s;
+  const uint32_t green = test::add_material(s, vec3(0.1f, 0.8f, 0.1f));
+  const uint32_t red = test::add_material(s, vec3(0.9f, 0.1f, 0.1f));
+  const uint32_t blue = test::add_material(s, vec3(0.1f, 0.2f, 0.9f));
+  const uint32_t dark = test::add_material(s, vec3(0.02f));
+  test::add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}, {0, 0, 1}, green);
+  const float twin = -2.000001f;
+  test::add_quad(s, {-2, -2, twin}, {2, -2, twin}, {2, 2, twin}, {-2, 2, twin}, {0, 0, 1}, red);
+  const float e = column_x(kCrossingColumn, 2.0f);
+  test::add_quad(s, {e - 1, -2, -1}, {e + 1, -2, -3}, {e + 1, 2, -3}, {e - 1, 2, -1}, glm::normalize(vec3(1, 0, 1)),
+                 blue);
+  // 1 mm behind the quad (1.3e-4 in window depth, far beyond every margin): never in front.
+  test::add_quad(s, {-2, -2, -2.001f}, {2, -2, -2.001f}, {2, 2, -2.001f}, {-2, 2, -2.001f}, {0, 0, 1}, dark);
+  return render(s);
+}
+
+TEST(CoplanarTwin, EverySurfaceTiedInDepthIsAdmittedNotOnlyTheNearest) {
+  const GBuffer g = crossing_view();
+  const int r_lo = channel(g.tie_range, "albedo.0.lo"), r_hi = channel(g.tie_range, "albedo.0.hi");
+  ASSERT_GE(r_lo, 0);
+  const int x = int(kCrossingColumn);
+  for (int row = 2; row < kSize - 2; ++row) {
+    // The reference shows the green quad or the blue one on the crossing column (their depths at
+    // the centre agree within the snap), never the twin behind.
+    ASSERT_NE(g.albedo.at(x, row, 0), 0.9f) << row;
+    EXPECT_FLOAT_EQ(g.tie_range.at(x, row, r_hi), 0.9f) << row;  // the red twin: tied too
+    EXPECT_FLOAT_EQ(g.tie_range.at(x, row, r_lo), 0.1f) << row;  // not the dark quad 1 mm behind
+    // One column left the blue quad is in front by far more than the margins: only blue.
+    EXPECT_FLOAT_EQ(g.tie_range.at(x - 1, row, r_lo), 0.1f) << row;
+    EXPECT_FLOAT_EQ(g.tie_range.at(x - 1, row, r_hi), 0.1f) << row;
+  }
+}
+
+TEST(CoplanarTwin, TheTwinOnTheCrossingIsAdmittedAndASurfaceBeyondTheMarginsFails) {
+  const GBuffer g = crossing_view();
+  const int x = int(kCrossingColumn), row = kSize / 2;
+  const auto gl_showing = [&](int px, vec3 albedo) {
+    Image test = g.albedo;
+    test.set_rgb(px, row, albedo);
+    return test;
+  };
+  CompareOptions opt;
+  const vec3 red(0.9f, 0.1f, 0.1f);
+  // GL keeps the twin at the crossing (hunt seed 2717's pixel (20, 18)): a depth tie.
+  const StageVerdict twin =
+      compare_image_stage("gbuffer.albedo", g.albedo, gl_showing(x, red), nullptr, opt, nullptr, nullptr, &g.tie_range);
+  EXPECT_EQ(twin.verdict, Verdict::Warn) << twin.note;
+  EXPECT_EQ(twin.extra.at("raster_alternatives").get<size_t>(), 1u);
+  // The twin one column left, where the blue quad is a pixel's slope in front: no GL shows it.
+  EXPECT_EQ(compare_image_stage("gbuffer.albedo", g.albedo, gl_showing(x - 1, red), nullptr, opt, nullptr, nullptr,
+                                &g.tie_range)
+                .verdict,
+            Verdict::Fail);
+  // The quad 1 mm behind, at the crossing: beyond every margin, no GL shows it.
+  EXPECT_EQ(compare_image_stage("gbuffer.albedo", g.albedo, gl_showing(x, vec3(0.02f)), nullptr, opt, nullptr, nullptr,
+                                &g.tie_range)
+                .verdict,
+            Verdict::Fail);
+}
+
 }  // namespace
 }  // namespace vct::cmp

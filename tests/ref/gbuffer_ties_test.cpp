@@ -296,5 +296,27 @@ TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
   }
 }
 
+// A chain of two flips (hunt seed 524, scenes/regressions/seed-524-small: both faces of a masked
+// thin wall): a second card, the same texture, 0.1 behind the first. On the centre column both
+// cards' alpha is at the cutoff, so a correct GL may cut both and show the backdrop; the reference
+// keeps the first card. The front-most fragment no GL discards (the backdrop) joins the range, not
+// only the two cards. Two columns over both cards pass for certain: the first card only.
+TEST(RasterTies, AChainOfAlphaFlipsAdmitsTheFrontMostSurfaceNoGlDiscards) {
+  Scene s = test::half_masked_card(true);
+  test::add_card_quad(s, -0.1f, 1.0f, 0);
+  s.volume = fit_volume(s.bounds);
+  VctSettings st;
+  st.width = st.height = 33;
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  const float card = g.albedo.at(24, 16, 0);
+  ASSERT_LT(card, 0.5f);
+  for (int row = 10; row <= 22; ++row) {
+    ASSERT_FLOAT_EQ(g.albedo.at(16, row, 0), card) << row;  // the reference keeps the first card
+    EXPECT_GE(g.tie_range.at(16, row, hi), 0.8f) << row;     // the backdrop behind both
+    EXPECT_EQ(g.tie_range.at(18, row, lo), g.tie_range.at(18, row, hi)) << row;
+  }
+}
+
 }  // namespace
 }  // namespace vct
