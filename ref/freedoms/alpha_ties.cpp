@@ -47,13 +47,13 @@ bool alpha_test_may_flip(const Scene& scene, const WindowBarycentrics& wb, int x
   return near_cutoff(scene, triangle, alpha, alpha_freedom(scene, wb, x, row, triangle, bary));
 }
 
-bool alpha_test_may_flip_affine(const Scene& scene, uint32_t triangle, const vec3& bary, const glm::dvec2& db_dx,
-                                const glm::dvec2& db_dy) {
+bool alpha_test_may_flip_affine(const Scene& scene, uint32_t triangle, const vec3& bary, double reach,
+                                const glm::dvec2& db_dx, const glm::dvec2& db_dy) {
   if (!triangle_alpha_tested(scene, triangle)) return false;
   const float centre = base_color_alpha(scene, triangle, bary.y, bary.z);
   float shift = 0.0f;
   for (const auto& k : kShiftSigns) {
-    const glm::dvec2 d = kVertexSnapStep * (double(k[0]) * db_dx + double(k[1]) * db_dy);
+    const glm::dvec2 d = reach * (double(k[0]) * db_dx + double(k[1]) * db_dy);
     const float a = base_color_alpha(scene, triangle, bary.y + float(d.x), bary.z + float(d.y));
     shift = std::max(shift, std::abs(a - centre));
   }

@@ -30,8 +30,11 @@ bool alpha_test_may_flip(const Scene& scene, const WindowBarycentrics& wb, int x
 
 /// As alpha_test_may_flip in a raster whose barycentrics are affine in window coordinates (the
 /// voxelizer's orthographic projection): `db_dx`, `db_dy` are (b1, b2) per pixel, so a sample moved
-/// by (+-2^-8, +-2^-8) pixels moves the barycentrics by 2^-8 (+-db_dx +- db_dy).
-bool alpha_test_may_flip_affine(const Scene& scene, uint32_t triangle, const vec3& bary, const glm::dvec2& db_dx,
+/// by (+-r, +-r) pixels moves the barycentrics by r (+-db_dx +- db_dy); r = `reach`, the snap's
+/// reach at the fragment (2^-8 inside the triangle, more where it is extrapolated:
+/// freedoms/fragment_slack.h voxel_snap_reach).
+bool alpha_test_may_flip_affine(const Scene& scene, uint32_t triangle, const vec3& bary, double reach,
+                                const glm::dvec2& db_dx,
                                 const glm::dvec2& db_dy);
 
 }  // namespace vct

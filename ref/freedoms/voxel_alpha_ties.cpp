@@ -36,11 +36,13 @@ void barycentric_gradients(const Scene& scene, int n, uint32_t t, glm::dvec2& db
 bool may_flip(const Scene& scene, int n, const VoxelFragment& f) {
   if (!triangle_alpha_tested(scene, f.triangle)) return false;
   // A sliver's snapped barycentrics have no bound (freedoms/fragment_slack.h voxel_snap_reach):
-  // any texel, any alpha (medium seed 2).
-  if (std::isinf(voxel_snap_reach(scene, n, f))) return true;
+  // any texel, any alpha (medium seed 2). Elsewhere the snap reaches that far, more than 2^-8
+  // where the fragment is extrapolated.
+  const double reach = voxel_snap_reach(scene, n, f);
+  if (std::isinf(reach)) return true;
   glm::dvec2 dx, dy;
   barycentric_gradients(scene, n, f.triangle, dx, dy);
-  return alpha_test_may_flip_affine(scene, f.triangle, vec3(1.0f - f.b1 - f.b2, f.b1, f.b2), dx, dy);
+  return alpha_test_may_flip_affine(scene, f.triangle, vec3(1.0f - f.b1 - f.b2, f.b1, f.b2), reach, dx, dy);
 }
 
 }  // namespace
