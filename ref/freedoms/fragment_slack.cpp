@@ -120,10 +120,11 @@ void nearest_level_maps(const Scene& scene, const SnapWindow& w, const VoxelFrag
 
 /// The window offsets whose light spans the light over the whole snap square: its four corners
 /// (+-r, +-r), and where a NEAREST lookup jumps inside it, each texel piece's corners
-/// (freedoms/texel_breakpoints.h). Beyond kBreakpointCap points (texels thousands of times smaller
-/// than the snap: a texture sampled far above its resolution without mipmaps) a 64 x 64 grid
-/// over the square stands in for them: the one place the square is sampled, not enumerated.
-constexpr size_t kBreakpointCap = 4096;
+/// (freedoms/texel_breakpoints.h). Beyond kBreakpointCap points (texels hundreds of times smaller
+/// than the snap: a texture sampled far above its resolution without mipmaps) a 16 x 16 grid over
+/// the square stands in for them: the one place the square is sampled, not enumerated (each point
+/// costs a shading with every light's PCF lookup).
+constexpr size_t kBreakpointCap = 512;
 std::vector<glm::dvec2> snap_offsets(const Scene& scene, const SnapWindow& w, const VoxelFragment& f,
                                      const SlotLods& lods) {
   const double r = w.reach;
@@ -132,7 +133,7 @@ std::vector<glm::dvec2> snap_offsets(const Scene& scene, const SnapWindow& w, co
   nearest_level_maps(scene, w, f, lods, maps);
   for (const TexelMap& m : maps) {
     if (texel_breakpoints(m, r, kBreakpointCap, out)) continue;
-    constexpr int kGrid = 64;
+    constexpr int kGrid = 16;
     for (int i = 0; i <= kGrid; ++i)
       for (int j = 0; j <= kGrid; ++j) out.push_back({r * (2.0 * i / kGrid - 1.0), r * (2.0 * j / kGrid - 1.0)});
   }
@@ -259,26 +260,40 @@ SnapParallelogram snap_parallelogram(const SnapWindow& w, const VoxelFragment& f
 }
 
 /// The normal-offset lookup moves with the shading normal (seed 248: a normal map's LOD moved it a
-/// third of a texel, lighting two more taps), so the visibility is looked up with every shading
-/// normal the material freedoms give: these representatives, each standing for the normals within
-/// kNormalCluster of it (snap_surface_visibility_range's normal_spread), the reference's first.
+/// third of a texel, lighting two more taps), so the visibility is looked up with the shading
+/// normals the material freedoms give: a few representatives, each standing for the normals within
+/// the cluster radius of it, the reference's first. The radius starts at 1/64 and doubles until at
+/// most kNormalRepresentatives remain (a bumpy normal map's hundreds of alternatives cost a few
+/// lookups). A normal within the radius moves the lookup point by at most 2 w Kmax radius
+/// (normal_offset_per_w_bound); that move is not added as a margin: a margin lets the lookup point
+/// reach the fragment's own plane, where every tap's compare ties and the range search grows
+/// exponentially (hunt seed 4045 took minutes), so cluster members are represented, not bounded.
 constexpr float kNormalCluster = 1.0f / 64.0f;
-struct NormalCover {
-  std::vector<vec3> normals;
-  float spread = 0.0f;  // the farthest any normal lies from its representative (<= kNormalCluster)
-};
-NormalCover normal_representatives(const vec3& exact, const MaterialGroups& groups) {
-  NormalCover c{{exact}, 0.0f};
+constexpr size_t kNormalRepresentatives = 4;
+std::vector<vec3> cluster_normals(const vec3& exact, const MaterialGroups& groups, float radius) {
+  std::vector<vec3> c = {exact};
   for (const std::vector<SurfaceMaterial>& g : groups)
     for (const SurfaceMaterial& alt : g) {
+      // A degenerate frame's normal (a zero tangent normalised) looks nothing up; GL's lookup
+      // with it is as undefined as the reference's.
+      if (!std::isfinite(alt.shading_normal.x + alt.shading_normal.y + alt.shading_normal.z)) continue;
       float nearest = INFINITY;
-      for (const vec3& r : c.normals) nearest = std::min(nearest, glm::length(alt.shading_normal - r));
-      if (nearest <= kNormalCluster)
-        c.spread = std::max(c.spread, nearest);
+      for (const vec3& r : c) nearest = std::min(nearest, glm::length(alt.shading_normal - r));
+      if (nearest <= radius) continue;
+      if (c.size() < kNormalRepresentatives)
+        c.push_back(alt.shading_normal);
       else
-        c.normals.push_back(alt.shading_normal);
+        return {};  // too many at this radius
     }
   return c;
+}
+std::vector<vec3> normal_representatives(const vec3& exact, const MaterialGroups& groups) {
+  // Unit normals lie within 2 of each other: at radius 2 the reference's normal stands for all.
+  for (float radius = kNormalCluster; radius < 2.0f; radius *= 2.0f) {
+    std::vector<vec3> c = cluster_normals(exact, groups, radius);
+    if (!c.empty()) return c;
+  }
+  return cluster_normals(exact, groups, 2.0f);
 }
 
 /// The PCF taps a correct GL may read anywhere the snap may put the fragment: per light, its
@@ -299,22 +314,12 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
   if (maps.empty()) return 0.0f;
   const SnapParallelogram q = snap_parallelogram(w, f);
   const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
-  const NormalCover cover = normal_representatives(m.shading_normal, groups);
+  const std::vector<vec3> normals = normal_representatives(m.shading_normal, groups);
   float slack = 0.0f;
   for (size_t i = 0; i < std::min(maps.size(), scene.lights.size()); ++i) {
     const Light& light = scene.lights[i];
-    const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
-    // A sliver's shift has no bound: any visibility.
-    VisibilityRange r{0.0f, 1.0f};
-    if (w.bounded) {
-      r = {1.0f, 0.0f};
-      for (const vec3& n : cover.normals) {
-        const VisibilityRange one = snap_surface_visibility_range(maps[i], light, q, n, settings, cover.spread);
-        r.lo = std::min(r.lo, one.lo), r.hi = std::max(r.hi, one.hi);
-      }
-    }
-    const float moves = std::max(r.hi - vis, vis - r.lo);
-    if (moves <= 0.0f) continue;
+    // The light GL's fragment may have from this light unshadowed: none, and no lookup matters
+    // (a light behind the surface at every point and material: the range is not searched).
     float open = 0.0f;
     for (const glm::dvec2& d : offsets) {
       const SurfacePoint p = surface_at(scene, w, f, d.x, d.y);
@@ -322,6 +327,18 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
       open = std::max(open, largest_channel(glm::max(lit, vec3(0.0f))));
     }
     open += unshadowed_rise(light, settings, f.position, m, groups);
+    if (open <= 0.0f) continue;
+    const float vis = surface_visibility(maps[i], light, f.position, m.shading_normal, settings);
+    // A sliver's shift has no bound: any visibility.
+    VisibilityRange r{0.0f, 1.0f};
+    if (w.bounded) {
+      r = {1.0f, 0.0f};
+      for (const vec3& n : normals) {
+        const VisibilityRange one = snap_surface_visibility_range(maps[i], light, q, n, settings);
+        r.lo = std::min(r.lo, one.lo), r.hi = std::max(r.hi, one.hi);
+      }
+    }
+    const float moves = std::max(r.hi - vis, vis - r.lo);
     slack += open * moves;
   }
   return slack;

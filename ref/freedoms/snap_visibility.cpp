@@ -376,8 +376,8 @@ VisibilityRange range_cube(const ShadowMap& map, const vec3& light, const SnapPa
 // The parallelogram of lookup points p + K w(p) n through matrix m (w affine in a, b), with its
 // margin taken at the corner that needs the widest.
 // False where w <= 0 somewhere on q (behind the light's plane: no bound here).
-bool offset_parallelogram(const mat4& m, const SnapParallelogram& q, const vec3& n, float normal_spread,
-                          const VctSettings& s, SnapParallelogram& out) {
+bool offset_parallelogram(const mat4& m, const SnapParallelogram& q, const vec3& n, const VctSettings& s,
+                          SnapParallelogram& out) {
   const float k = normal_offset_per_w(m, n, s);
   const Linear w = clip_row(m, q, 3);
   for (const Point& p : unit_square())
@@ -389,12 +389,6 @@ bool offset_parallelogram(const mat4& m, const SnapParallelogram& q, const vec3&
   for (const vec3& p : points_of(q)) out.margin = std::max(out.margin, q.margin + lookup_point_margin(m, p, n, s));
   // The parallelogram's own float corners against the lookup's float point: one more rounding.
   out.margin += 2.0 * kU * double(glm::length(out.du) + glm::length(out.dv) + glm::length(out.centre));
-  // Another shading normal moves the offset by at most 2 w Kmax |dn| (snap_visibility.h).
-  if (normal_spread > 0.0f) {
-    double w_max = 0.0;
-    for (const Point& p : unit_square()) w_max = std::max(w_max, w.at(p));
-    out.margin += 2.0 * w_max * double(normal_offset_per_w_bound(m, s)) * double(normal_spread);
-  }
   return true;
 }
 
@@ -410,14 +404,14 @@ std::vector<int> faces_over(const SnapParallelogram& q, const vec3& light) {
 }  // namespace
 
 VisibilityRange snap_surface_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
-                                              const vec3& n, const VctSettings& settings, float normal_spread) {
+                                              const vec3& n, const VctSettings& settings) {
   if (settings.shadow_normal_offset == 0.0f) return snap_visibility_range(map, light, q, settings);
   if (light.is_point()) {
     if (!map.is_cube()) return {};
     VisibilityRange out{1.0f, 0.0f};
     SnapParallelogram lookup;
     for (int f : faces_over(q, light.position)) {
-      if (!offset_parallelogram(map.cube_view_proj[size_t(f)], q, n, normal_spread, settings, lookup)) return {0.0f, 1.0f};
+      if (!offset_parallelogram(map.cube_view_proj[size_t(f)], q, n, settings, lookup)) return {0.0f, 1.0f};
       const VisibilityRange one = range_cube(map, light.position, lookup, settings);
       out.lo = std::min(out.lo, one.lo), out.hi = std::max(out.hi, one.hi);
     }
@@ -425,7 +419,7 @@ VisibilityRange snap_surface_visibility_range(const ShadowMap& map, const Light&
   }
   if (map.depth.empty()) return {};
   SnapParallelogram lookup;
-  if (!offset_parallelogram(map.view_proj, q, n, normal_spread, settings, lookup)) return {0.0f, 1.0f};
+  if (!offset_parallelogram(map.view_proj, q, n, settings, lookup)) return {0.0f, 1.0f};
   return range_2d(map, lookup, settings);
 }
 

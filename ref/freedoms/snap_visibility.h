@@ -42,10 +42,8 @@ VisibilityRange snap_visibility_range(const ShadowMap& map, const Light& light, 
 /// The same for surface points with unit normal n, each looked up at its normal-offset point
 /// (stages/shadow_map.h): p + K w(p) n is affine in (a, b) like p, since w is, so the lookup points
 /// form a parallelogram too (through each cube face the points may select for a point light),
-/// with lookup_point_margin as its margin. `normal_spread`: how far (Euclidean) GL's shading
-/// normal may lie from n (a normal map's lookup freedoms): the offset K(n') w n' then moves by at
-/// most w (|K| |dn| + |dK| |n|) <= 2 w Kmax |dn| (normal_offset_per_w_bound), added to the margin.
+/// with lookup_point_margin as its margin.
 VisibilityRange snap_surface_visibility_range(const ShadowMap& map, const Light& light, const SnapParallelogram& q,
-                                              const vec3& n, const VctSettings& settings, float normal_spread = 0.0f);
+                                              const vec3& n, const VctSettings& settings);
 
 }  // namespace vct

@@ -322,13 +322,6 @@ float normal_offset_per_w(const mat4& m, const vec3& n, const VctSettings& setti
          (reach.x * std::abs(glm::dot(n, r0)) / glm::dot(r0, r0) + reach.y * std::abs(glm::dot(n, r1)) / glm::dot(r1, r1));
 }
 
-float normal_offset_per_w_bound(const mat4& m, const VctSettings& settings) {
-  const vec3 r0(m[0][0], m[1][0], m[2][0]), r1(m[0][1], m[1][1], m[2][1]);
-  const vec2 reach = pcf_reach(settings);
-  return settings.shadow_normal_offset * (2.0f / float(settings.shadow_map_size)) *
-         (reach.x / glm::length(r0) + reach.y / glm::length(r1));
-}
-
 vec3 shadow_lookup_point(const ShadowMap& map, const Light& light, const vec3& p, const vec3& n,
                          const VctSettings& settings) {
   if (settings.shadow_normal_offset == 0.0f) return p;

@@ -110,11 +110,6 @@ const mat4* offset_matrix(const ShadowMap& map, const Light& light, const vec3& 
 /// repeats this arithmetic.
 float normal_offset_per_w(const mat4& m, const vec3& n, const VctSettings& settings);
 
-/// The largest normal_offset_per_w over unit normals, |n.r| <= |r|: shadow_normal_offset x (2 / S)
-/// x (R.x / |r0| + R.y / |r1|); also its Lipschitz constant in n (each |n.r| / |r|^2 moves by at
-/// most |dn| / |r|).
-float normal_offset_per_w_bound(const mat4& m, const VctSettings& settings);
-
 /// Where a surface point p with unit normal n (facing the camera) is looked up in `light`'s map:
 /// p + K w n (above) with w = the clip w of p through offset_matrix; p itself when the matrix is
 /// missing, w <= 0 or the offset is 0.

@@ -103,48 +103,5 @@ TEST(SnapVisibility, EveryPointOfTheParallelogramLiesInTheRange) {
   }
 }
 
-// Another shading normal moves the normal-offset lookup (a normal map's lookup freedoms): every
-// point of the parallelogram looked up with a normal within `spread` of the triangle's lies in the
-// range widened by that spread (snap_surface_visibility_range's normal_spread), on the stage
-// room's spot map; with no spread some of them do not.
-TEST(SnapVisibility, ANormalWithinTheSpreadLooksUpInsideTheRange) {
-  const Scene scene = test::stage_room();
-  VctSettings s;
-  s.shadow_map_size = 256;
-  const std::vector<ShadowMap> maps = render_shadow_maps(scene, s);
-  const Light& light = scene.lights[0];
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f), signed_unit(-1.0f, 1.0f);
-  const float spread = 0.3f;
-  int outside_without = 0;
-  for (int n = 0; n < 1000; ++n) {
-    const uint32_t t = uint32_t(unit(rng) * float(scene.triangles.size() - 1));
-    const uvec3 tri = scene.triangles[t];
-    const vec3 p0 = scene.positions[tri.x], e1 = scene.positions[tri.y] - p0, e2 = scene.positions[tri.z] - p0;
-    const vec3 normal = glm::normalize(glm::cross(e1, e2));
-    float b1 = unit(rng), b2 = unit(rng);
-    if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
-    SnapParallelogram q;
-    q.centre = p0 + b1 * e1 + b2 * e2;
-    q.du = 0.002f * unit(rng) * glm::normalize(e1);
-    q.dv = 0.002f * unit(rng) * glm::normalize(e2);
-    const VisibilityRange r = snap_surface_visibility_range(maps[0], light, q, normal, s, spread);
-    const VisibilityRange r0 = snap_surface_visibility_range(maps[0], light, q, normal, s);
-    for (int k = 0; k < 4; ++k) {
-      vec3 other = glm::normalize(normal + spread * vec3(signed_unit(rng), signed_unit(rng), signed_unit(rng)));
-      if (glm::length(other - normal) > spread) other = glm::normalize(normal + (spread / glm::length(other - normal)) * (other - normal) * 0.99f);
-      for (int i = 0; i <= 4; ++i)
-        for (int j = 0; j <= 4; ++j) {
-          const float v = surface_visibility(maps[0], light, point_at(q, float(i) / 2.0f - 1.0f, float(j) / 2.0f - 1.0f), other, s);
-          ASSERT_GE(v, r.lo) << "parallelogram " << n;
-          ASSERT_LE(v, r.hi) << "parallelogram " << n;
-          outside_without += (v < r0.lo || v > r0.hi) ? 1 : 0;
-        }
-    }
-  }
-  std::printf("[snap visibility] %d lookups with another normal outside the range without the spread\n", outside_without);
-  EXPECT_GT(outside_without, 0);
-}
-
 }  // namespace
 }  // namespace vct
