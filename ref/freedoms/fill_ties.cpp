@@ -25,12 +25,28 @@ struct SurfaceBound {
   }
 };
 
+// With the solid fill on: the surface's ties, less the voxels the reference fills (a fragment that
+// may land there leaves them occupied; whether their fill may change is the judge's counted
+// fill-ray rule).
+Volume surface_ties_off_the_fill(const Scene& scene, const Voxelization& vox, int k, Volume ties) {
+  const int n = vox.n;
+  std::vector<uint8_t> surface(vox.occupancy.data.size());
+  for (size_t i = 0; i < surface.size(); ++i) surface[i] = vox.occupancy.data[i] > 0.0f;
+  const std::vector<uint8_t> masks = facing_masks(scene, vox);
+  const std::vector<uint8_t> enclosed = enclosed_voxels(surface, masks, n);
+  const std::vector<uint8_t> thick = k > 0 ? thickened_voxels(surface, masks, n, k) : std::vector<uint8_t>(surface.size(), 0);
+  for (size_t i = 0; i < surface.size(); ++i)
+    if (enclosed[i] || thick[i]) ties.data[i] = 0.0f;
+  return ties;
+}
+
 }  // namespace
 
 Volume occupancy_ties_with_fills(const Scene& scene, const Voxelization& vox, const VctSettings& settings) {
   Volume ties = occupancy_ties(vox);
   const int k = settings.surface_thickening_voxels;
-  if (k <= 0 || settings.solid_voxelization || vox.may_drop.size() != vox.fragments.size()) return ties;
+  if (vox.may_drop.size() != vox.fragments.size() || (k <= 0 && !settings.solid_voxelization)) return ties;
+  if (settings.solid_voxelization) return surface_ties_off_the_fill(scene, vox, k, std::move(ties));
   const int n = vox.n;
   const size_t count = size_t(n) * size_t(n) * size_t(n);
   SurfaceBound least(count), most(count);

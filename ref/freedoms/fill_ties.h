@@ -15,9 +15,10 @@
 namespace vct {
 
 /// voxel.occupancy_tie with the fills (add_coverage_ties already run on `vox`): 1 where a correct
-/// GL's occupancy (surface or filled) may differ from the reference's. Without fills, or with the
-/// solid fill (not monotone in the surface: a tie there stays the judge's counted fill-ray rule),
-/// occupancy_ties(vox) itself. With thickening by k alone, which is monotone in the surface and its
+/// GL's occupancy (surface or filled) may differ from the reference's. Without fills,
+/// occupancy_ties(vox) itself. With the solid fill (not monotone in the surface: a triangle added
+/// may close or open a ray), those ties less the voxels the reference fills, whose changes stay
+/// the judge's counted fill-ray rule. With thickening by k alone, which is monotone in the surface and its
 /// facing masks: a voxel may be occupied when it may hold a fragment or is thickened from the
 /// largest admissible surface (the reference's fragments and every fragment it may add, with their
 /// facings), and may be empty when it may hold none and is not thickened from the smallest (the

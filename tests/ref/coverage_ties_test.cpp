@@ -207,6 +207,30 @@ TEST(CoverageTies, EverySnappedThickenedOccupancyChangeIsAFillTie) {
   EXPECT_EQ(occupancy_ties_with_fills(s, vox, VctSettings{}).data, surface_ties.data);
 }
 
+// With the solid fill on (not monotone in the surface) the fills' ties stay the judge's counted
+// fill-ray rule: the surface's ties, none on a voxel the reference fills (a fragment that may land
+// there leaves it occupied).
+TEST(CoverageTies, WithTheSolidFillAFilledVoxelIsNoSurfaceTie) {
+  std::mt19937 rng(11);
+  const Scene s = tilted_triangles(rng);
+  const int n = 16;
+  VctSettings settings;
+  settings.solid_voxelization = true;
+  settings.surface_thickening_voxels = 2;
+  const Voxelization vox = voxelization_with_ties(s, n);
+  const Volume ties = occupancy_ties_with_fills(s, vox, settings);
+  const Volume surface_ties = occupancy_ties(vox);
+  const std::vector<uint8_t> filled = thickened_occupancy(s, vox, 2);
+  size_t cleared = 0;
+  for (size_t i = 0; i < ties.data.size(); ++i) {
+    EXPECT_LE(ties.data[i], surface_ties.data[i]) << i;
+    const bool reference_fills = filled[i] && vox.occupancy.data[i] == 0.0f;
+    if (reference_fills) EXPECT_EQ(ties.data[i], 0.0f) << i;
+    cleared += ties.data[i] != surface_ties.data[i];
+  }
+  EXPECT_GT(cleared, 0u);  // some fragment the ties may add lands in a filled voxel
+}
+
 // The same snaps, seen as fragment counts: every snapped voxelization's count in every voxel lies
 // in the reference's fragment_count_ranges (voxel.fragment_count_range), which the radiance judge
 // takes as derived count ties; and the ranges are not wide everywhere.
