@@ -55,7 +55,8 @@ constexpr std::array<AdmissionRow, kRuleCount> kRows = {{
      "Tolerance models and where each bound comes from", {120, 120, 255}},
     {Rule::CoverageTie, "coverage-tie", F::Occupancy, K::Range, "voxel.occupancy_tie",
      "a voxel each fragment of which may drop, or where a fragment GL may make lands, under 2^-8 px vertex "
-     "snapping (coverage ties)", "", "Voxel shading slack", {0, 140, 140}},
+     "snapping (coverage ties); with surface thickening alone, a voxel those ties may thicken or leave empty",
+     "", "Voxel shading slack", {0, 140, 140}},
     {Rule::FaceNeighbourTie, "face-neighbour-tie", F::Occupancy, K::Neighbour, "",
      "a missing voxel with an extra one among its 26 neighbours (a sample on a voxel face, edge or corner)",
      kOccupancyTieCap.denominator, "Tolerance models and where each bound comes from", {0, 200, 255}},

@@ -67,19 +67,21 @@ OccupancyDiff diff_of(const StageSet& rs, const StageSet& ts) {
   return d;
 }
 
-// The first rule admitting a voxel occupied on one side only. Filled voxels (opaque without
-// fragments: solid interior, thickening) have their own rule (fill_ties.h); others tie where the
-// reference's coverage ties say the voxel's fragments may all drop or one may be added
-// (freedoms/coverage_ties.h), when the side that has them held at most 2 fragments (samples on a
-// triangle edge, decided by the fill rule) or a voxel differing the other way is among their 26
-// neighbours (a sample on a face); the last two are counted (kOccupancyTieCap).
+// The first rule admitting a voxel occupied on one side only. Voxels tie where the reference's
+// coverage ties say the voxel's fragments may all drop or one may be added, or (with surface
+// thickening alone) that its thickening may change with them (freedoms/coverage_ties.h,
+// freedoms/fill_ties.h). Other filled voxels (opaque without fragments: solid interior,
+// thickening) have their own rule (compare/fill_ties.h); other surface voxels tie when the side
+// that has them held at most 2 fragments (samples on a triangle edge, decided by the fill rule) or
+// a voxel differing the other way is among their 26 neighbours (a sample on a face); those three
+// are counted (kOccupancyTieCap).
 Rule occupancy_rule(const OccupancyDiff& d, size_t i) {
   const bool missing = d.missing[i];
   const Volume* fr = missing ? d.ref_fragments : d.test_fragments;
   const float fragments = fr ? fr->data[i * size_t(fr->channels)] : -1.0f;
+  if (d.coverage_ties && d.coverage_ties->data[i * size_t(d.coverage_ties->channels)] > 0.0f) return Rule::CoverageTie;
   if (!d.surface_differs.empty() && fragments == 0.0f)
     return ray_meets(d.ref, d.surface_differs, i) ? Rule::FillRay : Rule::Beyond;
-  if (d.coverage_ties && d.coverage_ties->data[i * size_t(d.coverage_ties->channels)] > 0.0f) return Rule::CoverageTie;
   if (fr && fragments <= 2.0f) return Rule::EdgeFragmentsTie;
   if (face_neighbour_in(d.ref, missing ? d.extra : d.missing, i)) return Rule::FaceNeighbourTie;
   return d.conservative_ref && missing ? Rule::ConservativeHole : Rule::Beyond;

@@ -21,6 +21,14 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "shadow_map.N, shadow_map_cube.M, gbuffer.depth (d32f-depth)",
      "PrecisionRows.DepthInterpolationAdmitsItsError, PrecisionRows.DepthInterpolationBeyondFails "
      "(gbuffer.depth, shadow_map.0)"},
+    {P::DepthPlaneSetup, "depth-plane-setup", "the window-depth plane set up in single precision from a triangle's vertices",
+     0x1p-24,
+     "u = 2^-24 per rounding: (4u S_x + |dz/dx| 4u S_A) / |A| + u |dz/dx| on each gradient component (S: the "
+     "products' magnitudes in the area A and the numerators) times the distance from the first vertex, plus three "
+     "roundings of the evaluation; taken where it exceeds the barycentric form's 2^-22 (plane_setup_margin)",
+     "GL 4.5 §14.6.1 eq. 14.10 (the arithmetic is not fixed); IEEE single precision (llvmpipe's set-up)",
+     "every depth_tie_margin: light-space alternatives (shadow_map.N, shadow_map_cube.M), the G-buffer's depth ties",
+     "PlaneSetup.FloatSetUpFromEveryVertexStaysInsideTheBound, PlaneSetup.TheClippedSliverOfSeed2463 (shadow_map.0)"},
     {P::DepthUnorm, "depth-unorm", "window depth stored as b-bit UNORM (depth24, depth16)", 2.0,
      "2q, q = 1/(2^b - 1): the engine takes either integer neighbour, the reference the nearest",
      "GL 4.5 §2.3.5.2", "light-space depth stages under a declared shadow_depth_format (depth_quantum_of)",

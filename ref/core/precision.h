@@ -17,6 +17,7 @@ namespace vct {
 enum class Precision : uint8_t {
   SubpixelSnap,
   DepthInterpolation,
+  DepthPlaneSetup,
   DepthUnorm,
   AttributeInterpolation,
   AttributeExtrapolation,

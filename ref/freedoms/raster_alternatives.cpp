@@ -5,6 +5,7 @@
 
 #include "core/parallel.h"
 #include "freedoms/alpha_ties.h"
+#include "freedoms/plane_setup.h"
 #include "freedoms/texture_slack.h"
 #include "scene/alpha_mask.h"
 
@@ -77,7 +78,10 @@ double depth_tie_margin(const RasterTriangle& t) {
     dzdx += double(e.a[i]) * t.z[i];
     dzdy += double(e.b[i]) * t.z[i];
   }
-  return std::ldexp(1.0, -22) + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
+  // The evaluation's own roundings: 2^-22 from the barycentric form, or the plane equation's set-up
+  // and evaluation in float (plane_setup.h; two more roundings for the reference's own value).
+  const double arithmetic = std::max(std::ldexp(1.0, -22), plane_setup_margin(t) + 2.0 * kFloatRoundoff);
+  return arithmetic + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
 }
 
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front) {

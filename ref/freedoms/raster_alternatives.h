@@ -29,7 +29,9 @@ inline void shifted_sample_steps(int k, int64_t& sx, int64_t& sy) {
 /// reference's: its plane moved by one sub-pixel step on each axis, 2^-8 (|dz/dx| + |dz/dy|) per
 /// pixel (the d32f-depth model's slope term; dz/dx = sum a_i z_i / area2 per step), plus 2^-22
 /// for the float evaluation b0 z0 + b1 z1 + b2 z2 and its storage as D32F (three roundings of
-/// values below 1, each at most half an ulp of 1, 2^-24, with room to spare).
+/// values below 1, each at most half an ulp of 1, 2^-24, with room to spare) -- or, where larger,
+/// what a plane equation set up and evaluated in single precision may be off by
+/// (plane_setup_margin: a few roundings on ordinary triangles, large on slivers only).
 double depth_tie_margin(const RasterTriangle& t);
 
 /// Per pixel, the surface behind `front`'s: the fragment of another source triangle with the

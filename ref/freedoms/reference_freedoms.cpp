@@ -2,6 +2,7 @@
 
 #include "freedoms/coverage_ties.h"
 #include "freedoms/direct_slack.h"
+#include "freedoms/fill_ties.h"
 #include "freedoms/gbuffer_freedoms.h"
 #include "freedoms/shadow_map_ties.h"
 #include "freedoms/voxel_freedoms.h"
@@ -28,9 +29,9 @@ void direct_slack(const Scene& scene, const VctSettings& s, Inputs&, FrameResult
   if (!s.soft_shadows) add_direct_texture_slack(scene, r.shadow_maps, s, r.images.direct, r.gbuffer);
 }
 
-void coverage_ties(const Scene& scene, const VctSettings&, Inputs& in, FrameResult& r) {
+void coverage_ties(const Scene& scene, const VctSettings& s, Inputs& in, FrameResult& r) {
   add_coverage_ties(scene, in.voxels);
-  r.voxels.occupancy_tie = occupancy_ties(in.voxels);
+  r.voxels.occupancy_tie = occupancy_ties_with_fills(scene, in.voxels, s);
 }
 
 // The last frame's: its bounce light is rebuilt from the frame before it (r.bounce_input) as

@@ -238,6 +238,33 @@ TEST(StageCompare, FilledVoxelDiffersOnlyBehindASurfaceDifference) {
   EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Fail);
 }
 
+// With surface thickening the reference's voxel.occupancy_tie also marks the filled voxels whose
+// thickening its coverage ties may move (freedoms/fill_ties.h; scenes/regressions/seed-2572-small).
+// Those are derived ties, admitted voxel by voxel and not counted; a filled voxel it does not mark
+// is judged as before.
+TEST(StageCompare, FilledVoxelTheCoverageTiesMayMoveIsADerivedTie) {
+  StageSet a = filled_set();
+  Volume ties(8, 8, 8, 1);
+  ties.channel_names = {"tie"};
+  for (int x = 0; x < 3; ++x) ties.voxel(x, 1, 5)[0] = 1.0f;
+  a.volumes["voxel.occupancy_tie"] = ties;
+  StageSet b = a;
+  b.volumes.erase("voxel.occupancy_tie");
+  // Three unfilled voxels under an identical surface: no surface difference on their rays, but the
+  // reference says their thickening may change (3 of 128 occupied: beyond the 1 % counted cap).
+  for (int x = 0; x < 3; ++x) b.volumes["voxel.radiance"].set_rgba(x, 1, 5, vec4(0.0f));
+  const StageVerdict& derived = find(compare_stage_sets(a, b), "voxel.occupancy");
+  EXPECT_EQ(derived.verdict, Verdict::Warn) << derived.note;
+  EXPECT_EQ(derived.admitted[Rule::CoverageTie], 3u);
+  // Without the tie volume the same voxels fail (no ray crosses a surface difference).
+  StageSet plain = a;
+  plain.volumes.erase("voxel.occupancy_tie");
+  EXPECT_EQ(find(compare_stage_sets(plain, b), "voxel.occupancy").verdict, Verdict::Fail);
+  // One more unfilled voxel the reference does not mark still fails.
+  b.volumes["voxel.radiance"].set_rgba(3, 1, 5, vec4(0.0f));
+  EXPECT_EQ(find(compare_stage_sets(a, b), "voxel.occupancy").verdict, Verdict::Fail);
+}
+
 TEST(StageCompare, DepthEdgeTiesWarnInteriorDifferencesFail) {
   Image ref(64, 64, 1, 1.0f);
   for (int y = 16; y < 48; ++y)

@@ -10,10 +10,12 @@
 #include <tuple>
 
 #include "freedoms/coverage_ties.h"
+#include "freedoms/fill_ties.h"
 #include "scene/gltf_loader.h"
 #include "stage_test_scene.h"
 #include "stages/inject.h"
 #include "stages/raster.h"
+#include "stages/voxel_fill.h"
 #include "stages/voxelize.h"
 
 namespace vct {
@@ -159,6 +161,74 @@ TEST(CoverageTies, EverySnappedOccupancyChangeIsAnOccupancyTie) {
               static_cast<long long>(vox.covered), flagged, changed);
   EXPECT_GT(changed, 0u);
   EXPECT_LT(flagged, size_t(vox.covered) / 2);  // and the ties are not every voxel
+}
+
+// Occupancy with surface thickening by k (ref/stages/voxel_fill.h): the surface and the k voxels
+// behind it along each facing direction its fragments have.
+std::vector<uint8_t> thickened_occupancy(const Scene& s, const Voxelization& v, int k) {
+  std::vector<uint8_t> surface(v.occupancy.data.size());
+  for (size_t i = 0; i < surface.size(); ++i) surface[i] = v.occupancy.data[i] > 0.0f;
+  const std::vector<uint8_t> thick = thickened_voxels(surface, facing_masks(s, v), v.n, k);
+  for (size_t i = 0; i < surface.size(); ++i) surface[i] |= thick[i];
+  return surface;
+}
+
+// The same snaps with surface thickening by 2 (scenes/regressions/seed-2572-small: llvmpipe moved a
+// sliver's fragment one voxel along y, and the two voxels thickened behind it moved too): every
+// voxel whose occupancy, surface or filled, a snapped voxelization changes is flagged by
+// occupancy_ties_with_fills, which the surface's ties alone (occupancy_ties) do not all do.
+TEST(CoverageTies, EverySnappedThickenedOccupancyChangeIsAFillTie) {
+  std::mt19937 rng(11);
+  const Scene s = tilted_triangles(rng);
+  const int n = 16, k = 2;
+  VctSettings settings;
+  settings.surface_thickening_voxels = k;
+  const Voxelization vox = voxelization_with_ties(s, n);
+  const Volume ties = occupancy_ties_with_fills(s, vox, settings);
+  const Volume surface_ties = occupancy_ties(vox);
+  const std::vector<uint8_t> reference = thickened_occupancy(s, vox, k);
+  size_t changed = 0, flagged = 0, beyond_surface_ties = 0, occupied = 0;
+  for (float t : ties.data) flagged += t > 0.0f;
+  for (uint8_t o : reference) occupied += o;
+  for (int run = 0; run < 200; ++run) {
+    const std::vector<uint8_t> now = thickened_occupancy(s, voxelize_gpu_rule(snapped(s, n, rng), n, 4), k);
+    for (size_t i = 0; i < now.size(); ++i) {
+      if (now[i] == reference[i]) continue;
+      ++changed;
+      beyond_surface_ties += surface_ties.data[i] == 0.0f;
+      EXPECT_GT(ties.data[i], 0.0f) << "voxel " << i << " changed occupancy and is not a tie";
+    }
+  }
+  std::printf("%zu occupied voxels with thickening, %zu ties; %zu changes over the snaps, %zu not surface ties\n",
+              occupied, flagged, changed, beyond_surface_ties);
+  EXPECT_GT(beyond_surface_ties, 0u);  // the fills' ties are needed: the surface's alone miss changes
+  EXPECT_LT(flagged, occupied / 2);    // and the ties are not every voxel
+  // Without thickening the fills add nothing: the surface's ties exactly.
+  EXPECT_EQ(occupancy_ties_with_fills(s, vox, VctSettings{}).data, surface_ties.data);
+}
+
+// With the solid fill on (not monotone in the surface) the fills' ties stay the judge's counted
+// fill-ray rule: the surface's ties, none on a voxel the reference fills (a fragment that may land
+// there leaves it occupied).
+TEST(CoverageTies, WithTheSolidFillAFilledVoxelIsNoSurfaceTie) {
+  std::mt19937 rng(11);
+  const Scene s = tilted_triangles(rng);
+  const int n = 16;
+  VctSettings settings;
+  settings.solid_voxelization = true;
+  settings.surface_thickening_voxels = 2;
+  const Voxelization vox = voxelization_with_ties(s, n);
+  const Volume ties = occupancy_ties_with_fills(s, vox, settings);
+  const Volume surface_ties = occupancy_ties(vox);
+  const std::vector<uint8_t> filled = thickened_occupancy(s, vox, 2);
+  size_t cleared = 0;
+  for (size_t i = 0; i < ties.data.size(); ++i) {
+    EXPECT_LE(ties.data[i], surface_ties.data[i]) << i;
+    const bool reference_fills = filled[i] && vox.occupancy.data[i] == 0.0f;
+    if (reference_fills) EXPECT_EQ(ties.data[i], 0.0f) << i;
+    cleared += ties.data[i] != surface_ties.data[i];
+  }
+  EXPECT_GT(cleared, 0u);  // some fragment the ties may add lands in a filled voxel
 }
 
 // The same snaps, seen as fragment counts: every snapped voxelization's count in every voxel lies

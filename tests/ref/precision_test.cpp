@@ -8,6 +8,7 @@
 #include "core/precision.h"
 #include "freedoms/direct_slack.h"
 #include "freedoms/lookup_precision.h"
+#include "freedoms/plane_setup.h"
 #include "io/srgb.h"
 #include "scene/surface.h"
 #include "scene/texture_lod.h"
@@ -30,6 +31,7 @@ TEST(Precision, EveryRowHasItsSourceAndItsConsumers) {
 TEST(Precision, ProducersConstantsAreTheTablesRows) {
   EXPECT_EQ(kVertexSnapStep, precision(Precision::SubpixelSnap));
   EXPECT_EQ(kLodPrecision, precision(Precision::LodDerivatives));
+  EXPECT_EQ(kFloatRoundoff, precision(Precision::DepthPlaneSetup));
   EXPECT_EQ(double(kUnorm8Step), double(float(precision(Precision::Unorm8))));
   // Linear PCF: a weight off by 2^-8 on each of two axes (docs/compare.md, the engine's PCF row).
   EXPECT_EQ(double(kLinearCompareWeightStep), 2.0 * precision(Precision::FilterWeights));

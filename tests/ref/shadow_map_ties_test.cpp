@@ -6,6 +6,7 @@
 
 #include "alpha_card_scene.h"
 #include "scene/gltf_loader.h"
+#include "freedoms/plane_setup.h"
 #include "freedoms/shadow_map_ties.h"
 #include "stage_test_scene.h"
 #include "stages/shadow_map.h"
@@ -61,10 +62,15 @@ TEST(ShadowMapTies, SlopedPlaneSpansItsOwnMarginOfOneStepPerAxis) {
   Scene s;
   const uint32_t grey = test::add_material(s, vec3(0.5f));
   // z = -3 - 0.1 x: window depth 0.2 + 0.01 x, 0.01 per texel along x, none along y; one
-  // sub-texel step on each axis moves it by 2^-8 * 0.01 (depth_tie_margin, with its 2^-22).
+  // sub-texel step on each axis moves it by 2^-8 * 0.01 (depth_tie_margin), plus the arithmetic:
+  // 2^-22, or the plane's float set-up where larger (plane_setup.h; a few 2^-24 here).
   test::add_quad(s, {-9, -9, -2.1f}, {9, -9, -3.9f}, {9, 9, -3.9f}, {-9, 9, -2.1f}, {0, 0, 1}, grey);
   const Image r = shadow_depth_range(s, light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
-  const double m = std::ldexp(1.0, -22) + 0.01 / 256.0;
+  double setup = 0.0;
+  for (const RasterTriangle& t : setup_and_bin(s.positions, s.triangles, light_view_proj(), kSize, kSize).triangles)
+    setup = std::max(setup, plane_setup_margin(t));
+  ASSERT_LT(setup, 2e-6);
+  const double m = std::max(std::ldexp(1.0, -22), setup + 2.0 * kFloatRoundoff) + 0.01 / 256.0;
   for (int row = 1; row < kSize - 1; row += 3)
     for (int x = 1; x < kSize - 1; x += 2) {
       const double z = 0.2 + 0.01 * (double(x) - 7.5);
@@ -165,9 +171,70 @@ TEST(ShadowMapTies, AnAlphaFlipsPlaneCarriesItsSnapMargin) {
   const Image r = shadow_depth_range(s, maps[0].view_proj, 64, ShadowDepthFormat::Depth32f);
   EXPECT_LE(lo_of(r, 19, 17), 0.57960f);
   // A margin, not the whole map: 2^-8 (|dz/dx| + |dz/dy|) per step of a plane that tilts 0.037 in
-  // depth across a 0.1-texel width is 2.1e-3 here.
-  EXPECT_GE(lo_of(r, 19, 17), 0.5775f);
+  // depth across a 0.1-texel width is 2.1e-3 here, and the same sliver's float plane set-up
+  // (plane_setup.h) about as much again.
+  EXPECT_GE(lo_of(r, 19, 17), 0.5745f);
   EXPECT_EQ(hi_of(r, 19, 17), 1.0f);     // the reference's own (cut: the clear value)
+}
+
+// A masked quad at z = -3 (window depth 0.2, nothing behind it) whose base colour is a 2 x 1
+// NEAREST, REPEAT texture of alpha 1 and 0 (cutoff 1/2), with u = k x + 1/4: in texel units
+// 2 k x + 1/2, so every texel centre of the map (x = c - 7.5) lies in the middle of an opaque
+// texel, and the snap square (+-2^-8 texel) reaches +-k/128 texels of the texture.
+Scene striped_mask(float k) {
+  Scene s;
+  Texture t = test::two_texel_texture("stripes", {255, 255, 255, 255, 255, 255, 255, 0}, true);
+  t.wrap_s = t.wrap_t = Wrap::Repeat;
+  s.textures.push_back(t);
+  const uint32_t m = test::add_material(s, vec3(0.5f));
+  s.materials[m].base_color_texture.texture = 0;
+  s.materials[m].alpha_mode = AlphaMode::Mask;
+  s.materials[m].alpha_cutoff = 0.5f;
+  test::add_quad(s, {-9, -9, -3}, {9, -9, -3}, {9, 9, -3}, {-9, 9, -3}, {0, 0, 1}, m);
+  for (size_t i = 0; i < s.positions.size(); ++i) s.uv0[i] = vec2(k * s.positions[i].x + 0.25f, 0.5f);
+  return s;
+}
+
+TEST(ShadowMapTies, AnAlphaTexelInsideTheSnapSquareMayFlipWhereNoCornerDoes) {
+  // k = 256: the square reaches +-2 texels, so its corners land on opaque texels (as the centre)
+  // while the transparent ones between them lie inside it: GL's sample may land there (each vertex
+  // snaps on its own; at a covered centre the point interpolated moves anywhere in the square), so
+  // the clear value joins the range. The four corners alone never flip here
+  // (scenes/regressions/seed-2289-small: a noise-masked wall seen edge-on from a point light).
+  const Image wide = shadow_depth_range(striped_mask(256.0f), light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
+  // k = 16: the square reaches +-1/8 texel, inside one opaque texel: the quad for certain.
+  const Image narrow = shadow_depth_range(striped_mask(16.0f), light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
+  const float m = float(std::ldexp(1.0, -22));
+  for (int row = 1; row < kSize - 1; row += 2)
+    for (int x = 1; x < kSize - 1; x += 3) {
+      EXPECT_NEAR(lo_of(wide, x, row), 0.2f - m, 1e-7f) << x << "," << row;
+      EXPECT_EQ(hi_of(wide, x, row), 1.0f) << x << "," << row;
+      EXPECT_NEAR(lo_of(narrow, x, row), 0.2f - m, 1e-7f) << x << "," << row;
+      EXPECT_NEAR(hi_of(narrow, x, row), 0.2f + m, 1e-7f) << x << "," << row;
+    }
+}
+
+TEST(ShadowMapTies, AMaskedWallSeenEdgeOnMayFlipAnywhereInItsSnapSquare) {
+  // scenes/regressions/seed-2289-small: one wall triangle, alpha-masked by a NEAREST noise texture,
+  // seen nearly edge-on by a point light's cube face 4; along texel column 128 one 2^-8 texel step
+  // crosses several of its texels. Mesa llvmpipe kept the wall (0.89305) at rows 231 and 244, where
+  // the reference's sample and the square's four corners all lie on transparent texels, and cut it
+  // (the clear value) at row 251, where they all lie on opaque ones.
+  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-2289-small/scene.gltf");
+  VctSettings settings;
+  settings.shadow_map_size = 256;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  ASSERT_EQ(maps.size(), 1u);
+  ASSERT_TRUE(maps[0].is_cube());
+  const Image r = shadow_depth_range(s, maps[0].cube_view_proj[4], 256, ShadowDepthFormat::Depth32f);
+  for (int row : {231, 244}) {
+    EXPECT_LE(lo_of(r, 128, row), 0.89305f) << row;
+    EXPECT_EQ(hi_of(r, 128, row), 1.0f) << row;
+  }
+  EXPECT_LE(lo_of(r, 128, 251), 0.89265f);
+  EXPECT_EQ(hi_of(r, 128, 251), 1.0f);
+  // One column right the wall covers no centre (the clear value for certain).
+  EXPECT_EQ(lo_of(r, 130, 244), 1.0f);
 }
 
 TEST(ShadowMapTies, CubeFacesGetRangesHoldingTheirUnormMap) {
