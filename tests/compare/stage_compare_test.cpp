@@ -253,7 +253,7 @@ TEST(StageCompare, FilledVoxelTheCoverageTiesMayMoveIsADerivedTie) {
   // Three unfilled voxels under an identical surface: no surface difference on their rays, but the
   // reference says their thickening may change (3 of 128 occupied: beyond the 1 % counted cap).
   for (int x = 0; x < 3; ++x) b.volumes["voxel.radiance"].set_rgba(x, 1, 5, vec4(0.0f));
-  const StageVerdict& derived = find(compare_stage_sets(a, b), "voxel.occupancy");
+  const StageVerdict derived = find(compare_stage_sets(a, b), "voxel.occupancy");  // a copy: the report is a temporary
   EXPECT_EQ(derived.verdict, Verdict::Warn) << derived.note;
   EXPECT_EQ(derived.admitted[Rule::CoverageTie], 3u);
   // Without the tie volume the same voxels fail (no ray crosses a surface difference).
