@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "freedoms/fragment_slack.h"
-#include "freedoms/raster_alternatives.h"  // kVertexSnapStep
 #include "freedoms/voxel_alpha_ties.h"
 #include "stages/raster.h"
 
