@@ -265,21 +265,39 @@ TEST(CoverageTies, EverySnappedFragmentCountIsInsideTheCountRange) {
   EXPECT_LT(wide, size_t(vox.covered));
 }
 
+// tilted_triangles glowing (emission 0.5, so every fragment carries light without shadow maps),
+// voxelized at 16^3 with its ties, and the coverage ties' slack with no per-fragment slack.
+struct GlowingTies {
+  Scene scene;
+  Voxelization vox;
+  VctSettings settings;
+  std::vector<vec3> values;
+  Volume slack, exact;
+};
+GlowingTies glowing_ties() {
+  GlowingTies g;
+  std::mt19937 rng(11);
+  g.scene = tilted_triangles(rng);
+  for (Material& m : g.scene.materials) m.emissive_factor = vec3(0.5f);
+  const int n = 16;
+  g.vox = voxelization_with_ties(g.scene, n);
+  g.settings.grid = n;
+  g.values = fragment_radiance(g.scene, g.vox, {}, g.settings);
+  g.slack = Volume(n, n, n, 1);
+  g.exact = Volume(n, n, n, 1);
+  widen_for_coverage_ties(g.scene, g.vox, g.values, std::vector<float>(g.vox.fragments.size(), 0.0f), {}, g.settings,
+                          nullptr, g.slack, g.exact);
+  return g;
+}
+
 // A voxel whose every fragment may land in a neighbour may be written no fragment at all: a fill
 // that still occupies it leaves RGB 0 (stages/voxel_fill.h), so its slack reaches down to 0. The
-// triangles glow (emission 0.5), so every fragment carries light without shadow maps.
+// triangles glow (glowing_ties).
 TEST(CoverageTies, AVoxelEveryFragmentMayLeaveAdmitsNoLight) {
-  std::mt19937 rng(11);
-  Scene s = tilted_triangles(rng);
-  for (Material& m : s.materials) m.emissive_factor = vec3(0.5f);
-  const int n = 16;
-  const Voxelization vox = voxelization_with_ties(s, n);
-  VctSettings settings;
-  settings.grid = n;
-  const std::vector<vec3> values = fragment_radiance(s, vox, {}, settings);
-  const std::vector<float> fragment_slack(vox.fragments.size(), 0.0f);
-  Volume slack(n, n, n, 1), exact(n, n, n, 1);
-  widen_for_coverage_ties(s, vox, values, fragment_slack, {}, settings, nullptr, slack, exact);
+  const GlowingTies g = glowing_ties();
+  const Voxelization& vox = g.vox;
+  const std::vector<vec3>& values = g.values;
+  const Volume& slack = g.slack;
   size_t all_may_leave = 0;
   for (size_t b = 0, e = 0; b < vox.fragments.size(); b = e) {
     bool every = true;
@@ -299,21 +317,14 @@ TEST(CoverageTies, AVoxelEveryFragmentMayLeaveAdmitsNoLight) {
 // A voxel only fragments that may be added reach holds no light in the reference (RGB 0 where a
 // fill occupies it); GL may write any of them, so its slack reaches up to the largest one's light.
 TEST(CoverageTies, AVoxelOnlyAddedFragmentsReachAdmitsTheirLight) {
-  std::mt19937 rng(11);
-  Scene s = tilted_triangles(rng);
-  for (Material& m : s.materials) m.emissive_factor = vec3(0.5f);
-  const int n = 16;
-  const Voxelization vox = voxelization_with_ties(s, n);
-  VctSettings settings;
-  settings.grid = n;
-  const std::vector<vec3> values = fragment_radiance(s, vox, {}, settings);
-  Volume slack(n, n, n, 1), exact(n, n, n, 1);
-  widen_for_coverage_ties(s, vox, values, std::vector<float>(vox.fragments.size(), 0.0f), {}, settings, nullptr, slack,
-                          exact);
+  const GlowingTies g = glowing_ties();
+  const Voxelization& vox = g.vox;
+  const Volume& slack = g.slack;
+  const int n = g.settings.grid;
   Voxelization added;
   added.n = n;
   added.fragments = vox.may_add;
-  const std::vector<vec3> added_values = fragment_radiance(s, added, {}, settings);
+  const std::vector<vec3> added_values = fragment_radiance(g.scene, added, {}, g.settings);
   size_t only_added = 0;
   for (size_t k = 0; k < vox.may_add.size(); ++k) {
     const ivec3 v = vox.may_add[k].voxel;
