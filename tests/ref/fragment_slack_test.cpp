@@ -85,6 +85,31 @@ TEST(FragmentSlack, PositionTermIsTheLightsChangeOverASnapOfTheVoxelRaster) {
   EXPECT_GT(checked, 20);
 }
 
+// `s` under a sun of intensity 2 pointing along `direction`, voxelized at 8^3 (4 samples): each
+// fragment's light and shading slack.
+struct SunlitVoxels {
+  Light sun;
+  VctSettings settings;
+  Voxelization vox;
+  std::vector<vec3> values;
+  std::vector<float> slack;
+};
+SunlitVoxels sunlit_voxels(Scene& s, const vec3& direction) {
+  SunlitVoxels v;
+  v.sun.kind = LightKind::Directional;
+  v.sun.direction = direction;
+  v.sun.intensity = 2.0f;
+  s.lights.push_back(v.sun);
+  s.volume = fit_volume(s.bounds);
+  build_texture_mips(s);
+  v.settings.grid = 8;
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, v.settings);
+  v.vox = voxelize_gpu_rule(s, v.settings.grid, 4);
+  v.values = fragment_radiance(s, v.vox, maps, v.settings);
+  v.slack = fragment_shading_slack(s, v.vox, maps, v.settings);
+  return v;
+}
+
 // A floor whose normal map is one texel (128, 128, 255) under a sun at 60 degrees elevation along
 // +x: tn = 2 t - 1 = (1/255, 1/255, 1), so with normal +y and tangent +x (bitangent n x t = -z)
 // the shading normal is (tn.x, tn.z, -tn.y) / |tn| and n.l = (tn.x cos e + tn.z sin e) / |tn|.
@@ -102,19 +127,11 @@ TEST(FragmentSlack, NormalMapTexelMayBeOneUnorm8StepOff) {
   s.textures.push_back(t);
   s.materials[m].normal_texture.texture = 0;
   const double e = glm::radians(60.0);
-  Light sun;
-  sun.kind = LightKind::Directional;
-  sun.direction = -vec3(float(std::cos(e)), float(std::sin(e)), 0.0f);  // where the light points
-  sun.intensity = 2.0f;
-  s.lights.push_back(sun);
-  s.volume = fit_volume(s.bounds);
-  build_texture_mips(s);
-  VctSettings settings;
-  settings.grid = 8;
-  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
-  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
-  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
+  // The direction is where the light points.
+  const SunlitVoxels lit = sunlit_voxels(s, -vec3(float(std::cos(e)), float(std::sin(e)), 0.0f));
+  const Voxelization& vox = lit.vox;
+  const std::vector<vec3>& values = lit.values;
+  const std::vector<float>& slack = lit.slack;
   const auto n_dot_l = [&](double tx, double ty, double tz) {
     const glm::dvec3 tn(2.0 * tx - 1.0, 2.0 * ty - 1.0, 2.0 * tz - 1.0);
     return (tn.x * std::cos(e) + tn.z * std::sin(e)) / glm::length(tn);
@@ -161,19 +178,12 @@ TEST(FragmentSlack, PositionTermReachesEveryNearestTexelInsideTheSnap) {
   }
   s.textures.push_back(t);
   s.materials[m].base_color_texture.texture = 0;
-  Light sun;
-  sun.kind = LightKind::Directional;
-  sun.direction = glm::normalize(vec3(0.3f, -1.0f, 0.2f));
-  sun.intensity = 2.0f;
-  s.lights.push_back(sun);
-  s.volume = fit_volume(s.bounds);
-  build_texture_mips(s);
-  VctSettings settings;
-  settings.grid = 8;
-  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
-  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
-  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
+  const SunlitVoxels lit = sunlit_voxels(s, glm::normalize(vec3(0.3f, -1.0f, 0.2f)));
+  const Light& sun = lit.sun;
+  const VctSettings& settings = lit.settings;
+  const Voxelization& vox = lit.vox;
+  const std::vector<vec3>& values = lit.values;
+  const std::vector<float>& slack = lit.slack;
   const double e_cos = double(sun.intensity) * double(-sun.direction.y) * double(kInvPi);
   // The square's half-width along u: at least 2^-8 voxel (the reach grows a little with the
   // triangle's gradients, never shrinks).
