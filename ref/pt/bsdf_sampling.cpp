@@ -56,6 +56,10 @@ float ggx_vndf_reflection_pdf(const vec3& v, const vec3& l, float roughness) {
   return smith_g1_ggx(v, alpha) * sh::ggx_distribution(vec3(0.0f, 0.0f, 1.0f), h, roughness) / (4.0f * v.z);
 }
 
+namespace {
+vec3 to_local(const sh::Frame& f, const vec3& w) { return vec3(glm::dot(w, f.t), glm::dot(w, f.b), glm::dot(w, f.n)); }
+}  // namespace
+
 BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& ng, const vec3& v) {
   BsdfPoint p;
   p.pbr = pbr;
@@ -63,6 +67,7 @@ BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& 
   p.ng = ng;
   p.v = v;
   p.frame = sh::frame_from_normal(n);
+  p.v_local = to_local(p.frame, v);
   p.lambertian = pbr.f0 == vec3(0.0f) && pbr.f90 == 0.0f;
   // cook_torrance_lobes' diffuse expression with its Fresnel value, F = f0 + (f90 - f0) m^5 = 0.
   if (p.lambertian) p.lambert_diffuse = sh::diffuse_weight(pbr, vec3(0.0f)) * pbr.albedo * sh::SH_INV_PI;
@@ -95,12 +100,8 @@ BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l) {
   return out;
 }
 
-namespace {
-vec3 to_local(const sh::Frame& f, const vec3& w) { return vec3(glm::dot(w, f.t), glm::dot(w, f.b), glm::dot(w, f.n)); }
-}  // namespace
-
 float bsdf_pdf(const BsdfPoint& p, const vec3& l) {
-  const vec3 ll = to_local(p.frame, l), vl = to_local(p.frame, p.v);
+  const vec3 ll = to_local(p.frame, l), &vl = p.v_local;
   if (ll.z <= 0.0f) return 0.0f;
   float pdf = 0.0f;
   if (p.specular_probability > 0.0f)
@@ -111,7 +112,7 @@ float bsdf_pdf(const BsdfPoint& p, const vec3& l) {
 
 BsdfSample sample_bsdf(const BsdfPoint& p, float u_lobe, vec2 u) {
   BsdfSample s;
-  const vec3 vl = to_local(p.frame, p.v);
+  const vec3& vl = p.v_local;
   if (vl.z <= 0.0f) return s;
   vec3 ll;
   if (u_lobe < p.specular_probability) {

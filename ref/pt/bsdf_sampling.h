@@ -34,6 +34,7 @@ struct BsdfPoint {
   vec3 ng;
   vec3 v;
   sh::Frame frame;  // around n
+  vec3 v_local{0.0f};  // v in `frame` (sample_bsdf and bsdf_pdf read it for every direction)
   float specular_probability = 0.0f;
   // Fresnel identically 0 (f0 = 0 and f90 = 0, e.g. KHR_materials_specular factor 0): the
   // specular lobe is exactly 0 and the diffuse lobe the constant kd albedo / pi, which eval_bsdf

@@ -134,32 +134,30 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler
                               RayCounts& counts) const {
   const PathSampler::EmitterDraw d = rng.emitter(v.depth);
   const EmissiveTriangles::Sample ls = d.reuse_x ? lights_.sample_reusing(d.x, d.u.y) : lights_.sample(d.u_select, d.u);
+  if (ls.triangle == v.triangle) return;  // a flat triangle never lights itself
   // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
   if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return;
   // An untextured emitter's radiance is its material's constant: only the point's position and
-  // geometric normal are needed (docs/performance.md "Shading per ray").
-  const Material& lm = scene_.materials[scene_.triangle_material[ls.triangle]];
-  const bool textured = lm.emissive_texture.present();
-  const SurfacePoint lp = textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2)
-                                   : interpolate_position(scene_, ls.triangle, ls.b1, ls.b2);
-  const vec3 to_light = lp.position - v.pos;
+  // geometric normal are needed, from the emitter's own record (docs/performance.md).
+  const EmissiveTriangles::Geometry& g = lights_.geometry(ls);
+  const SurfacePoint lp = g.textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2) : SurfacePoint{};
+  const vec3 light_pos = g.textured ? lp.position : g.position(ls.b1, ls.b2);
+  const vec3 light_n = g.textured ? lp.geometric_normal : g.normal;
+  const vec3 to_light = light_pos - v.pos;
   const float dist2 = glm::dot(to_light, to_light);
   const float dist = std::sqrt(dist2);
   if (!(dist > 0.0f)) return;
   const vec3 l = to_light / dist;
-  const float cos_l = std::abs(glm::dot(lp.geometric_normal, l));
-  if (ls.triangle == v.triangle || glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
+  const float cos_l = std::abs(glm::dot(light_n, l));
+  if (glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
+  // emitted_radiance toward -l: one-sided emitters emit from the front face only.
+  if (!g.double_sided && glm::dot(light_n, -l) <= 0.0f) return;
   const BsdfValue f = eval_bsdf(v.bp, l);
   if (f.total() == vec3(0.0f)) return;
-  SurfaceMaterial lmat;
-  if (textured)
-    lmat = evaluate_material(scene_, lp);
-  else
-    lmat.emission = lm.emission();  // evaluate_material's value without an emissive texture
-  const vec3 le = emitted_radiance(scene_, lp, lmat, -l);
+  const vec3 le = g.textured ? emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l) : g.emission;
   if (le == vec3(0.0f)) return;
   ++counts.shadow;
-  if (rt_.occluded(v.p, lp.position - v.p, leave_tnear(lp.position - v.p), 1.0f - eps_ / dist)) return;
+  if (rt_.occluded(v.p, light_pos - v.p, leave_tnear(light_pos - v.p), 1.0f - eps_ / dist)) return;
   const float pdf_light = ls.pdf_area * dist2 / cos_l;
   const float w = power_heuristic(pdf_light, bsdf_pdf(v.bp, l));
   credit_nee(out, tp, v.depth, f, le * (glm::dot(v.bp.n, l) * w / pdf_light));
@@ -228,7 +226,7 @@ bool Integrator::shade(const Hit& hit, const vec3& dir, int depth, const Through
       sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
   // Light geometry is evaluated at the true surface point; only rays start from the point
   // lifted off the surface (along ng, the side every accepted direction leaves on).
-  v = Vertex{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, ns, hit.triangle, depth};
+  v = Vertex{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, hit.triangle, depth};
   nee_punctual(v, tp, out, counts);
   return true;
 }
@@ -251,7 +249,7 @@ PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sa
     if (!bs.valid) break;
     const BsdfValue f = eval_bsdf(v.bp, bs.l);
     if (f.total() == vec3(0.0f)) break;
-    const float k = glm::dot(v.ns, bs.l) / bs.pdf;
+    const float k = glm::dot(v.bp.n, bs.l) / bs.pdf;
     if (v.depth == 1) {
       tp.lobe_d = f.diffuse * k;
       tp.lobe_s = f.specular * k;

@@ -58,12 +58,12 @@ class Integrator {
     vec3 beta{1.0f}, lobe_d{0.0f}, lobe_s{0.0f};
   };
 
-  /// A shading point: BSDF, true position, lifted ray origin, shading normal, depth.
+  /// A shading point: BSDF (bp.n is the oriented shading normal), true position, lifted ray
+  /// origin, depth.
   struct Vertex {
     BsdfPoint bp;
     vec3 pos;  // on the surface: light geometry is evaluated here
     vec3 p;    // lifted along ng: rays start here
-    vec3 ns;   // the oriented shading normal (the BSDF sample's cosine)
     uint32_t triangle;
     int depth;
   };
