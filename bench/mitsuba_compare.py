@@ -6,7 +6,7 @@ figures in docs/performance.md).
   bench/mitsuba_compare.py [--glossy] [--size 128] [--spp 256] [--depth 64] [--threads 2]
                            [--variant llvm_ad_rgb|scalar_rgb] [--estimand centres|box]
                            [--pt-sampler sobol,independent] [--mitsuba-samplers independent,stratified,multijitter]
-                           [--ref-parts 16] [--vct build/bin/vct]
+                           [--ref-parts 16] [--vct build/bin/vct] [--work DIR]
       benchmark, run by hand: efficiency 1 / (MSE x CPU seconds of the render itself), ours over
       Mitsuba's, each MSE against a converged reference (Mitsuba's independent sampler at
       ref-parts x spp through pixel centres, its own variance subtracted), two seeds each, at
@@ -17,6 +17,8 @@ figures in docs/performance.md).
       camera rays through pixel centres as ours; box: mi.render with a box filter (another image).
       Ours: pt.sampler (default sobol: scrambled Sobol replicates, docs/pathtracer.md), its CPU
       time from run.json pathtrace.render_cpu_seconds. Not ldsampler: biased here (docs/performance.md).
+      --work DIR keeps every render there (default: a temporary directory), the reference as ref.npy
+      with its variance in ref.json, so that our images can be scored again without Mitsuba.
   bench/mitsuba_compare.py --test [--size 32] [--spp 64]
       correctness (ctest pt_mitsuba_agreement): the image means of the two renderers (Mitsuba
       scalar_rgb, pixel centres) agree per channel within 4 standard errors; exit 0 pass, 1 fail,
@@ -40,6 +42,7 @@ benchmark trace Mitsuba's camera rays through pixel centres too (--estimand box:
 """
 import argparse
 import base64
+import contextlib
 import json
 import math
 import os
@@ -322,7 +325,11 @@ def reference(g, work, size, spp, depth, variant, parts):
     every MSE against it carries and which is subtracted from the MSEs below."""
     imgs = [render_mitsuba(g, work, size, spp, depth, 1000 + k, True, "independent", variant)[0] for k in range(parts)]
     stack = np.stack(imgs)
-    return stack.mean(axis=0), float(stack.var(axis=0, ddof=1).mean() / parts)
+    ref, ref_var = stack.mean(axis=0), float(stack.var(axis=0, ddof=1).mean() / parts)
+    np.save(os.path.join(work, "ref.npy"), ref)
+    with open(os.path.join(work, "ref.json"), "w") as f:
+        json.dump({"variance": ref_var, "parts": parts, "spp": spp, "variant": variant}, f)
+    return ref, ref_var
 
 
 def benchmark(a, g, scene_path, work, size, spp):
@@ -389,6 +396,7 @@ def main(argv):
     ap.add_argument("--estimand", choices=("centres", "box"), default="centres",
                     help="benchmark: Mitsuba's camera rays through pixel centres (ours' estimand) or its box filter")
     ap.add_argument("--ref-parts", type=int, default=16, help="benchmark: reference = this many x spp")
+    ap.add_argument("--work", help="keep the renders and the reference (ref.npy) in this directory")
     a = ap.parse_args(argv)
     size = a.size or (32 if a.test else 128)
     spp = a.spp or (64 if a.test else 256)
@@ -397,7 +405,9 @@ def main(argv):
     except ImportError:
         print("mitsuba_compare: mitsuba is not installed in this Python (scripts/setup.sh puts it in .venv)")
         return 77 if a.test else 3
-    with tempfile.TemporaryDirectory(prefix="vct-mitsuba-") as work:
+    if a.work:
+        os.makedirs(a.work, exist_ok=True)
+    with (contextlib.nullcontext(a.work) if a.work else tempfile.TemporaryDirectory(prefix="vct-mitsuba-")) as work:
         scene_path = os.path.join(work, "cornell_glossy.gltf" if a.glossy else "cornell_lambert.gltf")
         g = cornell_scene(scene_path, a.glossy)
         print("%s Cornell box, spot + area light, %d^2, %d spp, depth %d, load average %s"

@@ -50,10 +50,13 @@ vec3 sample_ggx_vndf(const vec3& v, float alpha, vec2 u) {
 }
 
 float ggx_vndf_reflection_pdf(const vec3& v, const vec3& l, float roughness) {
+  return ggx_vndf_reflection_pdf(smith_g1_ggx(v, roughness * roughness), v, l, roughness);
+}
+
+float ggx_vndf_reflection_pdf(float g1_v, const vec3& v, const vec3& l, float roughness) {
   if (v.z <= 0.0f || l.z <= 0.0f) return 0.0f;
   const vec3 h = glm::normalize(v + l);
-  const float alpha = roughness * roughness;
-  return smith_g1_ggx(v, alpha) * sh::ggx_distribution(vec3(0.0f, 0.0f, 1.0f), h, roughness) / (4.0f * v.z);
+  return g1_v * sh::ggx_distribution(vec3(0.0f, 0.0f, 1.0f), h, roughness) / (4.0f * v.z);
 }
 
 namespace {
@@ -83,6 +86,8 @@ BsdfPoint make_bsdf_point(const sh::SurfacePbr& pbr, const vec3& n, const vec3& 
     p.specular_probability = 1.0f;
   else
     p.specular_probability = std::clamp(ws / (ws + wd), 0.05f, 0.95f);
+  // Only the specular lobe's pdf reads G1(v).
+  if (p.specular_probability > 0.0f) p.g1_v = smith_g1_ggx(p.v_local, pbr.roughness * pbr.roughness);
   return p;
 }
 
@@ -105,7 +110,7 @@ float bsdf_pdf(const BsdfPoint& p, const vec3& l) {
   if (ll.z <= 0.0f) return 0.0f;
   float pdf = 0.0f;
   if (p.specular_probability > 0.0f)
-    pdf += p.specular_probability * ggx_vndf_reflection_pdf(vl, ll, p.pbr.roughness);
+    pdf += p.specular_probability * ggx_vndf_reflection_pdf(p.g1_v, vl, ll, p.pbr.roughness);
   if (p.specular_probability < 1.0f) pdf += (1.0f - p.specular_probability) * cosine_hemisphere_pdf(ll);
   return pdf;
 }

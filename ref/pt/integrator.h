@@ -81,6 +81,12 @@ class Integrator {
   FirstVertex first_vertex(int x, int y, RayCounts& counts) const;
   /// Sample `sample` of pixel (x, y) from its first vertex.
   PathSample trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const;
+  /// Samples sample … sample + n − 1 (n <= EmbreeScene::kPacket) of pixel (x, y) from its first
+  /// vertex into out[0 … n−1]: the same floats as n calls of trace(), but the first vertex's
+  /// emitter shadow rays and its BSDF rays, which all leave one point, go to Embree as one packet
+  /// each (docs/performance.md "Issue 37, session 17").
+  void trace_packet(const FirstVertex& first, int x, int y, uint32_t sample, int n, PathSample* out,
+                    RayCounts& counts) const;
 
  private:
   /// Shades the vertex at `hit` reached along `dir`: its emission (MIS-weighted past the first
@@ -89,6 +95,25 @@ class Integrator {
              RayCounts& counts, Vertex& v) const;
   void nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
   void nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
+  /// The emitter NEE up to its shadow ray: the ray (inactive when the sample contributes nothing)
+  /// and what credit_emitter needs if the ray is unoccluded.
+  struct NeeRay {
+    EmbreeScene::RayQuery ray;
+    BsdfValue f;
+    vec3 l{0.0f}, le{0.0f};
+    float pdf_light = 0.0f;
+  };
+  NeeRay emitter_ray(const Vertex& v, PathSampler& rng) const;
+  /// An unoccluded emitter sample's light, MIS-weighted against BSDF sampling.
+  void credit_emitter(const Vertex& v, const Throughput& tp, const NeeRay& r, PathSample& out) const;
+  /// The BSDF sample at v, the throughput through it and Russian roulette: false when the path
+  /// ends there.
+  bool scatter(const Vertex& v, Throughput& tp, PathSampler& rng, BsdfSample& bs) const;
+  /// The path from vertex v on (its NEE, then bounce after bounce), adding into out; v is
+  /// overwritten by each vertex reached.
+  void continue_path(Vertex& v, Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
+  /// Sets out to 0 when a value is NaN/inf (counted).
+  static void drop_nonfinite(PathSample& out, RayCounts& counts);
   void nee_particles(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
 
   const Scene& scene_;

@@ -67,9 +67,14 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
             continue;
           }
           Integrator::FirstVertex& f = first[size_t(y) * size_t(acc.width()) + size_t(x)];
-          for (uint32_t p = s; p < s_end; ++p) {
-            if (p == first_pass) f = integrator_.first_vertex(x, y, counts);
-            acc.add(x, y, p, integrator_.trace(f, x, y, p, counts));
+          if (s == first_pass) f = integrator_.first_vertex(x, y, counts);
+          // The batch's samples of this pixel in packets (Integrator::trace_packet: the same floats
+          // as one trace() each), added in index order.
+          PathSample samples[EmbreeScene::kPacket];
+          for (uint32_t p = s; p < s_end; p += EmbreeScene::kPacket) {
+            const int n = int(std::min<uint32_t>(EmbreeScene::kPacket, s_end - p));
+            integrator_.trace_packet(f, x, y, p, n, samples, counts);
+            for (int i = 0; i < n; ++i) acc.add(x, y, p + uint32_t(i), samples[i]);
           }
         }
       per_tile[size_t(t)] = counts;
