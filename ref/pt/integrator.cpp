@@ -153,7 +153,7 @@ Integrator::NeeRay Integrator::emitter_ray(const Vertex& v, PathSampler& rng) co
   if (glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return r;
   // emitted_radiance toward -l: one-sided emitters emit from the front face only.
   if (!g.double_sided && glm::dot(light_n, -l) <= 0.0f) return r;
-  r.f = eval_bsdf(v.bp, l);
+  r.f = eval_bsdf(v.bp, l, r.bsdf_pdf);
   if (r.f.total() == vec3(0.0f)) return r;
   const vec3 le = g.textured ? emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l) : g.emission;
   if (le == vec3(0.0f)) return r;
@@ -178,7 +178,7 @@ void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler
 }
 
 void Integrator::credit_emitter(const Vertex& v, const Throughput& tp, const NeeRay& r, PathSample& out) const {
-  const float w = power_heuristic(r.pdf_light, bsdf_pdf(v.bp, r.l));
+  const float w = power_heuristic(r.pdf_light, r.bsdf_pdf);
   credit_nee(out, tp, v.depth, r.f, r.le * (glm::dot(v.bp.n, r.l) * w / r.pdf_light));
 }
 
@@ -258,7 +258,7 @@ bool Integrator::scatter(const Vertex& v, Throughput& tp, PathSampler& rng, Bsdf
   rng.bsdf(v.depth, v.bp.specular_probability > 0.0f && v.bp.specular_probability < 1.0f, u_lobe, u_dir);
   bs = sample_bsdf(v.bp, u_lobe, u_dir);
   if (!bs.valid) return false;
-  const BsdfValue f = eval_bsdf(v.bp, bs.l);
+  const BsdfValue& f = bs.f;
   if (f.total() == vec3(0.0f)) return false;
   const float k = glm::dot(v.bp.n, bs.l) / bs.pdf;
   if (v.depth == 1) {

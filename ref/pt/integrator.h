@@ -101,7 +101,7 @@ class Integrator {
     EmbreeScene::RayQuery ray;
     BsdfValue f;
     vec3 l{0.0f}, le{0.0f};
-    float pdf_light = 0.0f;
+    float pdf_light = 0.0f, bsdf_pdf = 0.0f;
   };
   NeeRay emitter_ray(const Vertex& v, PathSampler& rng) const;
   /// An unoccluded emitter sample's light, MIS-weighted against BSDF sampling.
