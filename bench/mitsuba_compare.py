@@ -6,10 +6,10 @@ figures in docs/performance.md).
   bench/mitsuba_compare.py [--glossy] [--size 128] [--spp 256] [--depth 64] [--threads 2]
                            [--variant llvm_ad_rgb|scalar_rgb] [--estimand centres|box]
                            [--pt-sampler sobol,independent] [--mitsuba-samplers independent,stratified,multijitter]
-                           [--ref-parts 16] [--vct build/bin/vct] [--work DIR]
+                           [--ref-parts 16] [--seeds 2] [--vct build/bin/vct] [--work DIR]
       benchmark, run by hand: efficiency 1 / (MSE x CPU seconds of the render itself), ours over
       Mitsuba's, each MSE against a converged reference (Mitsuba's independent sampler at
-      ref-parts x spp through pixel centres, its own variance subtracted), two seeds each, at
+      ref-parts x spp through pixel centres, its own variance subtracted), --seeds renders each (default 2), at
       equal spp and at equal CPU time (Mitsuba's spp scaled to our CPU time); prints RATIO lines
       and the load average. Each Mitsuba render runs in a worker process of its own
       (--mitsuba-worker); on llvm_ad_rgb it is rendered twice and the second timed (no kernel
@@ -251,6 +251,10 @@ def render_centres(mi, scene, size, spp, seed):
     if mi.variant().startswith("scalar"):
         return centres_scalar(mi, scene, sensor, integrator, sampler, size, spp, seed)
     import drjit as dr
+    # The sampler's own count: stratified and multijitter round a requested count (412 -> 441), and
+    # lanes laid out by the requested one would straddle its per-pixel strata (each pixel's lanes no
+    # longer one stratified set): the equal-time renders of issue 37's first table did that.
+    spp = sampler.sample_count()
     n = size * size * spp
     sampler.seed(seed, n)
     pixel = dr.arange(mi.UInt32, n) // spp
@@ -334,10 +338,11 @@ def reference(g, work, size, spp, depth, variant, parts):
 
 def benchmark(a, g, scene_path, work, size, spp):
     """Efficiency 1 / (MSE x CPU seconds of the render), ours over Mitsuba's, each MSE against a
-    converged reference (its own variance subtracted), two seeds each; at equal spp and at equal
+    converged reference (its own variance subtracted), --seeds renders each; at equal spp and at equal
     CPU time (Mitsuba's spp scaled to our CPU time)."""
     centres = a.estimand == "centres"
     ours_samplers = a.pt_sampler.split(",")
+    seeds = range(1, a.seeds + 1)
     ref, ref_var = reference(g, work, size, spp, a.depth, a.variant, a.ref_parts)
     print("  reference: mitsuba %s independent, pixel centres, %d x %d spp; its own per-pixel variance %.3g "
           "(subtracted from each MSE)" % (a.variant, a.ref_parts, spp, ref_var))
@@ -346,11 +351,11 @@ def benchmark(a, g, scene_path, work, size, spp):
         err = np.mean([mse(r[0], ref) for r in runs]) - ref_var
         return err, min(r[1] for r in runs), min(r[2] for r in runs), np.mean([r[0].mean() for r in runs])
 
-    ours = {n: stats([render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, n) for seed in (1, 2)])
+    ours = {n: stats([render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, n) for seed in seeds])
             for n in ours_samplers}
     theirs = {n: stats([render_mitsuba(g, work, size, spp, a.depth, seed, centres, n, a.variant, warm=True,
                                        threads=a.threads)
-                        for seed in (1, 2)]) for n in a.mitsuba_samplers.split(",")}
+                        for seed in seeds]) for n in a.mitsuba_samplers.split(",")}
     print("  ref image mean %.5f" % ref.mean())
     for name, (err, wall, cpu, mean) in list(ours.items()) + [("mitsuba " + k, v) for k, v in theirs.items()]:
         print("  %-28s %d spp: MSE %.4g  wall %.2f s  CPU %.2f s  image mean %.5f  efficiency 1/(MSE*CPU) %.4g"
@@ -365,7 +370,7 @@ def benchmark(a, g, scene_path, work, size, spp):
         spp_eq = max(1, int(round(spp * ocpu / mcpu)))
         err, wall, cpu, _ = stats([render_mitsuba(g, work, size, spp_eq, a.depth, seed, centres, mn, a.variant, warm=True,
                                                   threads=a.threads)
-                                   for seed in (1, 2)])
+                                   for seed in seeds])
         print("  RATIO equal time: mitsuba %s %s at %d spp (CPU %.2f s vs ours %.2f s): MSE mitsuba / ours %.2f, "
               "efficiency ours/mitsuba %.2f by CPU" % (a.variant, mn, spp_eq, cpu, ocpu, err / oerr,
                                                        (err * cpu) / (oerr * ocpu)))
@@ -396,6 +401,8 @@ def main(argv):
     ap.add_argument("--estimand", choices=("centres", "box"), default="centres",
                     help="benchmark: Mitsuba's camera rays through pixel centres (ours' estimand) or its box filter")
     ap.add_argument("--ref-parts", type=int, default=16, help="benchmark: reference = this many x spp")
+    ap.add_argument("--seeds", type=int, default=2,
+                    help="benchmark: renders per renderer and sampler, MSEs averaged (the glossy scene's are heavy-tailed)")
     ap.add_argument("--work", help="keep the renders and the reference (ref.npy) in this directory")
     a = ap.parse_args(argv)
     size = a.size or (32 if a.test else 128)

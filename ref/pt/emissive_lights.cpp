@@ -51,6 +51,7 @@ EmissiveTriangles::EmissiveTriangles(const Scene& scene) : pdf_area_(scene.trian
     g.emission = m.emission();
     g.textured = m.emissive_texture.present();
     g.double_sided = m.double_sided;
+    g.alpha_tested = m.alpha_tested();
     geometry_.push_back(g);
   }
 }

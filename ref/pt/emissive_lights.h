@@ -38,6 +38,7 @@ class EmissiveTriangles {
     vec3 normal;          // glm::normalize(cross(p1 - p0, p2 - p0)), as interpolate_position
     vec3 emission;        // Material::emission(): the radiance where no emissive texture varies it
     bool textured = false;  // an emissive texture: the caller evaluates the material instead
+    bool alpha_tested = false;  // glTF MASK/BLEND: a sampled point may be cut away (surface_masked)
     bool double_sided = false;
     vec3 position(float b1, float b2) const { return (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2; }
   };

@@ -136,12 +136,13 @@ Integrator::NeeRay Integrator::emitter_ray(const Vertex& v, PathSampler& rng) co
   const PathSampler::EmitterDraw d = rng.emitter(v.depth);
   const EmissiveTriangles::Sample ls = d.reuse_x ? lights_.sample_reusing(d.x, d.u.y) : lights_.sample(d.u_select, d.u);
   if (ls.triangle == v.triangle) return r;  // a flat triangle never lights itself
+  const EmissiveTriangles::Geometry& g = lights_.geometry(ls);
   // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
-  if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return r;
+  if (g.alpha_tested && surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return r;
   // An untextured emitter's radiance is its material's constant: only the point's position and
   // geometric normal are needed, from the emitter's own record (docs/performance.md).
-  const EmissiveTriangles::Geometry& g = lights_.geometry(ls);
-  const SurfacePoint lp = g.textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2) : SurfacePoint{};
+  SurfacePoint lp;
+  if (g.textured) lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
   const vec3 light_pos = g.textured ? lp.position : g.position(ls.b1, ls.b2);
   const vec3 light_n = g.textured ? lp.geometric_normal : g.normal;
   const vec3 to_light = light_pos - v.pos;
