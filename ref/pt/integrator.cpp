@@ -309,43 +309,44 @@ PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sa
   return out;
 }
 
-void Integrator::trace_packet(const FirstVertex& first, int x, int y, uint32_t sample, int n, PathSample* out,
-                              RayCounts& counts) const {
-  if (!first.continues) {
-    for (int i = 0; i < n; ++i) {
-      out[i] = first.out;
-      drop_nonfinite(out[i], counts);
-    }
+void Integrator::trace_packet(const Lane* lanes, int n, PathSample* out, RayCounts& counts) const {
+  if (n == 1) {  // one sample: single rays (a packet of one would cost more, the floats are the same)
+    out[0] = trace(*lanes[0].first, lanes[0].x, lanes[0].y, lanes[0].sample, counts);
     return;
   }
   // Each lane runs trace()'s steps in trace()'s order — its own sampler, throughput and sums —
-  // only the first vertex's two rays wait for the packet: every lane's floats are trace()'s.
+  // only its first vertex's two rays wait for the packet: every lane's floats are trace()'s.
   constexpr int kMax = EmbreeScene::kPacket;
-  const Vertex& v = first.vertex;
-  const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
   std::optional<PathSampler> rng[kMax];
   Throughput tp[kMax];
   EmbreeScene::RayQuery rays[kMax];
   BsdfSample bs[kMax];
+  bool go[kMax];  // the path goes on from the lane's first vertex
   for (int i = 0; i < n; ++i) {
-    rng[i].emplace(settings_.sampler, pixel, sample + uint32_t(i), settings_.seed);
-    out[i] = first.out;
+    const Lane& a = lanes[i];
+    out[i] = a.first->out;
+    go[i] = a.first->continues;
+    if (go[i])
+      rng[i].emplace(settings_.sampler, uint64_t(a.y) * uint64_t(settings_.width) + uint64_t(a.x), a.sample,
+                     settings_.seed);
   }
-  if (!lights_.empty()) {  // emitter NEE: shadow rays from v toward the lights
+  if (!lights_.empty()) {  // emitter NEE: shadow rays from the first vertices toward the lights
     NeeRay nee[kMax];
     for (int i = 0; i < n; ++i) {
-      nee[i] = emitter_ray(v, *rng[i]);
+      nee[i] = go[i] ? emitter_ray(lanes[i].first->vertex, *rng[i]) : NeeRay{};
       rays[i] = nee[i].ray;
       counts.shadow += nee[i].ray.active ? 1 : 0;
     }
     bool blocked[kMax];
     rt_.occluded_packet(rays, n, blocked);
     for (int i = 0; i < n; ++i)
-      if (nee[i].ray.active && !blocked[i]) credit_emitter(v, tp[i], nee[i], out[i]);
+      if (nee[i].ray.active && !blocked[i]) credit_emitter(lanes[i].first->vertex, tp[i], nee[i], out[i]);
   }
   for (int i = 0; i < n; ++i) {
-    if (particles_) nee_particles(v, tp[i], *rng[i], out[i], counts);
     rays[i] = EmbreeScene::RayQuery{};
+    if (!go[i]) continue;
+    const Vertex& v = lanes[i].first->vertex;
+    if (particles_) nee_particles(v, tp[i], *rng[i], out[i], counts);
     if (!scatter(v, tp[i], *rng[i], bs[i])) continue;
     ++counts.secondary;
     rays[i] = EmbreeScene::RayQuery{v.p, bs[i].l, leave_tnear(bs[i].l), kInf, true};
@@ -354,7 +355,8 @@ void Integrator::trace_packet(const FirstVertex& first, int x, int y, uint32_t s
   rt_.intersect_packet(rays, n, hits);
   Vertex next;
   for (int i = 0; i < n; ++i) {
-    if (rays[i].active && hits[i].hit && shade(hits[i], bs[i].l, v.depth + 1, tp[i], bs[i].pdf, out[i], counts, next))
+    const int depth = lanes[i].first->vertex.depth + 1;
+    if (rays[i].active && hits[i].hit && shade(hits[i], bs[i].l, depth, tp[i], bs[i].pdf, out[i], counts, next))
       continue_path(next, tp[i], *rng[i], out[i], counts);
     drop_nonfinite(out[i], counts);
   }

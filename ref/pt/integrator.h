@@ -81,12 +81,17 @@ class Integrator {
   FirstVertex first_vertex(int x, int y, RayCounts& counts) const;
   /// Sample `sample` of pixel (x, y) from its first vertex.
   PathSample trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const;
-  /// Samples sample … sample + n − 1 (n <= EmbreeScene::kPacket) of pixel (x, y) from its first
-  /// vertex into out[0 … n−1]: the same floats as n calls of trace(), but the first vertex's
-  /// emitter shadow rays and its BSDF rays, which all leave one point, go to Embree as one packet
-  /// each (docs/performance.md "Issue 37, session 17").
-  void trace_packet(const FirstVertex& first, int x, int y, uint32_t sample, int n, PathSample* out,
-                    RayCounts& counts) const;
+  /// One sample of a pixel from its first vertex (FirstVertex::continues may be false).
+  struct Lane {
+    const FirstVertex* first = nullptr;
+    int x = 0, y = 0;
+    uint32_t sample = 0;
+  };
+  /// n <= EmbreeScene::kPacket samples, of one pixel or of several, into out[0 … n−1]: the same
+  /// floats as n calls of trace(), but the first vertices' emitter shadow rays and BSDF rays —
+  /// from one point, or from neighbouring pixels' points — go to Embree as one packet each
+  /// (docs/performance.md "Issue 37, session 17").
+  void trace_packet(const Lane* lanes, int n, PathSample* out, RayCounts& counts) const;
 
  private:
   /// Shades the vertex at `hit` reached along `dir`: its emission (MIS-weighted past the first
