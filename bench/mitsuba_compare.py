@@ -6,10 +6,10 @@ figures in docs/performance.md).
   bench/mitsuba_compare.py [--glossy] [--size 128] [--spp 256] [--depth 64] [--threads 2]
                            [--variant llvm_ad_rgb|scalar_rgb] [--estimand centres|box]
                            [--pt-sampler sobol,independent] [--mitsuba-samplers independent,stratified,multijitter]
-                           [--ref-parts 16] [--vct build/bin/vct]
+                           [--ref-parts 16] [--seeds 2] [--vct build/bin/vct] [--work DIR]
       benchmark, run by hand: efficiency 1 / (MSE x CPU seconds of the render itself), ours over
       Mitsuba's, each MSE against a converged reference (Mitsuba's independent sampler at
-      ref-parts x spp through pixel centres, its own variance subtracted), two seeds each, at
+      ref-parts x spp through pixel centres, its own variance subtracted), --seeds renders each (default 2), at
       equal spp and at equal CPU time (Mitsuba's spp scaled to our CPU time); prints RATIO lines
       and the load average. Each Mitsuba render runs in a worker process of its own
       (--mitsuba-worker); on llvm_ad_rgb it is rendered twice and the second timed (no kernel
@@ -17,6 +17,8 @@ figures in docs/performance.md).
       camera rays through pixel centres as ours; box: mi.render with a box filter (another image).
       Ours: pt.sampler (default sobol: scrambled Sobol replicates, docs/pathtracer.md), its CPU
       time from run.json pathtrace.render_cpu_seconds. Not ldsampler: biased here (docs/performance.md).
+      --work DIR keeps every render there (default: a temporary directory), the reference as ref.npy
+      with its variance in ref.json, so that our images can be scored again without Mitsuba.
   bench/mitsuba_compare.py --test [--size 32] [--spp 64]
       correctness (ctest pt_mitsuba_agreement): the image means of the two renderers (Mitsuba
       scalar_rgb, pixel centres) agree per channel within 4 standard errors; exit 0 pass, 1 fail,
@@ -40,6 +42,7 @@ benchmark trace Mitsuba's camera rays through pixel centres too (--estimand box:
 """
 import argparse
 import base64
+import contextlib
 import json
 import math
 import os
@@ -248,6 +251,10 @@ def render_centres(mi, scene, size, spp, seed):
     if mi.variant().startswith("scalar"):
         return centres_scalar(mi, scene, sensor, integrator, sampler, size, spp, seed)
     import drjit as dr
+    # The sampler's own count: stratified and multijitter round a requested count (412 -> 441), and
+    # lanes laid out by the requested one would straddle its per-pixel strata (each pixel's lanes no
+    # longer one stratified set): the equal-time renders of issue 37's first table did that.
+    spp = sampler.sample_count()
     n = size * size * spp
     sampler.seed(seed, n)
     pixel = dr.arange(mi.UInt32, n) // spp
@@ -322,15 +329,20 @@ def reference(g, work, size, spp, depth, variant, parts):
     every MSE against it carries and which is subtracted from the MSEs below."""
     imgs = [render_mitsuba(g, work, size, spp, depth, 1000 + k, True, "independent", variant)[0] for k in range(parts)]
     stack = np.stack(imgs)
-    return stack.mean(axis=0), float(stack.var(axis=0, ddof=1).mean() / parts)
+    ref, ref_var = stack.mean(axis=0), float(stack.var(axis=0, ddof=1).mean() / parts)
+    np.save(os.path.join(work, "ref.npy"), ref)
+    with open(os.path.join(work, "ref.json"), "w") as f:
+        json.dump({"variance": ref_var, "parts": parts, "spp": spp, "variant": variant}, f)
+    return ref, ref_var
 
 
 def benchmark(a, g, scene_path, work, size, spp):
     """Efficiency 1 / (MSE x CPU seconds of the render), ours over Mitsuba's, each MSE against a
-    converged reference (its own variance subtracted), two seeds each; at equal spp and at equal
+    converged reference (its own variance subtracted), --seeds renders each; at equal spp and at equal
     CPU time (Mitsuba's spp scaled to our CPU time)."""
     centres = a.estimand == "centres"
     ours_samplers = a.pt_sampler.split(",")
+    seeds = range(1, a.seeds + 1)
     ref, ref_var = reference(g, work, size, spp, a.depth, a.variant, a.ref_parts)
     print("  reference: mitsuba %s independent, pixel centres, %d x %d spp; its own per-pixel variance %.3g "
           "(subtracted from each MSE)" % (a.variant, a.ref_parts, spp, ref_var))
@@ -339,11 +351,11 @@ def benchmark(a, g, scene_path, work, size, spp):
         err = np.mean([mse(r[0], ref) for r in runs]) - ref_var
         return err, min(r[1] for r in runs), min(r[2] for r in runs), np.mean([r[0].mean() for r in runs])
 
-    ours = {n: stats([render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, n) for seed in (1, 2)])
+    ours = {n: stats([render_ours(a.vct, scene_path, work, size, spp, a.depth, seed, a.threads, n) for seed in seeds])
             for n in ours_samplers}
     theirs = {n: stats([render_mitsuba(g, work, size, spp, a.depth, seed, centres, n, a.variant, warm=True,
                                        threads=a.threads)
-                        for seed in (1, 2)]) for n in a.mitsuba_samplers.split(",")}
+                        for seed in seeds]) for n in a.mitsuba_samplers.split(",")}
     print("  ref image mean %.5f" % ref.mean())
     for name, (err, wall, cpu, mean) in list(ours.items()) + [("mitsuba " + k, v) for k, v in theirs.items()]:
         print("  %-28s %d spp: MSE %.4g  wall %.2f s  CPU %.2f s  image mean %.5f  efficiency 1/(MSE*CPU) %.4g"
@@ -358,7 +370,7 @@ def benchmark(a, g, scene_path, work, size, spp):
         spp_eq = max(1, int(round(spp * ocpu / mcpu)))
         err, wall, cpu, _ = stats([render_mitsuba(g, work, size, spp_eq, a.depth, seed, centres, mn, a.variant, warm=True,
                                                   threads=a.threads)
-                                   for seed in (1, 2)])
+                                   for seed in seeds])
         print("  RATIO equal time: mitsuba %s %s at %d spp (CPU %.2f s vs ours %.2f s): MSE mitsuba / ours %.2f, "
               "efficiency ours/mitsuba %.2f by CPU" % (a.variant, mn, spp_eq, cpu, ocpu, err / oerr,
                                                        (err * cpu) / (oerr * ocpu)))
@@ -389,6 +401,9 @@ def main(argv):
     ap.add_argument("--estimand", choices=("centres", "box"), default="centres",
                     help="benchmark: Mitsuba's camera rays through pixel centres (ours' estimand) or its box filter")
     ap.add_argument("--ref-parts", type=int, default=16, help="benchmark: reference = this many x spp")
+    ap.add_argument("--seeds", type=int, default=2,
+                    help="benchmark: renders per renderer and sampler, MSEs averaged (the glossy scene's are heavy-tailed)")
+    ap.add_argument("--work", help="keep the renders and the reference (ref.npy) in this directory")
     a = ap.parse_args(argv)
     size = a.size or (32 if a.test else 128)
     spp = a.spp or (64 if a.test else 256)
@@ -397,7 +412,9 @@ def main(argv):
     except ImportError:
         print("mitsuba_compare: mitsuba is not installed in this Python (scripts/setup.sh puts it in .venv)")
         return 77 if a.test else 3
-    with tempfile.TemporaryDirectory(prefix="vct-mitsuba-") as work:
+    if a.work:
+        os.makedirs(a.work, exist_ok=True)
+    with (contextlib.nullcontext(a.work) if a.work else tempfile.TemporaryDirectory(prefix="vct-mitsuba-")) as work:
         scene_path = os.path.join(work, "cornell_glossy.gltf" if a.glossy else "cornell_lambert.gltf")
         g = cornell_scene(scene_path, a.glossy)
         print("%s Cornell box, spot + area light, %d^2, %d spp, depth %d, load average %s"

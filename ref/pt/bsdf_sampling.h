@@ -34,6 +34,8 @@ struct BsdfPoint {
   vec3 ng;
   vec3 v;
   sh::Frame frame;  // around n
+  vec3 v_local{0.0f};  // v in `frame` (sample_bsdf and bsdf_pdf read it for every direction)
+  float g1_v = 0.0f;   // smith_g1_ggx(v_local, roughness^2) where the specular lobe is sampled
   float specular_probability = 0.0f;
   // Fresnel identically 0 (f0 = 0 and f90 = 0, e.g. KHR_materials_specular factor 0): the
   // specular lobe is exactly 0 and the diffuse lobe the constant kd albedo / pi, which eval_bsdf
@@ -52,13 +54,17 @@ struct BsdfValue {
   vec3 total() const { return diffuse + specular; }
 };
 BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l);
+/// The same and the mixture pdf of l (bsdf_pdf) at once: they share the half vector and D.
+BsdfValue eval_bsdf(const BsdfPoint& p, const vec3& l, float& pdf);
 
-/// Mixture pdf (solid angle) of sample_bsdf producing l.
+/// Mixture pdf (solid angle) of sample_bsdf producing l, formed in world space (issue 37, session
+/// 17; it was formed in the local frame before: the same density, other roundings).
 float bsdf_pdf(const BsdfPoint& p, const vec3& l);
 
 struct BsdfSample {
   vec3 l{0.0f};
   float pdf = 0.0f;
+  BsdfValue f;  // eval_bsdf(l), formed with the pdf
   bool valid = false;  // false: the specular lobe reflected below the horizon (weight 0)
 };
 /// u_lobe picks the lobe, u the direction.

@@ -141,4 +141,62 @@ bool EmbreeScene::occluded(const vec3& org, const vec3& dir, float tnear, float 
   return r.tfar < 0.0f;
 }
 
+namespace {
+/// The packet's rays in Embree's SoA layout; lanes past n or inactive are invalid (valid = 0).
+template <class RayN>
+void fill_packet(const EmbreeScene::RayQuery* rays, int n, RayN& r, int* valid) {
+  for (int i = 0; i < EmbreeScene::kPacket; ++i) {
+    const bool on = i < n && rays[i].active;
+    valid[i] = on ? -1 : 0;
+    const EmbreeScene::RayQuery q = on ? rays[i] : EmbreeScene::RayQuery{};
+    r.org_x[i] = q.org.x;
+    r.org_y[i] = q.org.y;
+    r.org_z[i] = q.org.z;
+    r.dir_x[i] = q.dir.x;
+    r.dir_y[i] = q.dir.y;
+    r.dir_z[i] = q.dir.z;
+    r.tnear[i] = q.tnear;
+    r.tfar[i] = q.tfar;
+    r.time[i] = 0.0f;
+    r.mask[i] = 0xFFFFFFFFu;
+    r.id[i] = 0;
+    r.flags[i] = 0;
+  }
+}
+}  // namespace
+
+void EmbreeScene::intersect_packet(const RayQuery* rays, int n, Hit* hits) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  alignas(64) RTCRayHit16 rh;
+  alignas(64) int valid[kPacket];
+  fill_packet(rays, n, rh.ray, valid);
+  for (int i = 0; i < kPacket; ++i) {
+    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect16(valid, scene_, &ctx, &rh);
+  for (int i = 0; i < n; ++i) {
+    Hit h;
+    if (valid[i] && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID) {
+      h.hit = true;
+      h.t = rh.ray.tfar[i];
+      h.triangle = scene_triangle(rh.hit.geomID[i], rh.hit.primID[i]);
+      h.b1 = rh.hit.u[i];
+      h.b2 = rh.hit.v[i];
+    }
+    hits[i] = h;
+  }
+}
+
+void EmbreeScene::occluded_packet(const RayQuery* rays, int n, bool* occluded) const {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  alignas(64) RTCRay16 r;
+  alignas(64) int valid[kPacket];
+  fill_packet(rays, n, r, valid);
+  rtcOccluded16(valid, scene_, &ctx, &r);
+  for (int i = 0; i < n; ++i) occluded[i] = valid[i] && r.tfar[i] < 0.0f;
+}
+
 }  // namespace vct::pt

@@ -38,6 +38,19 @@ class EmbreeScene {
   /// True if anything lies on (tnear, tfar).
   bool occluded(const vec3& org, const vec3& dir, float tnear, float tfar) const;
 
+  /// Up to kPacket rays at once (rtcIntersect16 / rtcOccluded16): the same answers as intersect()
+  /// and occluded() ray by ray, cheaper where the rays are coherent — a path tracer's rays that
+  /// leave one point (the first vertex of a pixel's samples: docs/performance.md "Issue 37,
+  /// session 17"). Lanes with active[i] = false are not traced (their result is no hit / false).
+  static constexpr int kPacket = 16;
+  struct RayQuery {
+    vec3 org{0.0f}, dir{0.0f};
+    float tnear = 0.0f, tfar = 0.0f;
+    bool active = false;
+  };
+  void intersect_packet(const RayQuery* rays, int n, Hit* hits) const;
+  void occluded_packet(const RayQuery* rays, int n, bool* occluded) const;
+
   RTCScene handle() const { return scene_; }
 
   /// What the masked geometry's filter functions read (geometry user data).

@@ -42,6 +42,18 @@ EmissiveTriangles::EmissiveTriangles(const Scene& scene) : pdf_area_(scene.trian
     pdf_area_[triangles_[i]] = float(weight[i] / total) / triangle_area(scene, triangles_[i]);
   }
   if (!cdf_.empty()) cdf_.back() = 1.0;
+  for (const uint32_t t : triangles_) {
+    const uvec3 i = scene.triangles[t];
+    const Material& m = scene.materials[scene.triangle_material[t]];
+    Geometry g;
+    g.p0 = scene.positions[i.x], g.p1 = scene.positions[i.y], g.p2 = scene.positions[i.z];
+    g.normal = glm::normalize(glm::cross(g.p1 - g.p0, g.p2 - g.p0));
+    g.emission = m.emission();
+    g.textured = m.emissive_texture.present();
+    g.double_sided = m.double_sided;
+    g.alpha_tested = m.alpha_tested();
+    geometry_.push_back(g);
+  }
 }
 
 namespace {
@@ -58,6 +70,7 @@ EmissiveTriangles::Sample EmissiveTriangles::sample_reusing(double x, float u_y)
   if (triangles_.empty()) return s;
   const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), x) - cdf_.begin()), triangles_.size() - 1);
   s.triangle = triangles_[i];
+  s.emitter = uint32_t(i);
   const double lo = i > 0 ? cdf_[i - 1] : 0.0, hi = cdf_[i];
   const float u_x = std::clamp(float((x - lo) / (hi - lo)), 0.0f, 0x1.fffffep-1f);
   place_on_triangle(vec2(u_x, u_y), s);
@@ -68,8 +81,10 @@ EmissiveTriangles::Sample EmissiveTriangles::sample_reusing(double x, float u_y)
 EmissiveTriangles::Sample EmissiveTriangles::sample(float u_select, vec2 u) const {
   Sample s;
   if (triangles_.empty()) return s;
-  const size_t i = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u_select)) - cdf_.begin());
-  s.triangle = triangles_[std::min(i, triangles_.size() - 1)];
+  const size_t i = std::min(size_t(std::upper_bound(cdf_.begin(), cdf_.end(), double(u_select)) - cdf_.begin()),
+                            triangles_.size() - 1);
+  s.triangle = triangles_[i];
+  s.emitter = uint32_t(i);
   place_on_triangle(u, s);
   s.pdf_area = pdf_area_[s.triangle];
   return s;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "pt/bsdf_sampling.h"
 #include "pt/camera_ray.h"
@@ -130,39 +131,56 @@ void Integrator::nee_punctual(const Vertex& v, const Throughput& tp, PathSample&
   }
 }
 
-void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out,
-                              RayCounts& counts) const {
+Integrator::NeeRay Integrator::emitter_ray(const Vertex& v, PathSampler& rng) const {
+  NeeRay r;
   const PathSampler::EmitterDraw d = rng.emitter(v.depth);
   const EmissiveTriangles::Sample ls = d.reuse_x ? lights_.sample_reusing(d.x, d.u.y) : lights_.sample(d.u_select, d.u);
+  if (ls.triangle == v.triangle) return r;  // a flat triangle never lights itself
+  const EmissiveTriangles::Geometry& g = lights_.geometry(ls);
   // A cut-away point of an alpha-masked emitter emits nothing (no ray can hit it either).
-  if (surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return;
+  if (g.alpha_tested && surface_masked(scene_, ls.triangle, ls.b1, ls.b2)) return r;
   // An untextured emitter's radiance is its material's constant: only the point's position and
-  // geometric normal are needed (docs/performance.md "Shading per ray").
-  const Material& lm = scene_.materials[scene_.triangle_material[ls.triangle]];
-  const bool textured = lm.emissive_texture.present();
-  const SurfacePoint lp = textured ? interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2)
-                                   : interpolate_position(scene_, ls.triangle, ls.b1, ls.b2);
-  const vec3 to_light = lp.position - v.pos;
+  // geometric normal are needed, from the emitter's own record (docs/performance.md).
+  SurfacePoint lp;
+  if (g.textured) lp = interpolate_surface(scene_, ls.triangle, ls.b1, ls.b2);
+  const vec3 light_pos = g.textured ? lp.position : g.position(ls.b1, ls.b2);
+  const vec3 light_n = g.textured ? lp.geometric_normal : g.normal;
+  const vec3 to_light = light_pos - v.pos;
   const float dist2 = glm::dot(to_light, to_light);
   const float dist = std::sqrt(dist2);
-  if (!(dist > 0.0f)) return;
+  if (!(dist > 0.0f)) return r;
   const vec3 l = to_light / dist;
-  const float cos_l = std::abs(glm::dot(lp.geometric_normal, l));
-  if (ls.triangle == v.triangle || glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return;
-  const BsdfValue f = eval_bsdf(v.bp, l);
-  if (f.total() == vec3(0.0f)) return;
-  SurfaceMaterial lmat;
-  if (textured)
-    lmat = evaluate_material(scene_, lp);
-  else
-    lmat.emission = lm.emission();  // evaluate_material's value without an emissive texture
-  const vec3 le = emitted_radiance(scene_, lp, lmat, -l);
-  if (le == vec3(0.0f)) return;
+  const float cos_l = std::abs(glm::dot(light_n, l));
+  if (glm::dot(v.bp.ng, l) <= kMinCos || cos_l <= kMinCos) return r;
+  // emitted_radiance toward -l: one-sided emitters emit from the front face only.
+  if (!g.double_sided && glm::dot(light_n, -l) <= 0.0f) return r;
+  r.f = eval_bsdf(v.bp, l, r.bsdf_pdf);
+  if (r.f.total() == vec3(0.0f)) return r;
+  const vec3 le = g.textured ? emitted_radiance(scene_, lp, evaluate_material(scene_, lp), -l) : g.emission;
+  if (le == vec3(0.0f)) return r;
+  r.l = l;
+  r.le = le;
+  r.pdf_light = ls.pdf_area * dist2 / cos_l;
+  r.ray.org = v.p;
+  r.ray.dir = light_pos - v.p;
+  r.ray.tnear = leave_tnear(r.ray.dir);
+  r.ray.tfar = 1.0f - eps_ / dist;
+  r.ray.active = true;
+  return r;
+}
+
+void Integrator::nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out,
+                              RayCounts& counts) const {
+  const NeeRay r = emitter_ray(v, rng);
+  if (!r.ray.active) return;
   ++counts.shadow;
-  if (rt_.occluded(v.p, lp.position - v.p, leave_tnear(lp.position - v.p), 1.0f - eps_ / dist)) return;
-  const float pdf_light = ls.pdf_area * dist2 / cos_l;
-  const float w = power_heuristic(pdf_light, bsdf_pdf(v.bp, l));
-  credit_nee(out, tp, v.depth, f, le * (glm::dot(v.bp.n, l) * w / pdf_light));
+  if (rt_.occluded(r.ray.org, r.ray.dir, r.ray.tnear, r.ray.tfar)) return;
+  credit_emitter(v, tp, r, out);
+}
+
+void Integrator::credit_emitter(const Vertex& v, const Throughput& tp, const NeeRay& r, PathSample& out) const {
+  const float w = power_heuristic(r.pdf_light, r.bsdf_pdf);
+  credit_nee(out, tp, v.depth, r.f, r.le * (glm::dot(v.bp.n, r.l) * w / r.pdf_light));
 }
 
 void Integrator::nee_particles(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out,
@@ -228,54 +246,120 @@ bool Integrator::shade(const Hit& hit, const vec3& dir, int depth, const Through
       sh::surface_pbr(mat.albedo, mat.metallic, mat.roughness, mat.specular_factor, mat.specular_color);
   // Light geometry is evaluated at the true surface point; only rays start from the point
   // lifted off the surface (along ng, the side every accepted direction leaves on).
-  v = Vertex{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, ns, hit.triangle, depth};
+  v = Vertex{make_bsdf_point(pbr, ns, ng, wo), sp.position, sp.position + ng * eps_, hit.triangle, depth};
   nee_punctual(v, tp, out, counts);
   return true;
+}
+
+bool Integrator::scatter(const Vertex& v, Throughput& tp, PathSampler& rng, BsdfSample& bs) const {
+  // Continue by BSDF sampling (also when depth == max_depth: the next vertex's emission
+  // completes paths of max_depth bounces, the MIS partner of the emitter NEE).
+  float u_lobe;
+  vec2 u_dir;
+  rng.bsdf(v.depth, v.bp.specular_probability > 0.0f && v.bp.specular_probability < 1.0f, u_lobe, u_dir);
+  bs = sample_bsdf(v.bp, u_lobe, u_dir);
+  if (!bs.valid) return false;
+  const BsdfValue& f = bs.f;
+  if (f.total() == vec3(0.0f)) return false;
+  const float k = glm::dot(v.bp.n, bs.l) / bs.pdf;
+  if (v.depth == 1) {
+    tp.lobe_d = f.diffuse * k;
+    tp.lobe_s = f.specular * k;
+    tp.beta = tp.lobe_d + tp.lobe_s;
+  } else {
+    tp.beta *= f.total() * k;
+  }
+  if (v.depth >= settings_.rr_start_depth) {  // Russian roulette
+    const float q = std::min(1.0f, max_component(tp.beta));
+    if (rng.roulette() >= q) return false;
+    tp.beta /= q;
+    tp.lobe_d /= q;
+    tp.lobe_s /= q;
+  }
+  return true;
+}
+
+void Integrator::continue_path(Vertex& v, Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const {
+  for (bool shaded = true; shaded;) {
+    if (!lights_.empty()) nee_emitters(v, tp, rng, out, counts);
+    if (particles_) nee_particles(v, tp, rng, out, counts);
+    BsdfSample bs;
+    if (!scatter(v, tp, rng, bs)) break;
+    ++counts.secondary;
+    const Hit hit = rt_.intersect(v.p, bs.l, leave_tnear(bs.l), kInf);
+    shaded = hit.hit && shade(hit, bs.l, v.depth + 1, tp, bs.pdf, out, counts, v);
+  }
+}
+
+void Integrator::drop_nonfinite(PathSample& out, RayCounts& counts) {
+  if (finite(out)) return;
+  ++counts.nonfinite_samples;
+  out = PathSample{};
 }
 
 PathSample Integrator::trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const {
   PathSample out = first.out;
   PathSampler rng(settings_.sampler, uint64_t(y) * uint64_t(settings_.width) + uint64_t(x), sample, settings_.seed);
   Throughput tp;
-  Vertex v = first.vertex;
-  for (bool shaded = first.continues; shaded;) {
-    if (!lights_.empty()) nee_emitters(v, tp, rng, out, counts);
-    if (particles_) nee_particles(v, tp, rng, out, counts);
-
-    // Continue by BSDF sampling (also when depth == max_depth: the next vertex's emission
-    // completes paths of max_depth bounces, the MIS partner of the emitter NEE above).
-    float u_lobe;
-    vec2 u_dir;
-    rng.bsdf(v.depth, v.bp.specular_probability > 0.0f && v.bp.specular_probability < 1.0f, u_lobe, u_dir);
-    const BsdfSample bs = sample_bsdf(v.bp, u_lobe, u_dir);
-    if (!bs.valid) break;
-    const BsdfValue f = eval_bsdf(v.bp, bs.l);
-    if (f.total() == vec3(0.0f)) break;
-    const float k = glm::dot(v.ns, bs.l) / bs.pdf;
-    if (v.depth == 1) {
-      tp.lobe_d = f.diffuse * k;
-      tp.lobe_s = f.specular * k;
-      tp.beta = tp.lobe_d + tp.lobe_s;
-    } else {
-      tp.beta *= f.total() * k;
-    }
-    if (v.depth >= settings_.rr_start_depth) {  // Russian roulette
-      const float q = std::min(1.0f, max_component(tp.beta));
-      if (rng.roulette() >= q) break;
-      tp.beta /= q;
-      tp.lobe_d /= q;
-      tp.lobe_s /= q;
-    }
-    ++counts.secondary;
-    const Hit hit = rt_.intersect(v.p, bs.l, leave_tnear(bs.l), kInf);
-    shaded = hit.hit && shade(hit, bs.l, v.depth + 1, tp, bs.pdf, out, counts, v);
+  if (first.continues) {
+    Vertex v = first.vertex;
+    continue_path(v, tp, rng, out, counts);
   }
-
-  if (!finite(out)) {
-    ++counts.nonfinite_samples;
-    return PathSample{};
-  }
+  drop_nonfinite(out, counts);
   return out;
+}
+
+void Integrator::trace_packet(const Lane* lanes, int n, PathSample* out, RayCounts& counts) const {
+  if (n == 1) {  // one sample: single rays (a packet of one would cost more, the floats are the same)
+    out[0] = trace(*lanes[0].first, lanes[0].x, lanes[0].y, lanes[0].sample, counts);
+    return;
+  }
+  // Each lane runs trace()'s steps in trace()'s order — its own sampler, throughput and sums —
+  // only its first vertex's two rays wait for the packet: every lane's floats are trace()'s.
+  constexpr int kMax = EmbreeScene::kPacket;
+  std::optional<PathSampler> rng[kMax];
+  Throughput tp[kMax];
+  EmbreeScene::RayQuery rays[kMax];
+  BsdfSample bs[kMax];
+  bool go[kMax];  // the path goes on from the lane's first vertex
+  for (int i = 0; i < n; ++i) {
+    const Lane& a = lanes[i];
+    out[i] = a.first->out;
+    go[i] = a.first->continues;
+    if (go[i])
+      rng[i].emplace(settings_.sampler, uint64_t(a.y) * uint64_t(settings_.width) + uint64_t(a.x), a.sample,
+                     settings_.seed);
+  }
+  if (!lights_.empty()) {  // emitter NEE: shadow rays from the first vertices toward the lights
+    NeeRay nee[kMax];
+    for (int i = 0; i < n; ++i) {
+      nee[i] = go[i] ? emitter_ray(lanes[i].first->vertex, *rng[i]) : NeeRay{};
+      rays[i] = nee[i].ray;
+      counts.shadow += nee[i].ray.active ? 1 : 0;
+    }
+    bool blocked[kMax];
+    rt_.occluded_packet(rays, n, blocked);
+    for (int i = 0; i < n; ++i)
+      if (nee[i].ray.active && !blocked[i]) credit_emitter(lanes[i].first->vertex, tp[i], nee[i], out[i]);
+  }
+  for (int i = 0; i < n; ++i) {
+    rays[i] = EmbreeScene::RayQuery{};
+    if (!go[i]) continue;
+    const Vertex& v = lanes[i].first->vertex;
+    if (particles_) nee_particles(v, tp[i], *rng[i], out[i], counts);
+    if (!scatter(v, tp[i], *rng[i], bs[i])) continue;
+    ++counts.secondary;
+    rays[i] = EmbreeScene::RayQuery{v.p, bs[i].l, leave_tnear(bs[i].l), kInf, true};
+  }
+  Hit hits[kMax];
+  rt_.intersect_packet(rays, n, hits);
+  Vertex next;
+  for (int i = 0; i < n; ++i) {
+    const int depth = lanes[i].first->vertex.depth + 1;
+    if (rays[i].active && hits[i].hit && shade(hits[i], bs[i].l, depth, tp[i], bs[i].pdf, out[i], counts, next))
+      continue_path(next, tp[i], *rng[i], out[i], counts);
+    drop_nonfinite(out[i], counts);
+  }
 }
 
 }  // namespace vct::pt

@@ -58,12 +58,12 @@ class Integrator {
     vec3 beta{1.0f}, lobe_d{0.0f}, lobe_s{0.0f};
   };
 
-  /// A shading point: BSDF, true position, lifted ray origin, shading normal, depth.
+  /// A shading point: BSDF (bp.n is the oriented shading normal), true position, lifted ray
+  /// origin, depth.
   struct Vertex {
     BsdfPoint bp;
     vec3 pos;  // on the surface: light geometry is evaluated here
     vec3 p;    // lifted along ng: rays start here
-    vec3 ns;   // the oriented shading normal (the BSDF sample's cosine)
     uint32_t triangle;
     int depth;
   };
@@ -81,6 +81,17 @@ class Integrator {
   FirstVertex first_vertex(int x, int y, RayCounts& counts) const;
   /// Sample `sample` of pixel (x, y) from its first vertex.
   PathSample trace(const FirstVertex& first, int x, int y, uint32_t sample, RayCounts& counts) const;
+  /// One sample of a pixel from its first vertex (FirstVertex::continues may be false).
+  struct Lane {
+    const FirstVertex* first = nullptr;
+    int x = 0, y = 0;
+    uint32_t sample = 0;
+  };
+  /// n <= EmbreeScene::kPacket samples, of one pixel or of several, into out[0 … n−1]: the same
+  /// floats as n calls of trace(), but the first vertices' emitter shadow rays and BSDF rays —
+  /// from one point, or from neighbouring pixels' points — go to Embree as one packet each
+  /// (docs/performance.md "Issue 37, session 17").
+  void trace_packet(const Lane* lanes, int n, PathSample* out, RayCounts& counts) const;
 
  private:
   /// Shades the vertex at `hit` reached along `dir`: its emission (MIS-weighted past the first
@@ -89,6 +100,25 @@ class Integrator {
              RayCounts& counts, Vertex& v) const;
   void nee_punctual(const Vertex& v, const Throughput& tp, PathSample& out, RayCounts& counts) const;
   void nee_emitters(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
+  /// The emitter NEE up to its shadow ray: the ray (inactive when the sample contributes nothing)
+  /// and what credit_emitter needs if the ray is unoccluded.
+  struct NeeRay {
+    EmbreeScene::RayQuery ray;
+    BsdfValue f;
+    vec3 l{0.0f}, le{0.0f};
+    float pdf_light = 0.0f, bsdf_pdf = 0.0f;
+  };
+  NeeRay emitter_ray(const Vertex& v, PathSampler& rng) const;
+  /// An unoccluded emitter sample's light, MIS-weighted against BSDF sampling.
+  void credit_emitter(const Vertex& v, const Throughput& tp, const NeeRay& r, PathSample& out) const;
+  /// The BSDF sample at v, the throughput through it and Russian roulette: false when the path
+  /// ends there.
+  bool scatter(const Vertex& v, Throughput& tp, PathSampler& rng, BsdfSample& bs) const;
+  /// The path from vertex v on (its NEE, then bounce after bounce), adding into out; v is
+  /// overwritten by each vertex reached.
+  void continue_path(Vertex& v, Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
+  /// Sets out to 0 when a value is NaN/inf (counted).
+  static void drop_nonfinite(PathSample& out, RayCounts& counts);
   void nee_particles(const Vertex& v, const Throughput& tp, PathSampler& rng, PathSample& out, RayCounts& counts) const;
 
   const Scene& scene_;

@@ -60,6 +60,17 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
       const int x0 = int(t % tiles_x) * kTile, y0 = int(t / tiles_x) * kTile;
       const int x1 = std::min(x0 + kTile, acc.width()), y1 = std::min(y0 + kTile, acc.height());
       RayCounts counts;
+      // The tile's samples of this batch, pixel by pixel and each pixel's in index order, go in
+      // packets of kPacket lanes (Integrator::trace_packet: the same floats as one trace() each;
+      // a pixel's sums still see its samples in order, docs/pathtracer.md "Packets").
+      Integrator::Lane lanes[EmbreeScene::kPacket];
+      PathSample samples[EmbreeScene::kPacket];
+      int n = 0;
+      const auto flush = [&] {
+        integrator_.trace_packet(lanes, n, samples, counts);
+        for (int i = 0; i < n; ++i) acc.add(lanes[i].x, lanes[i].y, lanes[i].sample, samples[i]);
+        n = 0;
+      };
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
           if (!keep_first) {
@@ -67,11 +78,13 @@ RayCounts PathTracer::render(Accumulator& acc, uint32_t target_spp, const AfterP
             continue;
           }
           Integrator::FirstVertex& f = first[size_t(y) * size_t(acc.width()) + size_t(x)];
+          if (s == first_pass) f = integrator_.first_vertex(x, y, counts);
           for (uint32_t p = s; p < s_end; ++p) {
-            if (p == first_pass) f = integrator_.first_vertex(x, y, counts);
-            acc.add(x, y, p, integrator_.trace(f, x, y, p, counts));
+            lanes[n++] = Integrator::Lane{&f, x, y, p};
+            if (n == EmbreeScene::kPacket) flush();
           }
         }
+      if (n > 0) flush();
       per_tile[size_t(t)] = counts;
     });
     s = s_end;
