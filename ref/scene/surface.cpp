@@ -125,4 +125,13 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
   return s;
 }
 
+bool material_reads_lods(const Material& m) {
+  return m.base_color_texture.present() || m.metallic_roughness_texture.present() || m.normal_texture.present() ||
+         m.emissive_texture.present();
+}
+
+bool material_reads_srgb_order(const Material& m) {
+  return m.base_color_texture.present() || m.emissive_texture.present();
+}
+
 }  // namespace vct
