@@ -37,15 +37,19 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       const uint32_t tri = uint32_t(vb.triangle[i]);
       // Untextured surfaces too: the snapped sample point moves the interpolated normal (a dense
       // smooth mesh at a grazing angle) and the shadow-map lookup (a PCF tap at a texel edge).
+      // Combinations that would give a material already tried are left out (scene/surface.h,
+      // material_reads_lods): the slack is a maximum, so that changes no bit. An untextured
+      // material reads no lods: one combination, at default lods.
+      const Material& material = scene.materials[scene.triangle_material[tri]];
+      const bool reads_lods = material_reads_lods(material);
       const SurfaceLods lods =
-          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+          reads_lods ? pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row)
+                     : SurfaceLods();
       double cand[3][kMaxLodCandidates];
       int count[3];
-      for (int k = 0; k < 3; ++k) count[k] = lod_candidates(lods.range[kSlots[k]], cand[k]);
-      // Combinations that would give a material already tried are left out (scene/surface.h,
-      // material_reads_lods): the slack is a maximum, so that changes no bit.
-      const Material& material = scene.materials[scene.triangle_material[tri]];
-      if (!material_reads_lods(material)) count[0] = count[1] = count[2] = 1;
+      for (int k = 0; k < 3; ++k) count[k] = reads_lods ? lod_candidates(lods.range[kSlots[k]], cand[k]) : 1;
+      if (!reads_lods)
+        for (int k = 0; k < 3; ++k) cand[k][0] = 0.0;
       const int orders = material_reads_srgb_order(material) ? 2 : 1;
       SurfacePoint points[kSlackShifts];
       const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);

@@ -72,8 +72,10 @@ bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& 
 }
 
 /// The fragment moved by (du, dv) voxels in its window: barycentrics are affine in window
-/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv).
-VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv). `point`, where
+/// given, receives the surface point it was interpolated from (surface_at's).
+VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv,
+                               SurfacePoint* point = nullptr) {
   const double db1 = (w.d * du - w.b * dv) / w.det, db2 = (-w.c * du + w.a * dv) / w.det;
   VoxelFragment out = f;
   out.b1 = float(double(f.b1) + db1);
@@ -81,12 +83,15 @@ VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const Vo
   const SurfacePoint sp = interpolate_surface(scene, f.triangle, out.b1, out.b2);
   out.position = sp.position;
   out.normal = sp.normal;
+  if (point) *point = sp;
   return out;
 }
 
+/// The surface point of the fragment moved by (du, dv): interpolate_surface at its barycentrics.
 SurfacePoint surface_at(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
-  const VoxelFragment g = shifted_fragment(scene, w, f, du, dv);
-  return interpolate_surface(scene, g.triangle, g.b1, g.b2);
+  SurfacePoint sp;
+  shifted_fragment(scene, w, f, du, dv, &sp);
+  return sp;
 }
 
 /// The fragment moved by one snap offset, its surface point (surface_at's) and its material at
@@ -102,9 +107,7 @@ std::vector<ShiftedSurface> shifted_surfaces(const Scene& scene, const SnapWindo
   std::vector<ShiftedSurface> out(offsets.size());
   for (size_t k = 0; k < offsets.size(); ++k) {
     ShiftedSurface& s = out[k];
-    s.fragment = shifted_fragment(scene, w, f, offsets[k].x, offsets[k].y);
-    // surface_at's point: the same interpolation shifted_fragment made, at the same barycentrics.
-    s.point = interpolate_surface(scene, s.fragment.triangle, s.fragment.b1, s.fragment.b2);
+    s.fragment = shifted_fragment(scene, w, f, offsets[k].x, offsets[k].y, &s.point);
     s.material = evaluate_material(scene, s.point, lods);
   }
   return out;

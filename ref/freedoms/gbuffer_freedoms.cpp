@@ -26,7 +26,7 @@ void add_texture_slack(const Scene& scene, const mat4& view_proj, const WindowBa
       const size_t i = vb.index(x, row);
       if (vb.triangle[i] < 0) continue;
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      const PixelMaterial centre = pixel_material(scene, view_proj, w, h, x, row, tri, vb.bary[i]);
+      const PixelMaterial centre = pixel_material_lods_if_read(scene, view_proj, w, h, x, row, tri, vb.bary[i]);
       const vec4 slack = texture_slack(scene, wb, x, row, tri, vb.bary[i], centre.material, centre.lods);
       for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];
     }

@@ -77,12 +77,12 @@ void widen_value(float* p, int v, float value) {
 // plane and whose depth, 1.5e-4 off, was not).
 void widen_by_plane_at_shifts(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb, int x, int row,
                               uint32_t triangle, const vec3& bary, GBuffer& g) {
-  SurfacePoint points[kSlackShifts];
-  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  vec3 points[kSlackShifts];
+  const int n = shifted_surface_positions(scene, wb, x, row, triangle, bary, points);
   float* p = g.tie_range.pixel(x, row);
   for (int k = 0; k < n; ++k) {
-    for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, points[k].position[c]);
-    widen_value(p, kDepthOffset, window_depth(view_proj, points[k].position));
+    for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, points[k][c]);
+    widen_value(p, kDepthOffset, window_depth(view_proj, points[k]));
   }
 }
 
@@ -117,7 +117,7 @@ void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const Win
                             const VisibilityBuffer& other, int x, int row, const GBufferSample& alt, GBuffer& g) {
   const size_t i = other.index(x, row);
   const uint32_t tri = uint32_t(other.triangle[i]);
-  const PixelMaterial centre = pixel_material(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
+  const PixelMaterial centre = pixel_material_lods_if_read(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
   const vec4 slack = texture_slack(scene, wb, x, row, tri, other.bary[i], centre.material, centre.lods);
   float* p = g.tie_range.pixel(x, row);
   for (const SlackValues& s : kSlackValues)

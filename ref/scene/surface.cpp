@@ -8,13 +8,18 @@
 
 namespace vct {
 
-SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
+vec3 interpolated_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
   const uvec3 t = scene.triangles[triangle];
   const float b0 = 1.0f - b1 - b2;
+  return b0 * scene.positions[t.x] + b1 * scene.positions[t.y] + b2 * scene.positions[t.z];
+}
+
+SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
+  const uvec3 t = scene.triangles[triangle];
   SurfacePoint p;
   p.triangle = triangle;
   const vec3 &p0 = scene.positions[t.x], &p1 = scene.positions[t.y], &p2 = scene.positions[t.z];
-  p.position = b0 * p0 + b1 * p1 + b2 * p2;
+  p.position = interpolated_position(scene, triangle, b1, b2);
   p.geometric_normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   return p;
 }

@@ -38,6 +38,8 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
 /// Only the triangle, position and geometric normal of interpolate_surface (the same bits): what
 /// the path tracer needs of a point sampled on an untextured emitter.
 SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2);
+/// Only the position of interpolate_surface (the same bits).
+vec3 interpolated_position(const Scene& scene, uint32_t triangle, float b1, float b2);
 
 /// A material's texture slots, in the order GL binds them (gl/shaders/surface.glsl).
 enum TextureSlot : int {
