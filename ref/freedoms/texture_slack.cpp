@@ -37,6 +37,11 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
   // next to its silhouette); on flat-shaded triangles it is zero.
   SurfacePoint points[kSlackShifts];
   const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  return texture_slack(scene, points, n, triangle, centre, lods);
+}
+
+vec4 texture_slack(const Scene& scene, const SurfacePoint* points, int n, uint32_t triangle,
+                   const SurfaceMaterial& centre, const SurfaceLods& lods) {
   // Each slot's candidates; evaluation j takes the j-th of every slot (the last once a slot has
   // fewer), and each slack channel reads one slot only, so every candidate of every slot is seen.
   double cand[kTextureSlots][kMaxLodCandidates];
