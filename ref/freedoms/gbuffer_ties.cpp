@@ -201,19 +201,17 @@ void widen_tie_ranges_by_alternatives(const Scene& scene, const mat4& view_proj,
                                       GBuffer& g) {
   const int w = vb.width, h = vb.height;
   // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
-  const Scene* alpha_scene = &scene;
   for (int k = 0; k < 4; ++k) {
     const float s = float(kVertexSnapStep);
     const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
-    const VisibilityBuffer shifted =
-        render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample);
-    widen_by(scene, view_proj, vb, shifted, g);
     // The same snap moves the depth planes: where the shifted sample's front surface ties in depth
     // with another one covering that sample (two faces meeting at a fold's edge, one front- and
     // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
-    // order under a shift").
-    for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, shifted, sample))
-      widen_by(scene, view_proj, vb, tied, g);
+    // order under a shift"). Both from one raster pass (visibility_and_depth_ties).
+    std::vector<VisibilityBuffer> ties;
+    const VisibilityBuffer shifted = visibility_and_depth_ties(scene, view_proj, w, h, sample, ties);
+    widen_by(scene, view_proj, vb, shifted, g);
+    for (const VisibilityBuffer& tied : ties) widen_by(scene, view_proj, vb, tied, g);
   }
   // Every surface tied in depth with the reference's own front at the centre, not only the nearest
   // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717).

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <gtest/gtest.h>
 
+#include "freedoms/raster_alternatives.h"
 #include "freedoms/window_barycentrics.h"
 #include "scene/surface.h"
 #include "stage_test_scene.h"
@@ -149,6 +150,30 @@ TEST(FreedomShortcuts, TapsWithoutAVectorAreTapPositions) {
   EXPECT_EQ(seen, tap_positions(100.0f, 50.0f, engine, 2048, 0.5f));
   EXPECT_EQ(seen[0], vec2(100.0f + -0.001f * 2048.0f / 0.5f, 50.0f + 0.002f * 2048.0f / 0.5f));
   EXPECT_EQ(pcf_reach(oracle), vec2(1.5f));  // |offset| 1 + half a texel (nearest)
+}
+
+bool same_buffer(const VisibilityBuffer& a, const VisibilityBuffer& b) {
+  return a.width == b.width && a.height == b.height && a.triangle == b.triangle && a.front_facing == b.front_facing &&
+         a.facing_tie == b.facing_tie && std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0 &&
+         std::memcmp(a.bary.data(), b.bary.data(), a.bary.size() * sizeof(vec3)) == 0;
+}
+
+TEST(FreedomShortcuts, OnePassVisibilityAndDepthTiesAreTheTwoCalls) {
+  // A quad, its coplanar twin (tied everywhere) and a third crossing both: one and two ties a pixel.
+  Scene s = quad(-1);
+  const uint32_t m = s.triangle_material[0];
+  test::add_quad(s, {-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}, {0, 0, 1}, m);
+  test::add_quad(s, {-2, -2, -2.5f}, {2, -2, -2.5f}, {2, 2, -1.5f}, {-2, 2, -1.5f}, {0, -0.7f, 0.7f}, m);
+  const mat4 vp = s.camera.projection(1.0f) * s.camera.view();
+  const vec2 sample(0.5f + 1.0f / 256.0f, 0.5f - 1.0f / 256.0f);
+  std::vector<VisibilityBuffer> tied;
+  const VisibilityBuffer vb = visibility_and_depth_ties(s, vp, 16, 16, sample, tied);
+  const VisibilityBuffer want = render_visibility(s.positions, s.triangles, vp, 16, 16, &s, sample);
+  const std::vector<VisibilityBuffer> want_tied = depth_tied_surfaces(s, vp, want, sample);
+  EXPECT_TRUE(same_buffer(vb, want));
+  ASSERT_EQ(tied.size(), want_tied.size());
+  ASSERT_GE(tied.size(), 1u);  // the twin ties at every pixel
+  for (size_t k = 0; k < tied.size(); ++k) EXPECT_TRUE(same_buffer(tied[k], want_tied[k])) << "layer " << k;
 }
 
 }  // namespace
