@@ -86,16 +86,6 @@ float pcf_2d(const Image& depth, const vec3& ndc, float clip_w, const VctSetting
 
 }  // namespace
 
-float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border) {
-  const int w = depth.width, h = depth.height;
-  const bool inside = tx >= 0 && ty >= 0 && tx < w && ty < h;
-  // CLAMP_TO_BORDER: the border colour's R is the depth a texel past the edge holds (GL 4.5
-  // sections 8.14.2, 8.23.1).
-  if (!inside && border != ShadowBorder::Clamp) return border == ShadowBorder::Lit ? 1.0f : 0.0f;
-  // Clamp to edge: a texel past the border reads the border texel.
-  return depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0);
-}
-
 // The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
 // u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
 // or the engine's offsets (core/pcf_taps.h) in its unit and scale.

@@ -95,7 +95,16 @@ int for_each_tap(float u, float v, const VctSettings& settings, int size, float 
 /// The depth texel (tx, ty) (y up, may lie past the edge) of a 2D map holds: the edge texel's
 /// (shadow_border = clamp, GL CLAMP_TO_EDGE), or past the edge 1 (lit) or 0 (shadowed), GL
 /// CLAMP_TO_BORDER's border colour.
-float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border);
+/// (Inline: every PCF tap and every texel of the freedoms' range searches reads it.)
+inline float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border) {
+  const int w = depth.width, h = depth.height;
+  const bool inside = tx >= 0 && ty >= 0 && tx < w && ty < h;
+  // CLAMP_TO_BORDER: the border colour's R is the depth a texel past the edge holds (GL 4.5
+  // sections 8.14.2, 8.23.1).
+  if (!inside && border != ShadowBorder::Clamp) return border == ShadowBorder::Lit ? 1.0f : 0.0f;
+  // Clamp to edge: a texel past the border reads the border texel.
+  return depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0);
+}
 
 /// PCF visibility in [0,1] (1 = lit) of a world point for one light: the mean over the taps --
 /// settings.pcf_kernel^2 at texel offsets (i - (k-1)/2), or the engine's settings.pcf_taps
