@@ -157,7 +157,11 @@ void widen_by_alpha_flips(const Scene& scene, const mat4& view_proj, const Visib
   // none) wherever it is not the reference's own front. Hunt seed 524: both faces of a masked thin
   // wall may flip at a pixel; the reference cut the first and kept the second, llvmpipe cut both
   // and showed the room behind.
-  widen_by(scene, view_proj, vb, front_certainly_kept(scene, view_proj, vb.width, vb.height), g);
+  const VisibilityBuffer kept = front_certainly_kept(scene, view_proj, vb.width, vb.height);
+  widen_by(scene, view_proj, vb, kept, g);
+  // And every flip between (three or more layers that may flip at one pixel: masked foliage cards).
+  for (const VisibilityBuffer& layer : alpha_chain_surfaces(scene, view_proj, vb, kept))
+    widen_by(scene, view_proj, vb, layer, g);
 }
 
 }  // namespace

@@ -192,6 +192,43 @@ VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_
   return vb;
 }
 
+std::vector<VisibilityBuffer> alpha_chain_surfaces(const Scene& scene, const mat4& view_proj,
+                                                   const VisibilityBuffer& front, const VisibilityBuffer& kept) {
+  const int w = front.width, h = front.height;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  const WindowBarycentrics wb(view_proj, w, h);
+  struct Flip {
+    int x;
+    uint32_t ti;
+    RasterFragment f;
+  };
+  // Bands own their rows, so each row's list is written by one thread, in triangle order.
+  std::vector<std::vector<Flip>> rows(static_cast<size_t>(h));
+  for_each_fragment_at(binned, w, h, vec2(0.5f), [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    const int row = h - 1 - f.y;
+    const size_t i = front.index(f.x, row);
+    // In front of the chain's end (GL_LESS against it, or against the clear value 1 where every
+    // fragment may be cut). Only a flip can lie there: a fragment no GL discards would be the end.
+    if (!(f.depth < kept.depth[i]) || int32_t(t.source) == front.triangle[i]) return;
+    if (!triangle_alpha_tested(scene, t.source) || !alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary)) return;
+    std::vector<Flip>& list = rows[size_t(row)];
+    const bool seen = std::any_of(list.begin(), list.end(), [&](const Flip& e) {  // a clipped triangle's other piece
+      return e.x == f.x && binned.triangles[e.ti].source == t.source;
+    });
+    if (!seen) list.push_back({f.x, ti, f});
+  });
+  std::vector<VisibilityBuffer> out;
+  for (int row = 0; row < h; ++row) {
+    std::vector<size_t> placed(size_t(w), 0);
+    for (const Flip& e : rows[size_t(row)]) {
+      const size_t layer = placed[size_t(e.x)]++;
+      if (out.size() <= layer) out.push_back(front);
+      store_fragment(out[layer], front.index(e.x, row), binned.triangles[e.ti], e.f);
+    }
+  }
+  return out;
+}
+
 AlphaFlipSurfaces alpha_flip_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb) {
   const int w = vb.width, h = vb.height;
   const VisibilityBuffer unmasked = front_most(scene, view_proj, w, h, AlphaKeep::MayPass);

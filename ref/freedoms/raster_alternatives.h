@@ -75,6 +75,15 @@ VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_
 /// outcome of a chain of alpha flips (docs/compare.md, "Alpha-mask ties").
 VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj, int w, int h);
 
+/// Every fragment in front of `kept` (front_certainly_kept's) that may flip (the middle of a chain of alpha
+/// flips): a correct GL may cut away every fragment in front of it (each is cut for certain or may
+/// flip) and keep it, so each is admissible, not only the chain's two ends (docs/compare.md,
+/// "Alpha-mask ties", "Every layer of a chain"). Returned as layers, as depth_tied_surfaces: layer k
+/// holds each pixel's k-th such fragment (in triangle order), and `front`'s own entry where a pixel
+/// has fewer or where it is `front`'s own triangle; empty when no pixel has one.
+std::vector<VisibilityBuffer> alpha_chain_surfaces(const Scene& scene, const mat4& view_proj,
+                                                   const VisibilityBuffer& front, const VisibilityBuffer& kept);
+
 struct AlphaFlipSurfaces {
   VisibilityBuffer surface;
   std::vector<uint8_t> may_flip;

@@ -318,5 +318,34 @@ TEST(RasterTies, AChainOfAlphaFlipsAdmitsTheFrontMostSurfaceNoGlDiscards) {
   }
 }
 
+// Every layer of a longer chain: three half-masked cards, the third white (its own texture, the
+// same alpha), the backdrop (0.8) behind. On the centre column all three may flip; the reference
+// keeps the first card, the surface behind it (the second card) and the chain's end (the backdrop)
+// were the range's only other outcomes, so the white third card, which a correct GL shows when it
+// cuts the first two and keeps the third, lay outside (hi 0.8). Two columns over every card passes
+// for certain: one outcome, the first card, so a GL showing the third there still fails.
+TEST(RasterTies, EveryFlipOfAChainOfThreeIsAdmitted) {
+  Scene s = test::half_masked_card(true);
+  test::add_card_quad(s, -0.1f, 1.0f, 0);
+  s.textures.push_back(test::two_texel_texture("white_left_transparent", {255, 255, 255, 0, 255, 255, 255, 255}));
+  Material white = s.materials[0];
+  white.base_color_texture.texture = int(s.textures.size() - 1);
+  s.materials.push_back(white);
+  test::add_card_quad(s, -0.2f, 1.0f, uint32_t(s.materials.size() - 1));
+  s.volume = fit_volume(s.bounds);
+  VctSettings st;
+  st.width = st.height = 33;
+  const GBuffer g = render_gbuffer_with_freedoms(s, st);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  const float card = g.albedo.at(24, 16, 0);
+  ASSERT_LT(card, 0.5f);
+  for (int row = 10; row <= 22; ++row) {
+    ASSERT_FLOAT_EQ(g.albedo.at(16, row, 0), card) << row;   // the reference keeps the first card
+    EXPECT_GE(g.tie_range.at(16, row, hi), 0.99f) << row;    // the white third card
+    EXPECT_FLOAT_EQ(g.tie_range.at(18, row, hi), card) << row;  // no flip: the first card alone
+    EXPECT_FLOAT_EQ(g.tie_range.at(18, row, lo), card) << row;
+  }
+}
+
 }  // namespace
 }  // namespace vct

@@ -6,6 +6,7 @@ shrunk to minimal regression cases.
         [--out runs/hunt] [--save scenes/regressions] [--threads 2] [--no-shrink] [--budget 120]
     .venv/bin/python tools/scenegen/hunt.py --write-only --seeds 5 --out DIR   # just the scene files
     .venv/bin/python tools/scenegen/hunt.py --summarize --out runs/hunt         # counts per verdict, stage
+    .venv/bin/python tools/scenegen/hunt.py --rerun-saved [--save scenes/regressions]  # every saved case again
 
 Per seed: writes OUT/seed-N/scene.gltf and settings.json (everything validate needs: image size,
 grid, shadow map size, pt.spp 4 and the drawn settings), runs `vct validate --config settings.json --no-report`, and
@@ -148,6 +149,31 @@ def parse_seeds(text):
     return seeds
 
 
+def rerun_saved(args):
+    """Every saved case (SAVE/*/scene.gltf with its settings.json) through validate again, in name
+    order: one line each; exit 1 when any FAILs, crashes or is refused (a judge that regressed)."""
+    if not os.path.isdir(args.save):
+        print("hunt.py: %s: not a folder" % args.save, file=sys.stderr)
+        return 2
+    cases = sorted(d for d in os.listdir(args.save) if os.path.isfile(os.path.join(args.save, d, "scene.gltf")))
+    if not cases:
+        print("hunt.py: %s: no saved case (a folder with scene.gltf)" % args.save, file=sys.stderr)
+        return 2
+    bad = 0
+    for name in cases:
+        case = os.path.join(args.out, name)
+        shutil.rmtree(case, ignore_errors=True)
+        os.makedirs(case)
+        for f in ("scene.gltf", "settings.json"):
+            shutil.copyfile(os.path.join(args.save, name, f), os.path.join(case, f))
+        r = run_validate(args, case)
+        shutil.rmtree(case, ignore_errors=True)
+        bad += r["verdict"] not in ("pass", "warn", "no-gl")
+        print("%-22s %-8s %6.1f s  %s" % (name, r["verdict"], r["seconds"], r["first_failing"] or r["line"][:100]),
+              flush=True)
+    return 1 if bad else 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", help="e.g. 0-299 or 1,5,9")
@@ -161,10 +187,13 @@ def main():
     ap.add_argument("--no-shrink", action="store_true")
     ap.add_argument("--keep-runs", action="store_true")
     ap.add_argument("--write-only", action="store_true", help="write the scenes, run nothing")
+    ap.add_argument("--rerun-saved", action="store_true", help="validate every case in SAVE again, generate nothing")
     args = ap.parse_args()
     if args.summarize:
         summarize(args.out)
         return 0
+    if args.rerun_saved:
+        return rerun_saved(args)
     if not args.seeds:
         print("hunt.py: --seeds is required (or --summarize)", file=sys.stderr)
         return 2
