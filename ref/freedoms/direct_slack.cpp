@@ -7,6 +7,7 @@
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/texture_slack.h"
+#include "scene/alpha_mask.h"
 #include "stages/direct.h"
 #include "stages/raster.h"
 #include "stages/uv_derivatives.h"
@@ -14,12 +15,17 @@
 namespace vct {
 
 void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps,
-                              const VctSettings& settings, const Image& direct, GBuffer& g) {
+                              const VctSettings& settings, const Image& direct, GBuffer& g,
+                              const VisibilityBuffer* camera) {
   const int w = settings.width, h = settings.height;
   if (g.texture_slack.channels <= kSlackDirect || direct.width != w || direct.height != h) return;
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
-  // The G-buffer keeps no triangle ids: the same visibility again (same rasterizer, same bits).
-  const VisibilityBuffer vb = render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  // The G-buffer keeps no triangle ids: the same visibility again (same rasterizer, same bits),
+  // masks ignored. Without an alpha-tested material the G-buffer's own raster is that buffer.
+  const bool reuse = camera && camera->width == w && camera->height == h && !scene_has_alpha_test(scene);
+  const VisibilityBuffer rendered =
+      reuse ? VisibilityBuffer() : render_visibility(scene.positions, scene.triangles, view_proj, w, h);
+  const VisibilityBuffer& vb = reuse ? *camera : rendered;
   const WindowBarycentrics wb(view_proj, w, h);
   const vec3 eye = scene.camera.position;
   // Direct light reads albedo, metallic, roughness and the shading normal; not emission.
@@ -31,11 +37,20 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       const uint32_t tri = uint32_t(vb.triangle[i]);
       // Untextured surfaces too: the snapped sample point moves the interpolated normal (a dense
       // smooth mesh at a grazing angle) and the shadow-map lookup (a PCF tap at a texel edge).
+      // Combinations that would give a material already tried are left out (scene/surface.h,
+      // material_reads_lods): the slack is a maximum, so that changes no bit. An untextured
+      // material reads no lods: one combination, at default lods.
+      const Material& material = scene.materials[scene.triangle_material[tri]];
+      const bool reads_lods = material_reads_lods(material);
       const SurfaceLods lods =
-          pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row);
+          reads_lods ? pixel_lods(scene, tri, ScreenBarycentrics(scene, tri, view_proj, w, h), x, h - 1 - row)
+                     : SurfaceLods();
       double cand[3][kMaxLodCandidates];
       int count[3];
-      for (int k = 0; k < 3; ++k) count[k] = lod_candidates(lods.range[kSlots[k]], cand[k]);
+      for (int k = 0; k < 3; ++k) count[k] = reads_lods ? lod_candidates(lods.range[kSlots[k]], cand[k]) : 1;
+      if (!reads_lods)
+        for (int k = 0; k < 3; ++k) cand[k][0] = 0.0;
+      const int orders = material_reads_srgb_order(material) ? 2 : 1;
       SurfacePoint points[kSlackShifts];
       const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);
       const vec3 ref = direct.rgb(x, row);
@@ -44,7 +59,7 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       for (int p = 0; p < n; ++p)
         for (int i0 = 0; i0 < count[0]; ++i0)
           for (int i1 = 0; i1 < count[1]; ++i1)
-            for (int i2 = 0; i2 < count[2] * 2;
+            for (int i2 = 0; i2 < count[2] * orders;
                  ++i2) {  // x2: sRGB decoded before / after filtering
               l.srgb_after_filter = i2 >= count[2];
               l.lambda[kSlots[0]] = cand[0][i0];

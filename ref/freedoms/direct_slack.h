@@ -11,6 +11,7 @@
 
 #include "core/settings.h"
 #include "scene/scene.h"
+#include "stages/raster.h"  // VisibilityBuffer
 #include "stages/stage_types.h"
 
 namespace vct {
@@ -24,8 +25,10 @@ constexpr float kLinearCompareWeightStep = 1.0f / 128.0f;
 /// Fills channel kSlackDirect of g.texture_slack: per covered pixel, the
 /// largest |direct(candidate) - direct| over RGB, with `direct` the reference's image.direct.
 /// Every combination of the base colour, metallic-roughness and normal slots' LOD candidates is
-/// shaded at each shifted sample point.
+/// shaded at each shifted sample point. `camera`: the G-buffer's raster (render_gbuffer's
+/// visibility), read instead of rasterizing again where masks cannot change it.
 void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& maps,
-                              const VctSettings& settings, const Image& direct, GBuffer& g);
+                              const VctSettings& settings, const Image& direct, GBuffer& g,
+                              const VisibilityBuffer* camera = nullptr);
 
 }  // namespace vct

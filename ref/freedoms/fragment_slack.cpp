@@ -72,8 +72,10 @@ bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& 
 }
 
 /// The fragment moved by (du, dv) voxels in its window: barycentrics are affine in window
-/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv).
-VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv). `point`, where
+/// given, receives the surface point it was interpolated from (surface_at's).
+VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv,
+                               SurfacePoint* point = nullptr) {
   const double db1 = (w.d * du - w.b * dv) / w.det, db2 = (-w.c * du + w.a * dv) / w.det;
   VoxelFragment out = f;
   out.b1 = float(double(f.b1) + db1);
@@ -81,12 +83,34 @@ VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const Vo
   const SurfacePoint sp = interpolate_surface(scene, f.triangle, out.b1, out.b2);
   out.position = sp.position;
   out.normal = sp.normal;
+  if (point) *point = sp;
   return out;
 }
 
+/// The surface point of the fragment moved by (du, dv): interpolate_surface at its barycentrics.
 SurfacePoint surface_at(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
-  const VoxelFragment g = shifted_fragment(scene, w, f, du, dv);
-  return interpolate_surface(scene, g.triangle, g.b1, g.b2);
+  SurfacePoint sp;
+  shifted_fragment(scene, w, f, du, dv, &sp);
+  return sp;
+}
+
+/// The fragment moved by one snap offset, its surface point (surface_at's) and its material at
+/// the reference's lambdas: what position_slack and shadow_snap_slack both read, made once.
+struct ShiftedSurface {
+  VoxelFragment fragment;
+  SurfacePoint point;
+  SurfaceMaterial material;
+};
+
+std::vector<ShiftedSurface> shifted_surfaces(const Scene& scene, const SnapWindow& w, const VoxelFragment& f,
+                                             const SlotLods& lods, const std::vector<glm::dvec2>& offsets) {
+  std::vector<ShiftedSurface> out(offsets.size());
+  for (size_t k = 0; k < offsets.size(); ++k) {
+    ShiftedSurface& s = out[k];
+    s.fragment = shifted_fragment(scene, w, f, offsets[k].x, offsets[k].y, &s.point);
+    s.material = evaluate_material(scene, s.point, lods);
+  }
+  return out;
 }
 
 /// One NEAREST-filtered level a slot's lookup reads at the fragment's own lambda, as a map from
@@ -140,17 +164,14 @@ std::vector<glm::dvec2> snap_offsets(const Scene& scene, const SnapWindow& w, co
   return out;
 }
 
-/// Largest change over the snap square's `offsets` (snap_offsets), every lookup at the reference's
-/// own lambdas and visibility, against the reference's terms `ref` (freedoms/light_terms.h).
-float position_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
-                     const std::vector<glm::dvec2>& offsets, const LightTerms& ref, const std::vector<ShadowMap>& maps,
-                     const VctSettings& settings, const BounceLight* bounce) {
+/// Largest change over the snap square's offsets (snap_offsets, made into `shifted` by
+/// shifted_surfaces), every lookup at the reference's own lambdas and visibility, against the
+/// reference's terms `ref` (freedoms/light_terms.h).
+float position_slack(const Scene& scene, const std::vector<ShiftedSurface>& shifted, const LightTerms& ref,
+                     const std::vector<ShadowMap>& maps, const VctSettings& settings, const BounceLight* bounce) {
   float slack = 0.0f;
-  for (const glm::dvec2& d : offsets) {
-    const VoxelFragment g = shifted_fragment(scene, w, f, d.x, d.y);
-    const SurfaceMaterial m = evaluate_material(scene, surface_at(scene, w, f, d.x, d.y), lods);
-    slack = std::max(slack, light_change(light_terms(scene, g, m, maps, settings, bounce), ref));
-  }
+  for (const ShiftedSurface& s : shifted)
+    slack = std::max(slack, light_change(light_terms(scene, s.fragment, s.material, maps, settings, bounce), ref));
   return slack;
 }
 
@@ -180,12 +201,15 @@ std::vector<SurfaceMaterial> lookup_alternatives(const Scene& scene, const Surfa
   double cand[3][kMaxLodCandidates];
   int count[3];
   for (int k = 0; k < 3; ++k) count[k] = lod_candidates(l.range[kSlots[k]], cand[k]);
+  // A material without an sRGB texture is the same decoded before or after filtering
+  // (scene/surface.h, material_reads_srgb_order): each alternative once.
+  const int orders = material_reads_srgb_order(scene.materials[scene.triangle_material[p.triangle]]) ? 2 : 1;
   std::vector<SurfaceMaterial> out;
   SlotLods s = l.exact;
   for (int k = 0; k < kTexelShifts; ++k)
     for (int i0 = 0; i0 < count[0]; ++i0)
       for (int i1 = 0; i1 < count[1]; ++i1)
-        for (int i2 = 0; i2 < count[2] * 2; ++i2) {  // x2: sRGB decoded before / after filtering
+        for (int i2 = 0; i2 < count[2] * orders; ++i2) {  // x2: sRGB decoded before / after filtering
           s.texel_shift = texel_shift(k);
           s.srgb_after_filter = i2 >= count[2];
           s.lambda[kSlots[0]] = cand[0][i0];
@@ -309,7 +333,7 @@ std::vector<vec3> normal_representatives(const vec3& exact, const MaterialGroups
 /// freedoms' rise, not the centre's (seed 559: a normal map's LOD turned a light past the horizon
 /// where the snap also lit the fragment).
 float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, const SlotLods& lods,
-                        const std::vector<glm::dvec2>& offsets, const MaterialGroups& groups,
+                        const std::vector<ShiftedSurface>& shifted, const MaterialGroups& groups,
                         const std::vector<ShadowMap>& maps, const VctSettings& settings) {
   if (maps.empty()) return 0.0f;
   const SnapParallelogram q = snap_parallelogram(w, f);
@@ -321,9 +345,8 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
     // The light GL's fragment may have from this light unshadowed: none, and no lookup matters
     // (a light behind the surface at every point and material: the range is not searched).
     float open = 0.0f;
-    for (const glm::dvec2& d : offsets) {
-      const SurfacePoint p = surface_at(scene, w, f, d.x, d.y);
-      const vec3 lit = unshadowed_light(light, settings, p.position, evaluate_material(scene, p, lods));
+    for (const ShiftedSurface& s : shifted) {
+      const vec3 lit = unshadowed_light(light, settings, s.point.position, s.material);
       open = std::max(open, largest_channel(glm::max(lit, vec3(0.0f))));
     }
     open += unshadowed_rise(light, settings, f.position, m, groups);
@@ -425,9 +448,9 @@ std::vector<float> fragment_shading_slack(const Scene& scene, const Voxelization
     float slack = material_slack(scene, f, groups, ref, maps, settings, bounce);
     SnapWindow w;
     if (snap_window(scene, vox.n, f, w)) {
-      const std::vector<glm::dvec2> offsets = snap_offsets(scene, w, f, l.exact);
-      slack += position_slack(scene, w, f, l.exact, offsets, ref, maps, settings, bounce) +
-               shadow_snap_slack(scene, w, f, l.exact, offsets, groups, maps, settings);
+      const std::vector<ShiftedSurface> shifted = shifted_surfaces(scene, w, f, l.exact, snap_offsets(scene, w, f, l.exact));
+      slack += position_slack(scene, shifted, ref, maps, settings, bounce) +
+               shadow_snap_slack(scene, w, f, l.exact, shifted, groups, maps, settings);
     }
     // Filtering first, the weights' freedom moves the filtered depth instead: snap_visibility's
     // filtered taps carry it (freedoms/snap_visibility.h).

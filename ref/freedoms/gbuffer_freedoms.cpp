@@ -17,18 +17,28 @@ Image make_texture_slack(int w, int h) {
   return slack;
 }
 
-// kSlackNormal..kSlackEmission at every covered pixel, against the material the G-buffer looked up.
-void add_texture_slack(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
-                       const VisibilityBuffer& vb, GBuffer& g) {
+// kSlackNormal..kSlackEmission at every covered pixel, against the material the G-buffer looked up,
+// and the tie range's own part (start_tie_range) at every pixel: both read the pixel's shifted
+// surface points, made once here.
+void add_texture_slack_and_start_ties(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb,
+                                      const VisibilityBuffer& vb, GBuffer& g) {
   const int w = g.depth.width, h = g.depth.height;
   parallel_rows(h, [&](int row) {
     for (int x = 0; x < w; ++x) {
       const size_t i = vb.index(x, row);
-      if (vb.triangle[i] < 0) continue;
+      if (vb.triangle[i] < 0) {
+        start_tie_range(view_proj, vb, x, row, nullptr, 0, g);
+        continue;
+      }
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      const PixelMaterial centre = pixel_material(scene, view_proj, w, h, x, row, tri, vb.bary[i]);
-      const vec4 slack = texture_slack(scene, wb, x, row, tri, vb.bary[i], centre.material, centre.lods);
+      SurfacePoint points[kSlackShifts];
+      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);
+      const PixelMaterial centre = pixel_material_lods_if_read(scene, view_proj, w, h, x, row, tri, vb.bary[i]);
+      const vec4 slack = texture_slack(scene, points, n, tri, centre.material, centre.lods);
       for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];
+      vec3 positions[kSlackShifts];
+      for (int k = 0; k < n; ++k) positions[k] = points[k].position;
+      start_tie_range(view_proj, vb, x, row, positions, n, g);
     }
   });
 }
@@ -54,8 +64,9 @@ void add_gbuffer_freedoms(const Scene& scene, const VctSettings& settings, const
   const mat4 view_proj = scene.camera.projection(float(w) / float(h)) * scene.camera.view();
   const WindowBarycentrics wb(view_proj, w, h);
   g.texture_slack = make_texture_slack(w, h);
-  add_texture_slack(scene, view_proj, wb, vb, g);
-  add_tie_ranges(scene, view_proj, vb, g);
+  make_tie_ranges(w, h, g);
+  add_texture_slack_and_start_ties(scene, view_proj, wb, vb, g);  // add_tie_ranges' first part
+  widen_tie_ranges_by_alternatives(scene, view_proj, vb, g);      // and the rest
   if (scene_has_alpha_test(scene)) mark_alpha_ties(scene, view_proj, wb, g);
 }
 

@@ -36,22 +36,18 @@ GBufferSample sample_of(const Scene& scene, const mat4& view_proj, const Visibil
                         vb.depth[i], vb.front_facing[i] != 0);
 }
 
-// The reference's own values at every pixel (lo = hi, read back from the G-buffer's images in
+// The reference's own values at pixel (x, row) (lo = hi, read back from the G-buffer's images in
 // GBufferSample order), widened by its facing alternative.
-void start_ranges(const VisibilityBuffer& vb, GBuffer& g) {
+void start_range(const VisibilityBuffer& vb, int x, int row, GBuffer& g) {
   const Image* images[] = {&g.coverage, &g.depth, &g.position, &g.normal, &g.albedo, &g.material, &g.specular_color, &g.emission};
-  parallel_rows(vb.height, [&](int row) {
-    for (int x = 0; x < vb.width; ++x) {
-      GBufferSample own;
-      float* v = own.values;
-      for (const Image* im : images)
-        for (int c = 0; c < im->channels; ++c) *v++ = im->at(x, row, c);
-      float* p = g.tie_range.pixel(x, row);
-      for (int k = 0; k < kGbufferSampleValues; ++k) p[2 * k] = p[2 * k + 1] = own.values[k];
-      if (vb.triangle[vb.index(x, row)] >= 0 && vb.facing_tie[vb.index(x, row)])
-        widen(g.tie_range, x, row, negated_normal(own));
-    }
-  });
+  GBufferSample own;
+  float* v = own.values;
+  for (const Image* im : images)
+    for (int c = 0; c < im->channels; ++c) *v++ = im->at(x, row, c);
+  float* p = g.tie_range.pixel(x, row);
+  for (int k = 0; k < kGbufferSampleValues; ++k) p[2 * k] = p[2 * k + 1] = own.values[k];
+  if (vb.triangle[vb.index(x, row)] >= 0 && vb.facing_tie[vb.index(x, row)])
+    widen(g.tie_range, x, row, negated_normal(own));
 }
 
 constexpr int kDepthOffset = 1;     // the depth value in GBufferSample (after coverage)
@@ -75,26 +71,19 @@ void widen_value(float* p, int v, float value) {
 // differences across other surfaces, allow there; the depth moves with the position (the same
 // plane at the same shifted sample: hunt seeds 413, 579, whose position was admitted by its own
 // plane and whose depth, 1.5e-4 off, was not).
-void widen_by_plane_at_shifts(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb, int x, int row,
-                              uint32_t triangle, const vec3& bary, GBuffer& g) {
-  SurfacePoint points[kSlackShifts];
-  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+void widen_by_positions(const mat4& view_proj, int x, int row, const vec3* positions, int n, GBuffer& g) {
   float* p = g.tie_range.pixel(x, row);
   for (int k = 0; k < n; ++k) {
-    for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, points[k].position[c]);
-    widen_value(p, kDepthOffset, window_depth(view_proj, points[k].position));
+    for (int c = 0; c < 3; ++c) widen_value(p, kPositionOffset + c, positions[k][c]);
+    widen_value(p, kDepthOffset, window_depth(view_proj, positions[k]));
   }
 }
 
-// The front surface's own plane under the snap.
-void widen_by_own_plane(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
-  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
-  parallel_rows(vb.height, [&](int row) {
-    for (int x = 0; x < vb.width; ++x) {
-      const size_t i = vb.index(x, row);
-      if (vb.triangle[i] >= 0) widen_by_plane_at_shifts(scene, view_proj, wb, x, row, uint32_t(vb.triangle[i]), vb.bary[i], g);
-    }
-  });
+void widen_by_plane_at_shifts(const Scene& scene, const mat4& view_proj, const WindowBarycentrics& wb, int x, int row,
+                              uint32_t triangle, const vec3& bary, GBuffer& g) {
+  vec3 points[kSlackShifts];
+  const int n = shifted_surface_positions(scene, wb, x, row, triangle, bary, points);
+  widen_by_positions(view_proj, x, row, points, n, g);
 }
 
 // The first GBufferSample value of each texture slack channel's stage, and its channel count.
@@ -117,7 +106,7 @@ void widen_by_texture_slack(const Scene& scene, const mat4& view_proj, const Win
                             const VisibilityBuffer& other, int x, int row, const GBufferSample& alt, GBuffer& g) {
   const size_t i = other.index(x, row);
   const uint32_t tri = uint32_t(other.triangle[i]);
-  const PixelMaterial centre = pixel_material(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
+  const PixelMaterial centre = pixel_material_lods_if_read(scene, view_proj, other.width, other.height, x, row, tri, other.bary[i]);
   const vec4 slack = texture_slack(scene, wb, x, row, tri, other.bary[i], centre.material, centre.lods);
   float* p = g.tie_range.pixel(x, row);
   for (const SlackValues& s : kSlackValues)
@@ -181,29 +170,52 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper) 
   return group + "." + std::to_string(c) + (upper ? ".hi" : ".lo");
 }
 
-void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
-  const int w = vb.width, h = vb.height;
-  g.tie_range = Image(w, h, 2 * kGbufferSampleValues);
+void make_tie_ranges(int width, int height, GBuffer& g) {
+  g.tie_range = Image(width, height, 2 * kGbufferSampleValues);
   g.tie_range.channel_names.clear();
   for (const TieRangeGroup& group : kTieRangeGroups)
     for (int c = 0; c < group.channels; ++c)
       for (bool upper : {false, true}) g.tie_range.channel_names.push_back(tie_range_channel_name(group.stage, c, upper));
-  start_ranges(vb, g);
-  widen_by_own_plane(scene, view_proj, vb, g);
+}
+
+// The front surface's own part: its values, its facing, its plane under the snap.
+void start_tie_range(const mat4& view_proj, const VisibilityBuffer& vb, int x, int row, const vec3* positions, int n,
+                     GBuffer& g) {
+  start_range(vb, x, row, g);
+  widen_by_positions(view_proj, x, row, positions, n, g);
+}
+
+void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g) {
+  make_tie_ranges(vb.width, vb.height, g);
+  const WindowBarycentrics wb(view_proj, vb.width, vb.height);
+  parallel_rows(vb.height, [&](int row) {
+    for (int x = 0; x < vb.width; ++x) {
+      const size_t i = vb.index(x, row);
+      vec3 positions[kSlackShifts];
+      const int n = vb.triangle[i] >= 0 ? shifted_surface_positions(scene, wb, x, row, uint32_t(vb.triangle[i]),
+                                                                    vb.bary[i], positions)
+                                        : 0;
+      start_tie_range(view_proj, vb, x, row, positions, n, g);
+    }
+  });
+  widen_tie_ranges_by_alternatives(scene, view_proj, vb, g);
+}
+
+void widen_tie_ranges_by_alternatives(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb,
+                                      GBuffer& g) {
+  const int w = vb.width, h = vb.height;
   // One shifted visibility buffer at a time (memory: one more VisibilityBuffer, not four).
-  const Scene* alpha_scene = &scene;
   for (int k = 0; k < 4; ++k) {
     const float s = float(kVertexSnapStep);
     const vec2 sample(0.5f + ((k & 1) ? s : -s), 0.5f + ((k & 2) ? s : -s));
-    const VisibilityBuffer shifted =
-        render_visibility(scene.positions, scene.triangles, view_proj, w, h, alpha_scene, sample);
-    widen_by(scene, view_proj, vb, shifted, g);
     // The same snap moves the depth planes: where the shifted sample's front surface ties in depth
     // with another one covering that sample (two faces meeting at a fold's edge, one front- and
     // one back-facing), that one may be in front (docs/compare.md, "Raster alternatives", "Depth
-    // order under a shift").
-    for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, shifted, sample))
-      widen_by(scene, view_proj, vb, tied, g);
+    // order under a shift"). Both from one raster pass (visibility_and_depth_ties).
+    std::vector<VisibilityBuffer> ties;
+    const VisibilityBuffer shifted = visibility_and_depth_ties(scene, view_proj, w, h, sample, ties);
+    widen_by(scene, view_proj, vb, shifted, g);
+    for (const VisibilityBuffer& tied : ties) widen_by(scene, view_proj, vb, tied, g);
   }
   // Every surface tied in depth with the reference's own front at the centre, not only the nearest
   // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717).

@@ -53,4 +53,18 @@ std::string tie_range_channel_name(const std::string& group, int c, bool upper);
 /// own texture slack.
 void add_tie_ranges(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb, GBuffer& g);
 
+/// add_tie_ranges in its three parts, for a caller that makes each covered pixel's shifted surface
+/// points anyway (add_gbuffer_freedoms, for the texture slack): make_tie_ranges makes g.tie_range;
+/// start_tie_range fills pixel (x, row) with the reference's own values, widened by its facing
+/// alternative and by its front surface's plane at `positions` (the positions of
+/// shifted_surface_points' n points there; n = 0 where the pixel is empty or the centre's ray
+/// misses the plane); widen_tie_ranges_by_alternatives then adds every other surface, once
+/// start_tie_range has run at every pixel. Per pixel the same steps in the same order: the same
+/// bits as add_tie_ranges.
+void make_tie_ranges(int width, int height, GBuffer& g);
+void start_tie_range(const mat4& view_proj, const VisibilityBuffer& vb, int x, int row, const vec3* positions, int n,
+                     GBuffer& g);
+void widen_tie_ranges_by_alternatives(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& vb,
+                                      GBuffer& g);
+
 }  // namespace vct

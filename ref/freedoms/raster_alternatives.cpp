@@ -99,23 +99,32 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
   return alt;
 }
 
-std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
-                                                  const VisibilityBuffer& front, vec2 sample) {
-  const int w = front.width, h = front.height;
-  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+namespace {
+
+// Whether a correct GL discards the fragment: alpha-masked there (render_visibility's test).
+bool discarded(const Scene& scene, const RasterTriangle& t, const RasterFragment& f) {
+  return triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z);
+}
+
+std::vector<double> depth_tie_margins(const BinnedTriangles& binned) {
   std::vector<double> margins(binned.triangles.size());
   for (size_t i = 0; i < margins.size(); ++i) margins[i] = depth_tie_margin(binned.triangles[i]);
-  const auto discarded = [&](const RasterTriangle& t, const RasterFragment& f) {
-    return triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z);
-  };
-  // The deepest a fragment may lie and still come out in front of all the others: the smallest
-  // z + m at the pixel.
-  std::vector<double> ceiling(front.depth.size(), 1e300);
-  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
-    if (discarded(t, f)) return;
-    const size_t i = front.index(f.x, h - 1 - f.y);
-    ceiling[i] = std::min(ceiling[i], double(f.depth) + margins[ti]);
-  });
+  return margins;
+}
+
+// The ceiling's fragment (depth_tied_surfaces): the deepest a fragment may lie and still come out in
+// front of all the others is the smallest z + m at the pixel.
+void lower_ceiling(std::vector<double>& ceiling, size_t i, uint32_t ti, const RasterFragment& f,
+                   const std::vector<double>& margins) {
+  ceiling[i] = std::min(ceiling[i], double(f.depth) + margins[ti]);
+}
+
+// depth_tied_surfaces' second pass, from its first pass's ceiling.
+std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const BinnedTriangles& binned,
+                                                 const std::vector<double>& margins,
+                                                 const std::vector<double>& ceiling, const VisibilityBuffer& front,
+                                                 vec2 sample) {
+  const int w = front.width, h = front.height;
   // Every other surface whose z - m reaches it: the first at a pixel into layer 0, any further one
   // (three surfaces or more tied at one pixel: rare) into its row's overflow. Bands own their rows,
   // so each pixel and row is written by one thread, in triangle order.
@@ -128,7 +137,7 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   std::vector<uint8_t> has_first(front.depth.size(), 0);
   std::vector<std::vector<Extra>> overflow(static_cast<size_t>(h));
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
-    if (discarded(t, f)) return;
+    if (discarded(scene, t, f)) return;
     const int row = h - 1 - f.y;
     const size_t i = front.index(f.x, row);
     if (int32_t(t.source) == front.triangle[i] || !(double(f.depth) - margins[ti] <= ceiling[i])) return;
@@ -149,6 +158,38 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   }
   if (std::none_of(has_first.begin(), has_first.end(), [](uint8_t first) { return first != 0; })) out.clear();
   return out;
+}
+
+}  // namespace
+
+std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
+                                                  const VisibilityBuffer& front, vec2 sample) {
+  const int w = front.width, h = front.height;
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  const std::vector<double> margins = depth_tie_margins(binned);
+  std::vector<double> ceiling(front.depth.size(), 1e300);
+  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    if (!discarded(scene, t, f)) lower_ceiling(ceiling, front.index(f.x, h - 1 - f.y), ti, f, margins);
+  });
+  return tied_below_ceiling(scene, binned, margins, ceiling, front, sample);
+}
+
+VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_proj, int w, int h, vec2 sample,
+                                           std::vector<VisibilityBuffer>& tied) {
+  const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
+  const std::vector<double> margins = depth_tie_margins(binned);
+  std::vector<double> ceiling(size_t(w) * size_t(h), 1e300);
+  VisibilityBuffer vb = empty_visibility(w, h);
+  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+    const size_t i = vb.index(f.x, h - 1 - f.y);
+    const bool cut = discarded(scene, t, f);
+    if (!cut) lower_ceiling(ceiling, i, ti, f, margins);
+    if (!(f.depth < vb.depth[i])) return;  // GL_LESS, then the mask: render_visibility's order
+    if (cut) return;
+    store_fragment(vb, i, t, f);
+  });
+  tied = tied_below_ceiling(scene, binned, margins, ceiling, vb, sample);
+  return vb;
 }
 
 std::vector<VisibilityBuffer> alpha_chain_surfaces(const Scene& scene, const mat4& view_proj,

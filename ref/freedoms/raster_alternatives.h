@@ -56,6 +56,13 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
                                                   const VisibilityBuffer& front, vec2 sample = vec2(0.5f));
 
+/// render_visibility(scene.positions, scene.triangles, view_proj, w, h, &scene, sample), returned,
+/// and depth_tied_surfaces of it at `sample`, into `tied`: the front surfaces and the depth ties'
+/// ceiling from one pass over the fragments (the same fragments in the same order as each makes
+/// alone), the same bits as the two calls.
+VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_proj, int w, int h, vec2 sample,
+                                           std::vector<VisibilityBuffer>& tied);
+
 /// Alpha-mask ties (freedoms/alpha_ties.h): where the front-most surface a correct GL may keep (masks
 /// applied only where they cannot flip: surfaces cut away for certain in front of it are skipped)
 /// may pass or fail its alpha test (`may_flip` 1), `surface` holds the other outcome: that surface

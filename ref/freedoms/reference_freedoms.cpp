@@ -25,8 +25,8 @@ void gbuffer_ties(const Scene& scene, const VctSettings& s, Inputs& in, FrameRes
 }
 
 // With soft shadows image.direct is cone-traced: no shadow map decides it (image_judge.cpp).
-void direct_slack(const Scene& scene, const VctSettings& s, Inputs&, FrameResult& r) {
-  if (!s.soft_shadows) add_direct_texture_slack(scene, r.shadow_maps, s, r.images.direct, r.gbuffer);
+void direct_slack(const Scene& scene, const VctSettings& s, Inputs& in, FrameResult& r) {
+  if (!s.soft_shadows) add_direct_texture_slack(scene, r.shadow_maps, s, r.images.direct, r.gbuffer, &in.camera);
 }
 
 void coverage_ties(const Scene& scene, const VctSettings& s, Inputs& in, FrameResult& r) {

@@ -1,8 +1,10 @@
 #include "freedoms/snap_visibility.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <vector>
 
 #include "core/pcf_taps.h"
@@ -18,7 +20,48 @@ constexpr double kU = 1.0 / 16777216.0;  // 2^-24, one float rounding
 constexpr double kG4 = 4.0 * kU / (1.0 - 4.0 * kU);
 
 using Point = glm::dvec2;  // (a, b) in [-1, 1]^2
-using Polygon = std::vector<Point>;
+
+/// A convex polygon's vertices in order. The unit square clipped a few times keeps a handful of
+/// them (one more per clip at most, on convex input), so they live inline; past kInline they move
+/// to the heap. A polygon is made per candidate texel cell and per tap: a heap vector for each
+/// was a fifth of the voxel slack's time.
+class Polygon {
+ public:
+  Polygon() = default;
+  Polygon(std::initializer_list<Point> points) {
+    for (const Point& p : points) push_back(p);
+  }
+  Polygon(const Polygon& o) {
+    for (const Point& p : o) push_back(p);
+  }
+  Polygon& operator=(const Polygon& o) {
+    if (this == &o) return *this;
+    n_ = 0;
+    spill_.clear();
+    for (const Point& p : o) push_back(p);
+    return *this;
+  }
+  void push_back(const Point& p) {
+    if (n_ < kInline) {
+      inline_[n_++] = p;
+      return;
+    }
+    if (n_ == kInline) spill_.assign(inline_, inline_ + kInline);
+    spill_.push_back(p);
+    ++n_;
+  }
+  const Point* begin() const { return n_ > kInline ? spill_.data() : inline_; }
+  const Point* end() const { return begin() + n_; }
+  const Point& operator[](size_t i) const { return begin()[i]; }
+  size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+
+ private:
+  static constexpr size_t kInline = 16;
+  Point inline_[kInline];
+  size_t n_ = 0;
+  std::vector<Point> spill_;
+};
 
 /// c + a x + b y over the parallelogram's parameters.
 struct Linear {
@@ -59,9 +102,11 @@ Linear clip_row(const mat4& m, const SnapParallelogram& q, int row) {
   return l;
 }
 
-std::vector<vec3> points_of(const SnapParallelogram& q) {
-  std::vector<vec3> out = {q.centre};
-  for (const Point& c : unit_square()) out.push_back(q.centre + float(c.x) * q.du + float(c.y) * q.dv);
+std::array<vec3, 5> points_of(const SnapParallelogram& q) {
+  std::array<vec3, 5> out;
+  out[0] = q.centre;
+  size_t k = 1;
+  for (const Point& c : unit_square()) out[k++] = q.centre + float(c.x) * q.du + float(c.y) * q.dv;
   return out;
 }
 

@@ -37,6 +37,11 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
   // next to its silhouette); on flat-shaded triangles it is zero.
   SurfacePoint points[kSlackShifts];
   const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
+  return texture_slack(scene, points, n, triangle, centre, lods);
+}
+
+vec4 texture_slack(const Scene& scene, const SurfacePoint* points, int n, uint32_t triangle,
+                   const SurfaceMaterial& centre, const SurfaceLods& lods) {
   // Each slot's candidates; evaluation j takes the j-th of every slot (the last once a slot has
   // fewer), and each slack channel reads one slot only, so every candidate of every slot is seen.
   double cand[kTextureSlots][kMaxLodCandidates];
@@ -49,11 +54,17 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
   // On a triangle whose tangents disagree on handedness, each with either bitangent too
   // (freedoms/tangent_handedness.h).
   const int bitangents = handedness_may_flip(scene, triangle) ? 2 : 1;
+  // Evaluations that would give a material already tried are left out (scene/surface.h,
+  // material_reads_lods): the slack is a maximum, so that changes no bit.
+  const Material& material = scene.materials[scene.triangle_material[triangle]];
+  if (!material_reads_lods(material)) rounds = 1;
+  const int orders = material_reads_srgb_order(material) ? 2 : 1;
   // Each at both ends of where GL may decode sRGB (before or after filtering, GL 4.5 §8.24).
   for (int i = 0; i < n; ++i)
     for (int h = 0; h < bitangents; ++h)
       for (int j = 0; j < rounds; ++j)
-        for (const bool after : {false, true}) {
+        for (int order = 0; order < orders; ++order) {
+          const bool after = order == 1;
           SlotLods l;
           for (int slot = 0; slot < kTextureSlots; ++slot)
             l.lambda[slot] = cand[slot][std::min(j, count[slot] - 1)];

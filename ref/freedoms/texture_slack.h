@@ -44,4 +44,9 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
                    uint32_t triangle, const vec3& bary, const SurfaceMaterial& centre,
                    const SurfaceLods& lods);
 
+/// The same from the pixel's surface points `points` (shifted_surface_points' n points), for a
+/// caller that needs them for more than the slack (add_gbuffer_freedoms: the tie range's plane).
+vec4 texture_slack(const Scene& scene, const SurfacePoint* points, int n, uint32_t triangle,
+                   const SurfaceMaterial& centre, const SurfaceLods& lods);
+
 }  // namespace vct

@@ -27,8 +27,13 @@ bool WindowBarycentrics::at(const Scene& scene, uint32_t triangle, double wx, do
   return std::isfinite(b.x) && std::isfinite(b.y);
 }
 
-int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
-                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]) {
+namespace {
+// The barycentrics (b1, b2) of `triangle` at image pixel (x, row)'s centre and at its (+-s, +-s)
+// shifts, each passed to emit(b1, b2); returns how many (shifts whose view ray misses the plane
+// are left out).
+template <typename Emit>
+int for_each_shifted_sample(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
+                            const vec3& bary, Emit&& emit) {
   // The shift set is symmetric, so the row direction (image rows grow downward, window y upward)
   // only matters for the centre itself.
   const double cx = double(x) + 0.5, cy = double(wb.height()) - double(row) - 0.5;
@@ -46,10 +51,24 @@ int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int
       continue;
     // Moved by the ray-cast difference from the raster's own barycentrics, so the centre value
     // is exactly the G-buffer's.
-    const float b1 = bary.y + float(bs.x - bc.x), b2 = bary.z + float(bs.y - bc.y);
-    out[n++] = interpolate_surface(scene, triangle, b1, b2);
+    emit(n++, bary.y + float(bs.x - bc.x), bary.z + float(bs.y - bc.y));
   }
   return n;
+}
+}  // namespace
+
+int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                           uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]) {
+  return for_each_shifted_sample(scene, wb, x, row, triangle, bary, [&](int k, float b1, float b2) {
+    out[k] = interpolate_surface(scene, triangle, b1, b2);
+  });
+}
+
+int shifted_surface_positions(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                              uint32_t triangle, const vec3& bary, vec3 out[kSlackShifts]) {
+  return for_each_shifted_sample(scene, wb, x, row, triangle, bary, [&](int k, float b1, float b2) {
+    out[k] = interpolated_position(scene, triangle, b1, b2);
+  });
 }
 
 }  // namespace vct

@@ -36,4 +36,9 @@ constexpr int kSlackShifts = 5;
 int shifted_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
                            uint32_t triangle, const vec3& bary, SurfacePoint out[kSlackShifts]);
 
+/// Only the positions of shifted_surface_points' points (the same bits, scene/surface.h
+/// interpolated_position): what the G-buffer's position and depth ranges read.
+int shifted_surface_positions(const Scene& scene, const WindowBarycentrics& wb, int x, int row,
+                              uint32_t triangle, const vec3& bary, vec3 out[kSlackShifts]);
+
 }  // namespace vct

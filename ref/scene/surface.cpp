@@ -8,13 +8,18 @@
 
 namespace vct {
 
-SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
+vec3 interpolated_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
   const uvec3 t = scene.triangles[triangle];
   const float b0 = 1.0f - b1 - b2;
+  return b0 * scene.positions[t.x] + b1 * scene.positions[t.y] + b2 * scene.positions[t.z];
+}
+
+SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2) {
+  const uvec3 t = scene.triangles[triangle];
   SurfacePoint p;
   p.triangle = triangle;
   const vec3 &p0 = scene.positions[t.x], &p1 = scene.positions[t.y], &p2 = scene.positions[t.z];
-  p.position = b0 * p0 + b1 * p1 + b2 * p2;
+  p.position = interpolated_position(scene, triangle, b1, b2);
   p.geometric_normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   return p;
 }
@@ -123,6 +128,15 @@ SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p, con
     s.shading_normal = apply_normal_map(p.normal, p.tangent, tn, m.normal_scale);
   }
   return s;
+}
+
+bool material_reads_lods(const Material& m) {
+  return m.base_color_texture.present() || m.metallic_roughness_texture.present() || m.normal_texture.present() ||
+         m.emissive_texture.present();
+}
+
+bool material_reads_srgb_order(const Material& m) {
+  return m.base_color_texture.present() || m.emissive_texture.present();
 }
 
 }  // namespace vct

@@ -38,6 +38,8 @@ SurfacePoint interpolate_surface(const Scene& scene, uint32_t triangle, float b1
 /// Only the triangle, position and geometric normal of interpolate_surface (the same bits): what
 /// the path tracer needs of a point sampled on an untextured emitter.
 SurfacePoint interpolate_position(const Scene& scene, uint32_t triangle, float b1, float b2);
+/// Only the position of interpolate_surface (the same bits).
+vec3 interpolated_position(const Scene& scene, uint32_t triangle, float b1, float b2);
 
 /// A material's texture slots, in the order GL binds them (gl/shaders/surface.glsl).
 enum TextureSlot : int {
@@ -93,6 +95,14 @@ vec2 slot_uv(const TextureRef& ref, const SurfacePoint& p);
 /// SRGB8_ALPHA8.
 SurfaceMaterial evaluate_material(const Scene& scene, const SurfacePoint& p,
                                   const SlotLods& lods = {});
+
+/// What evaluate_material reads of its SlotLods, for callers that try many of them (the
+/// freedoms): nothing of it where the material has no texture (material_reads_lods false), and
+/// srgb_after_filter only where it has an sRGB one (base colour, emissive: GL 4.5 §8.24's decode
+/// order does nothing to a linear texture). Where one returns false, every value of what it names
+/// gives the same material, bit for bit, so trying one of them is trying them all.
+bool material_reads_lods(const Material& m);
+bool material_reads_srgb_order(const Material& m);
 
 /// Applies a tangent-space normal map value (already in [-1,1]^3, z reconstructed if needed).
 vec3 apply_normal_map(const vec3& normal, const vec4& tangent, vec3 tangent_space_normal, float scale);

@@ -31,7 +31,10 @@ GBuffer make_gbuffer(int w, int h) {
 GBufferSample evaluate_pixel(const Scene& scene, const mat4& view_proj, int w, int h, int x, int row, uint32_t tri,
                              const vec3& bary, float depth, bool front_facing) {
   const SurfacePoint sp = interpolate_surface(scene, tri, bary.y, bary.z);
-  const SurfaceMaterial m = pixel_material(scene, view_proj, w, h, x, row, tri, bary).material;
+  // Untextured: the material at sp itself (pixel_material_lods_if_read's, without interpolating again).
+  const SurfaceMaterial m = material_reads_lods(scene.materials[scene.triangle_material[tri]])
+                                ? pixel_material(scene, view_proj, w, h, x, row, tri, bary).material
+                                : evaluate_material(scene, sp);
   const vec3 n = front_facing ? m.shading_normal : -m.shading_normal;
   GBufferSample s;
   float* v = s.values;
@@ -71,6 +74,15 @@ PixelMaterial pixel_material(const Scene& scene, const mat4& view_proj, int widt
   p.lods = pixel_lods(scene, triangle, ScreenBarycentrics(scene, triangle, view_proj, width, height), x,
                       height - 1 - row);
   p.material = evaluate_material(scene, sp, p.lods.exact);
+  return p;
+}
+
+PixelMaterial pixel_material_lods_if_read(const Scene& scene, const mat4& view_proj, int width, int height, int x,
+                                          int row, uint32_t triangle, const vec3& bary) {
+  if (material_reads_lods(scene.materials[scene.triangle_material[triangle]]))
+    return pixel_material(scene, view_proj, width, height, x, row, triangle, bary);
+  PixelMaterial p;
+  p.material = evaluate_material(scene, interpolate_surface(scene, triangle, bary.y, bary.z));
   return p;
 }
 

@@ -33,6 +33,12 @@ struct PixelMaterial {
 PixelMaterial pixel_material(const Scene& scene, const mat4& view_proj, int width, int height, int x, int row,
                              uint32_t triangle, const vec3& bary);
 
+/// pixel_material, with the LODs computed only where the material reads them: an untextured
+/// material gets default lods (any lods give it, bit for bit: scene/surface.h, material_reads_lods).
+/// For callers that use the lods only through evaluate_material (the G-buffer, the texture slack).
+PixelMaterial pixel_material_lods_if_read(const Scene& scene, const mat4& view_proj, int width, int height, int x,
+                                          int row, uint32_t triangle, const vec3& bary);
+
 /// The material of a G-buffer pixel, as the BRDF sees it (direct light, soft shadows, their ties).
 SurfaceMaterial gbuffer_material(const GBuffer& g, int x, int y);
 

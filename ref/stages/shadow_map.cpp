@@ -75,54 +75,34 @@ float pcf_2d(const Image& depth, const vec3& ndc, float clip_w, const VctSetting
   const float u = (ndc.x * 0.5f + 0.5f) * float(w), v = (ndc.y * 0.5f + 0.5f) * float(h);
   const auto stored = [&](int tx, int ty) { return stored_depth(depth, tx, ty, settings.shadow_border); };
   const auto lit = [&](int tx, int ty) { return z <= stored(tx, ty) + settings.shadow_bias; };
-  const std::vector<vec2> taps = tap_positions(u, v, settings, w, clip_w);
   const bool filter_first = filters_depth_first(settings);
   float sum = 0.0f;
-  for (const vec2& t : taps)
+  const int taps = for_each_tap(u, v, settings, w, clip_w, [&](const vec2& t) {
     sum += filter_first ? filtered_tap_visibility(t, z, settings.shadow_bias, stored)
                         : tap_visibility(t, settings.shadow_compare, lit);
-  return sum / float(taps.size());
+  });
+  return sum / float(taps);
 }
 
 }  // namespace
-
-float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border) {
-  const int w = depth.width, h = depth.height;
-  const bool inside = tx >= 0 && ty >= 0 && tx < w && ty < h;
-  // CLAMP_TO_BORDER: the border colour's R is the depth a texel past the edge holds (GL 4.5
-  // sections 8.14.2, 8.23.1).
-  if (!inside && border != ShadowBorder::Clamp) return border == ShadowBorder::Lit ? 1.0f : 0.0f;
-  // Clamp to edge: a texel past the border reads the border texel.
-  return depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0);
-}
 
 // The tap positions of a lookup at texel coordinate (u, v): the pcf_kernel square at
 // u + i - (k-1)/2 (the arithmetic GL's lights.glsl repeats, so default taps floor identically),
 // or the engine's offsets (core/pcf_taps.h) in its unit and scale.
 std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings, int size, float clip_w) {
   std::vector<vec2> out;
-  if (settings.pcf_taps.empty()) {
-    const int k = std::max(1, settings.pcf_kernel);
-    const float half = 0.5f * float(k - 1);
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) out.emplace_back(u + float(i) - half, v + float(j) - half);
-    return out;
-  }
-  // Parsed once per thread and tap text: a lookup runs per fragment and per pixel.
+  for_each_tap(u, v, settings, size, clip_w, [&](const vec2& t) { out.push_back(t); });
+  return out;
+}
+
+const std::vector<vec2>& parsed_pcf_taps(const VctSettings& settings) {
   thread_local std::string parsed_text;
   thread_local std::vector<vec2> offsets;
   if (parsed_text != settings.pcf_taps) {
     offsets = parse_pcf_taps(settings.pcf_taps);
     parsed_text = settings.pcf_taps;
   }
-  const bool uv = settings.pcf_tap_unit == PcfTapUnit::Uv;
-  const bool inv_w = settings.pcf_tap_scale == PcfTapScale::InvW;
-  for (const vec2& o : offsets) {
-    vec2 t = uv ? o * float(size) : o;  // UV offsets: texture coordinates times the map's size
-    if (inv_w) t /= clip_w;            // added to clip xy before the divide: o / w after it
-    out.emplace_back(u + t.x, v + t.y);
-  }
-  return out;
+  return offsets;
 }
 
 double depth_quantum(ShadowDepthFormat format) {
@@ -292,17 +272,17 @@ float cube_shadow_visibility(const ShadowMap& map, const vec3& light_position, c
   };
   // The home face's clip w (its distance along the face's axis) scales taps declared per 1/w.
   const float clip_w = (map.cube_view_proj[size_t(home)] * vec4(world_pos, 1.0f)).w;
-  const std::vector<vec2> taps = tap_positions(st.x * float(size), st.y * float(size), settings, size, clip_w);
   float sum = 0.0f;
-  for (const vec2& t : taps) sum += tap_visibility(t, settings.shadow_compare, lit);
-  return sum / float(taps.size());
+  const int taps = for_each_tap(st.x * float(size), st.y * float(size), settings, size, clip_w,
+                                [&](const vec2& t) { sum += tap_visibility(t, settings.shadow_compare, lit); });
+  return sum / float(taps);
 }
 
 vec2 pcf_reach(const VctSettings& settings) {
   vec2 reach(0.0f);
   // At w = 1: with pcf_tap_scale = inv_w the normal offset is off (validate_settings).
-  for (const vec2& t : tap_positions(0.0f, 0.0f, settings, settings.shadow_map_size, 1.0f))
-    reach = glm::max(reach, glm::abs(t));
+  for_each_tap(0.0f, 0.0f, settings, settings.shadow_map_size, 1.0f,
+               [&](const vec2& t) { reach = glm::max(reach, glm::abs(t)); });
   return reach + (settings.shadow_compare == ShadowCompare::Nearest ? 0.5f : 1.0f);
 }
 

@@ -5,6 +5,7 @@
 // "Shadow maps").
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/settings.h"
@@ -65,10 +66,45 @@ int shadow_map_layers(const Scene& scene);
 /// `size`, and (pcf_tap_scale = inv_w) divided by the point's light-clip w `clip_w`.
 std::vector<vec2> tap_positions(float u, float v, const VctSettings& settings, int size, float clip_w);
 
+/// The engine's pcf_taps offsets parsed (core/pcf_taps.h), once per thread and tap text: a lookup
+/// runs per fragment and per pixel.
+const std::vector<vec2>& parsed_pcf_taps(const VctSettings& settings);
+
+/// Calls tap(t) for each of tap_positions(u, v, settings, size, clip_w) in its order and with its
+/// arithmetic, without building the vector (the lookups' hot loop); returns how many.
+template <typename Tap>
+int for_each_tap(float u, float v, const VctSettings& settings, int size, float clip_w, Tap&& tap) {
+  if (settings.pcf_taps.empty()) {
+    const int k = std::max(1, settings.pcf_kernel);
+    const float half = 0.5f * float(k - 1);
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < k; ++i) tap(vec2(u + float(i) - half, v + float(j) - half));
+    return k * k;
+  }
+  const std::vector<vec2>& offsets = parsed_pcf_taps(settings);
+  const bool uv = settings.pcf_tap_unit == PcfTapUnit::Uv;
+  const bool inv_w = settings.pcf_tap_scale == PcfTapScale::InvW;
+  for (const vec2& o : offsets) {
+    vec2 t = uv ? o * float(size) : o;  // UV offsets: texture coordinates times the map's size
+    if (inv_w) t /= clip_w;            // added to clip xy before the divide: o / w after it
+    tap(vec2(u + t.x, v + t.y));
+  }
+  return int(offsets.size());
+}
+
 /// The depth texel (tx, ty) (y up, may lie past the edge) of a 2D map holds: the edge texel's
 /// (shadow_border = clamp, GL CLAMP_TO_EDGE), or past the edge 1 (lit) or 0 (shadowed), GL
 /// CLAMP_TO_BORDER's border colour.
-float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border);
+/// (Inline: every PCF tap and every texel of the freedoms' range searches reads it.)
+inline float stored_depth(const Image& depth, int tx, int ty, ShadowBorder border) {
+  const int w = depth.width, h = depth.height;
+  const bool inside = tx >= 0 && ty >= 0 && tx < w && ty < h;
+  // CLAMP_TO_BORDER: the border colour's R is the depth a texel past the edge holds (GL 4.5
+  // sections 8.14.2, 8.23.1).
+  if (!inside && border != ShadowBorder::Clamp) return border == ShadowBorder::Lit ? 1.0f : 0.0f;
+  // Clamp to edge: a texel past the border reads the border texel.
+  return depth.at(std::clamp(tx, 0, w - 1), h - 1 - std::clamp(ty, 0, h - 1), 0);
+}
 
 /// PCF visibility in [0,1] (1 = lit) of a world point for one light: the mean over the taps --
 /// settings.pcf_kernel^2 at texel offsets (i - (k-1)/2), or the engine's settings.pcf_taps
