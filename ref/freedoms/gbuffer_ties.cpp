@@ -218,8 +218,11 @@ void widen_tie_ranges_by_alternatives(const Scene& scene, const mat4& view_proj,
     for (const VisibilityBuffer& tied : ties) widen_by(scene, view_proj, vb, tied, g);
   }
   // Every surface tied in depth with the reference's own front at the centre, not only the nearest
-  // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717).
-  for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, vb)) widen_by(scene, view_proj, vb, tied, g);
+  // one (a plane, its coplanar twin and a surface crossing both at one centre: hunt seed 2717), and
+  // every one some snap of its own vertices makes cover the centre (a sliver beside the front's
+  // edge: hunt seed 6, large class).
+  for (const VisibilityBuffer& tied : depth_tied_surfaces(scene, view_proj, vb, vec2(0.5f), SnapWorld::Possible))
+    widen_by(scene, view_proj, vb, tied, g);
   if (scene_has_alpha_test(scene)) widen_by_alpha_flips(scene, view_proj, vb, g);
 }
 

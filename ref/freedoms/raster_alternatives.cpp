@@ -37,6 +37,29 @@ void for_each_fragment_at(const BinnedTriangles& binned, int w, int h, vec2 samp
   });
 }
 
+// for_each_fragment_at with the coverage of snap world `world` (stages/raster.h SnapWorld): for
+// Possible, every sample some snap of the vertices by one step covers. Each snapped triangle lies
+// in its vertices' box grown by one step, so samples outside it are left out (the per-edge reach
+// alone would reach further: each edge may move that far, not all three at once).
+template <class Visit>
+void for_each_fragment_in_world(const BinnedTriangles& binned, int w, int h, vec2 sample, SnapWorld world,
+                                Visit&& visit) {
+  if (world == SnapWorld::Reference) return for_each_fragment_at(binned, w, h, sample, visit);
+  const std::vector<vec2> samples = {sample};
+  parallel_for(int64_t(binned.bands.size()), [&](int64_t band) {
+    const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
+    for (uint32_t ti : binned.bands[size_t(band)]) {
+      const RasterTriangle& t = binned.triangles[ti];
+      const int64_t xlo = std::min({t.x[0], t.x[1], t.x[2]}) - 1, xhi = std::max({t.x[0], t.x[1], t.x[2]}) + 1;
+      const int64_t ylo = std::min({t.y[0], t.y[1], t.y[2]}) - 1, yhi = std::max({t.y[0], t.y[1], t.y[2]}) + 1;
+      const auto covers = [&](const EdgeSetup& e, int64_t px, int64_t py) {
+        return px >= xlo && px <= xhi && py >= ylo && py <= yhi && covered_in_world(t, e, world, px, py);
+      };
+      rasterize_covering(t, samples, 0, w - 1, y0, y1, 1, covers, [&](const RasterFragment& f) { visit(ti, t, f); });
+    }
+  });
+}
+
 // Which alpha-tested fragments a front-most search keeps: every one a correct GL may keep (a
 // fragment the reference cuts away is skipped only where its test cannot flip), or only those no
 // correct GL discards (passing, and no flip).
@@ -123,7 +146,7 @@ void lower_ceiling(std::vector<double>& ceiling, size_t i, uint32_t ti, const Ra
 std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const BinnedTriangles& binned,
                                                  const std::vector<double>& margins,
                                                  const std::vector<double>& ceiling, const VisibilityBuffer& front,
-                                                 vec2 sample) {
+                                                 vec2 sample, SnapWorld candidates) {
   const int w = front.width, h = front.height;
   // Every other surface whose z - m reaches it: the first at a pixel into layer 0, any further one
   // (three surfaces or more tied at one pixel: rare) into its row's overflow. Bands own their rows,
@@ -136,7 +159,8 @@ std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const Binne
   std::vector<VisibilityBuffer> out(1, front);
   std::vector<uint8_t> has_first(front.depth.size(), 0);
   std::vector<std::vector<Extra>> overflow(static_cast<size_t>(h));
-  for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
+  for_each_fragment_in_world(binned, w, h, sample, candidates, [&](uint32_t ti, const RasterTriangle& t,
+                                                                   const RasterFragment& f) {
     if (discarded(scene, t, f)) return;
     const int row = h - 1 - f.y;
     const size_t i = front.index(f.x, row);
@@ -163,7 +187,7 @@ std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const Binne
 }  // namespace
 
 std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
-                                                  const VisibilityBuffer& front, vec2 sample) {
+                                                  const VisibilityBuffer& front, vec2 sample, SnapWorld candidates) {
   const int w = front.width, h = front.height;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   const std::vector<double> margins = depth_tie_margins(binned);
@@ -171,7 +195,7 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     if (!discarded(scene, t, f)) lower_ceiling(ceiling, front.index(f.x, h - 1 - f.y), ti, f, margins);
   });
-  return tied_below_ceiling(scene, binned, margins, ceiling, front, sample);
+  return tied_below_ceiling(scene, binned, margins, ceiling, front, sample, candidates);
 }
 
 VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_proj, int w, int h, vec2 sample,
@@ -188,7 +212,7 @@ VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_
     if (cut) return;
     store_fragment(vb, i, t, f);
   });
-  tied = tied_below_ceiling(scene, binned, margins, ceiling, vb, sample);
+  tied = tied_below_ceiling(scene, binned, margins, ceiling, vb, sample, SnapWorld::Reference);
   return vb;
 }
 

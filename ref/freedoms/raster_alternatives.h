@@ -53,8 +53,13 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 /// is taken at `sample` (pixel units from the pixel's corner; `front` rendered with the same
 /// sample), depths and barycentrics at the centre, as render_visibility; alpha-masked fragments are
 /// discarded.
+/// With `candidates` = Possible the candidates are every fragment some snap of its vertices makes
+/// cover the sample (the ceiling still from the reference's coverage): a sliver thinner than a
+/// snap step beside the front's edge may cover a centre no common shift of the sample puts inside
+/// it (hunt seed 6 of the large class, docs/compare.md "Raster alternatives", "A sliver's own snap").
 std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4& view_proj,
-                                                  const VisibilityBuffer& front, vec2 sample = vec2(0.5f));
+                                                  const VisibilityBuffer& front, vec2 sample = vec2(0.5f),
+                                                  SnapWorld candidates = SnapWorld::Reference);
 
 /// render_visibility(scene.positions, scene.triangles, view_proj, w, h, &scene, sample), returned,
 /// and depth_tied_surfaces of it at `sample`, into `tied`: the front surfaces and the depth ties'

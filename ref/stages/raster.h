@@ -90,8 +90,27 @@ EdgeSetup edge_setup(const RasterTriangle& t);
 
 /// How far a snap of each vertex by up to one subpixel step per axis may move edge i's function
 /// at (px, py): the signed area of (v_j', v_k', p) moves by at most s (|p - v_j|_1 + |p - v_k|_1)
-/// + 4 s^2 with s = 1 (stages/voxelize.h SnapWorld), for any p.
+/// + 4 s^2 with s = 1 (SnapWorld below), for any p.
 int64_t edge_snap_reach(const RasterTriangle& t, int i, int64_t px, int64_t py);
+
+/// Which samples count as covered: the reference's own snapped triangle's, or, for the judge's
+/// coverage ties (freedoms/coverage_ties.h, gbuffer_ties.h), those every snap of each vertex by up
+/// to one step covers (Certain) or some snap covers (Possible). A snap moves an edge function at
+/// sample p by at most s (|p - v_j|_1 + |p - v_k|_1) + 4 s^2 (edge_snap_reach), exact for any p, also
+/// beyond the edge's ends where a fragment is extrapolated.
+enum class SnapWorld { Reference, Certain, Possible };
+
+/// Whether `world` covers the sample at (px, py) (subpixel units) of triangle t with edges e.
+inline bool covered_in_world(const RasterTriangle& t, const EdgeSetup& e, SnapWorld world, int64_t px, int64_t py) {
+  for (int i = 0; i < 3; ++i) {
+    const int64_t v = e.a[i] * px + e.b[i] * py + e.c[i];
+    const bool in = world == SnapWorld::Reference ? v + e.bias[i] >= 0
+                    : world == SnapWorld::Certain ? v - edge_snap_reach(t, i, px, py) + e.bias[i] >= 0
+                                                  : v + edge_snap_reach(t, i, px, py) >= 0;
+    if (!in) return false;
+  }
+  return true;
+}
 
 /// Interpolates at the centre of pixel (x, y) (window coordinates), filling depth and bary.
 void interpolate_at_centre(const RasterTriangle& t, const EdgeSetup& e, int x, int y, RasterFragment& f);

@@ -14,6 +14,7 @@
 #include "core/settings.h"
 #include "core/volume.h"
 #include "scene/scene.h"
+#include "stages/raster.h"
 
 namespace vct {
 
@@ -65,13 +66,8 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples);
 enum class AlphaTest { Apply, Ignore };
 /// Same with the sample positions a driver reported (BackendFacts::sample_positions: pixel units,
 /// lower-left origin, y up) instead of the standard pattern: 1 to 32 positions.
-/// Which samples count as covered: the reference's own snapped triangle's, or, for the judge's
-/// coverage ties (freedoms/coverage_ties.h), those every snap of each vertex by up to one step
-/// covers (Certain) or some snap covers (Possible). A snap moves an edge function at sample p by
-/// at most s (|p - v_j|_1 + |p - v_k|_1) + 4 s^2 (s = one subpixel step; the signed area of
-/// (v_j', v_k', p) with each vertex moved by <= s per axis), exact for any p, also beyond the edge's
-/// ends where a fragment is extrapolated.
-enum class SnapWorld { Reference, Certain, Possible };
+/// Which samples count as covered (`world`, stages/raster.h SnapWorld): the reference's own, or for
+/// the judge's coverage ties (freedoms/coverage_ties.h) those every or some vertex snap covers.
 Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2>& sample_positions,
                                AlphaTest alpha = AlphaTest::Apply, SnapWorld world = SnapWorld::Reference);
 

@@ -20,18 +20,9 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, int msaa_samples) {
 
 namespace {
 
-// The sample test of `world` (voxelize.h SnapWorld).
+// The sample test of `world` (raster.h SnapWorld).
 auto sample_test(const RasterTriangle& t, SnapWorld world) {
-  return [&t, world](const EdgeSetup& e, int64_t px, int64_t py) {
-    for (int i = 0; i < 3; ++i) {
-      const int64_t v = e.a[i] * px + e.b[i] * py + e.c[i];
-      const bool in = world == SnapWorld::Reference ? v + e.bias[i] >= 0
-                      : world == SnapWorld::Certain ? v - edge_snap_reach(t, i, px, py) + e.bias[i] >= 0
-                                                    : v + edge_snap_reach(t, i, px, py) >= 0;
-      if (!in) return false;
-    }
-    return true;
-  };
+  return [&t, world](const EdgeSetup& e, int64_t px, int64_t py) { return covered_in_world(t, e, world, px, py); };
 }
 
 }  // namespace

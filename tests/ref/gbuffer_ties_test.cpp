@@ -222,6 +222,36 @@ TEST(RasterTies, FacesTiedInDepthAtAShiftedSampleAreBothAdmitted) {
   }
 }
 
+// A sliver's own snap (hunt seed 6, large class; docs/compare.md "A sliver's own snap"). Window
+// sub-pixel coordinates, all on the 2^-8 grid: a blue front triangle A B D and a red needle A B C
+// coplanar with it at z = -2, sharing the edge A = (1575, 296), B = (3879, 2596) (nearly 45
+// degrees). The needle's apex C = (3186, 1904) lies 0.14 step right of the edge (twice its area
+// 468 steps^2); the centre P = (2688, 1408) of pixel (10, window row 5) lies 0.66 step left of it,
+// inside the front triangle. Neither P nor any of its (+-1, +-1) step shifts is inside the needle
+// (the one shift that crosses the edge lands 0.75 step right of it, where the needle is 0.10 wide),
+// but moving C by (-1, +1) step turns the needle over the edge so that it covers P: a GL that
+// snaps C the other way shows the red needle there, tied in depth with the blue front. Checked by
+// brute force over the 3^6 one-step snaps of the three vertices.
+TEST(RasterTies, ASliverThatItsOwnSnapTurnsOverTheCentreIsAdmitted) {
+  Scene s = camera_scene();
+  const uint32_t blue = test::add_material(s, vec3(0.1f, 0.2f, 0.9f));
+  const uint32_t red = test::add_material(s, vec3(0.9f, 0.1f, 0.1f));
+  const auto at = [](float sx, float sy) {
+    return vec3((sx / 256.0f - 0.5f * kW) * pixel_world(2.0f), window_row_y(sy / 256.0f, 2.0f), -2.0f);
+  };
+  const vec3 a = at(1575, 296), b = at(3879, 2596), c = at(3186, 1904), d = at(300, 2900);
+  test::add_triangle(s, a, b, d, blue);  // counter-clockwise in the window: facing the camera
+  test::add_triangle(s, a, c, b, red);
+  const GBuffer g = render(s);
+  const int r_lo = channel(g.tie_range, "albedo.0.lo"), r_hi = channel(g.tie_range, "albedo.0.hi");
+  ASSERT_GE(r_lo, 0);
+  const int row = kH - 1 - 5;  // image rows run top down
+  ASSERT_FLOAT_EQ(g.albedo.at(10, row, 0), 0.1f);  // the reference shows the front triangle
+  EXPECT_FLOAT_EQ(g.tie_range.at(10, row, r_hi), 0.9f);  // and admits the needle
+  // A pixel centre well inside the front triangle, 2.8 pixels from the edge: blue only.
+  EXPECT_FLOAT_EQ(g.tie_range.at(6, row, r_hi), 0.1f);
+}
+
 TEST(RasterTies, NearlyEdgeOnTriangleAdmitsTheNegatedNormal) {
   Scene s = camera_scene();
   const uint32_t grey = test::add_material(s, vec3(0.5f));

@@ -1,4 +1,4 @@
-// The voxel raster's coverage under a per-vertex snap (stages/voxelize.h SnapWorld,
+// The voxel raster's coverage under a per-vertex snap (stages/raster.h SnapWorld,
 // stages/raster.h edge_snap_reach): every one of the 3^6 snaps of a triangle's vertices by -1, 0 or
 // +1 subpixel step per axis covers a sample the Certain world covers, and covers only samples the
 // Possible world covers; a sample on an edge (the top-left rule covers it) is not certain.
