@@ -4,6 +4,7 @@ shrunk to minimal regression cases.
 
     .venv/bin/python tools/scenegen/hunt.py --seeds 0-299 [--size-class small] [--vct build/bin/vct]
         [--out runs/hunt] [--save scenes/regressions] [--threads 2] [--no-shrink] [--budget 120]
+        [--time-limit SECONDS]
     .venv/bin/python tools/scenegen/hunt.py --write-only --seeds 5 --out DIR   # just the scene files
     .venv/bin/python tools/scenegen/hunt.py --summarize --out runs/hunt         # counts per verdict, stage
     .venv/bin/python tools/scenegen/hunt.py --rerun-saved [--save scenes/regressions]  # every saved case again
@@ -11,7 +12,8 @@ shrunk to minimal regression cases.
 Per seed: writes OUT/seed-N/scene.gltf and settings.json (everything validate needs: image size,
 grid, shadow map size, pt.spp 4 and the drawn settings), runs `vct validate --config settings.json --no-report`, and
 prints one line: seed, verdict (pass, warn, fail, refused = exit 2, no-gl = exit 3, crash = any
-other exit), first failing stage. A FAIL is shrunk while it still FAILs with the same first failing
+other exit, timeout = stopped after --time-limit seconds: a scene too slow to judge, reported, not
+a failure), first failing stage. A FAIL is shrunk while it still FAILs with the same first failing
 stage (digits in the stage name ignored: a light's index changes when lights are dropped) and saved
 as SAVE/seed-N-CLASS/ {scene.gltf, settings.json, case.json (seed, verdict line, first failing
 stage, its note, sizes before and after, "cause": to fill)}. Results: OUT/results.jsonl.
@@ -24,6 +26,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -60,12 +63,14 @@ def run_validate(args, folder):
     cmd = [args.vct, "validate", os.path.join(folder, "scene.gltf"), "--config", os.path.join(folder, "settings.json"),
            "--threads", str(args.threads), "--no-report", "--flip", "none", "--out", run]
     start = time.time()
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
-    result = {"rc": proc.returncode, "seconds": round(time.time() - start, 2), "first_failing": "", "note": "",
-              "line": ""}
-    result["line"] = verdict_line(proc.stdout)
-    kinds = {0: None, 1: "fail", 2: "refused", 3: "no-gl"}
-    result["verdict"] = kinds.get(proc.returncode, "crash")
+    rc, output = run_with_limit(cmd, args.time_limit)
+    result = {"rc": rc, "seconds": round(time.time() - start, 2), "first_failing": "", "note": "", "line": ""}
+    result["line"] = verdict_line(output)
+    kinds = {0: None, 1: "fail", 2: "refused", 3: "no-gl", None: "timeout"}
+    result["verdict"] = kinds.get(rc, "crash")
+    if rc is None:
+        result["line"] = "stopped after --time-limit %g s" % args.time_limit
+        return result
     try:
         verdicts = json.load(open(os.path.join(run, "run.json")))["verdicts"]
         result["first_failing"] = verdicts.get("first_failing", "")
@@ -78,6 +83,20 @@ def run_validate(args, folder):
     if not args.keep_runs:
         shutil.rmtree(run, ignore_errors=True)
     return result
+
+
+def run_with_limit(cmd, limit):
+    """(exit code, output) of cmd; (None, output so far) when it ran past `limit` seconds (0: no
+    limit), its whole process group (validate's GL runner too) then killed."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace",
+                            start_new_session=True)
+    try:
+        output, _ = proc.communicate(timeout=limit or None)
+        return proc.returncode, output
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        output, _ = proc.communicate()
+        return None, output
 
 
 def verdict_line(output):
@@ -185,6 +204,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--budget", type=int, default=120, help="validate runs per shrink")
     ap.add_argument("--no-shrink", action="store_true")
+    ap.add_argument("--time-limit", type=float, default=0,
+                    help="seconds per validate run; a longer one is stopped and recorded as timeout (0: none)")
     ap.add_argument("--keep-runs", action="store_true")
     ap.add_argument("--write-only", action="store_true", help="write the scenes, run nothing")
     ap.add_argument("--rerun-saved", action="store_true", help="validate every case in SAVE again, generate nothing")
