@@ -56,11 +56,7 @@ Scene quad(int slot) {
     refs[slot]->texture = 0;
     refs[slot]->transform.scale = vec2(7.0f, 1.0f);
   }
-  s.camera.position = vec3(0.0f);
-  s.camera.forward = vec3(0, 0, -1);
-  s.camera.yfov = 1.0f;
-  s.camera.znear = 0.5f;
-  s.camera.zfar = 10.0f;
+  test::front_camera(s, vec3(0.0f), 1.0f, 0.5f);
   s.volume = fit_volume(s.bounds);
   return s;
 }
