@@ -48,15 +48,23 @@ def load_renderdoc():
 def open_capture(rd, path):
     rd.InitialiseReplay(rd.GlobalEnvironment(), [])
     cap = rd.OpenCaptureFile()
-    result = cap.OpenFile(path, "", None)
-    if result != rd.ResultCode.Succeeded:
-        raise Failure(EXIT_BAD_INPUT, f"{path}: not a readable RenderDoc capture ({result.Message()})")
-    if cap.LocalReplaySupport() != rd.ReplaySupport.Supported:
-        raise Failure(EXIT_ENVIRONMENT, f"{path}: this machine cannot replay a {cap.DriverName()} capture")
-    result, controller = cap.OpenCapture(rd.ReplayOptions(), None)
-    if result != rd.ResultCode.Succeeded:
-        raise Failure(EXIT_ENVIRONMENT, f"{path}: replay failed ({result.Message()})")
-    return cap, controller
+    try:
+        result = cap.OpenFile(path, "", None)
+        if result != rd.ResultCode.Succeeded:
+            raise Failure(EXIT_BAD_INPUT, f"{path}: not a readable RenderDoc capture ({result.Message()})")
+        if cap.LocalReplaySupport() != rd.ReplaySupport.Supported:
+            raise Failure(EXIT_ENVIRONMENT, f"{path}: this machine cannot replay a {cap.DriverName()} capture")
+        result, controller = cap.OpenCapture(rd.ReplayOptions(), None)
+        if result != rd.ResultCode.Succeeded:
+            raise Failure(EXIT_ENVIRONMENT, f"{path}: replay failed ({result.Message()})")
+        return cap, controller
+    except Failure:
+        # Shut RenderDoc down before the interpreter's teardown does: a refused capture left both
+        # open, and once under a loaded test run (ctest -j2 beside a campaign) the process then
+        # aborted after its message (exit 134, reported as an environment error instead of exit 2).
+        cap.Shutdown()
+        rd.ShutdownReplay()
+        raise
 
 
 def resource_id(rd, controller, wanted):
