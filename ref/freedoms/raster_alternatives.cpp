@@ -38,9 +38,7 @@ void for_each_fragment_at(const BinnedTriangles& binned, int w, int h, vec2 samp
 }
 
 // for_each_fragment_at with the coverage of snap world `world` (stages/raster.h SnapWorld): for
-// Possible, every sample some snap of the vertices by one step covers. Each snapped triangle lies
-// in its vertices' box grown by one step, so samples outside it are left out (the per-edge reach
-// alone would reach further: each edge may move that far, not all three at once).
+// Possible, every sample some snap of the vertices by one step covers.
 template <class Visit>
 void for_each_fragment_in_world(const BinnedTriangles& binned, int w, int h, vec2 sample, SnapWorld world,
                                 Visit&& visit) {
@@ -50,11 +48,7 @@ void for_each_fragment_in_world(const BinnedTriangles& binned, int w, int h, vec
     const int y0 = int(band) * kRasterBandRows, y1 = std::min(h, y0 + kRasterBandRows) - 1;
     for (uint32_t ti : binned.bands[size_t(band)]) {
       const RasterTriangle& t = binned.triangles[ti];
-      const int64_t xlo = std::min({t.x[0], t.x[1], t.x[2]}) - 1, xhi = std::max({t.x[0], t.x[1], t.x[2]}) + 1;
-      const int64_t ylo = std::min({t.y[0], t.y[1], t.y[2]}) - 1, yhi = std::max({t.y[0], t.y[1], t.y[2]}) + 1;
-      const auto covers = [&](const EdgeSetup& e, int64_t px, int64_t py) {
-        return px >= xlo && px <= xhi && py >= ylo && py <= yhi && covered_in_world(t, e, world, px, py);
-      };
+      const auto covers = [&](const EdgeSetup& e, int64_t px, int64_t py) { return covered_in_world(t, e, world, px, py); };
       rasterize_covering(t, samples, 0, w - 1, y0, y1, 1, covers, [&](const RasterFragment& f) { visit(ti, t, f); });
     }
   });
