@@ -70,6 +70,8 @@ def run_validate(args, folder):
     result["verdict"] = kinds.get(rc, "crash")
     if rc is None:
         result["line"] = "stopped after --time-limit %g s" % args.time_limit
+        if not args.keep_runs:
+            shutil.rmtree(run, ignore_errors=True)  # a killed run's directory is incomplete
         return result
     try:
         verdicts = json.load(open(os.path.join(run, "run.json")))["verdicts"]
