@@ -326,6 +326,14 @@ TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
   }
 }
 
+// The half-masked card scenes below, 33 x 33 with every G-buffer freedom.
+GBuffer render_cards(Scene& s) {
+  s.volume = fit_volume(s.bounds);
+  VctSettings st;
+  st.width = st.height = 33;
+  return render_gbuffer_with_freedoms(s, st);
+}
+
 // A chain of two flips (hunt seed 524, scenes/regressions/seed-524-small: both faces of a masked
 // thin wall): a second card, the same texture, 0.1 behind the first. On the centre column both
 // cards' alpha is at the cutoff, so a correct GL may cut both and show the backdrop; the reference
@@ -334,10 +342,7 @@ TEST(RasterTies, AlphaTestAtTheCutoffAdmitsBothOutcomes) {
 TEST(RasterTies, AChainOfAlphaFlipsAdmitsTheFrontMostSurfaceNoGlDiscards) {
   Scene s = test::half_masked_card(true);
   test::add_card_quad(s, -0.1f, 1.0f, 0);
-  s.volume = fit_volume(s.bounds);
-  VctSettings st;
-  st.width = st.height = 33;
-  const GBuffer g = render_gbuffer_with_freedoms(s, st);
+  const GBuffer g = render_cards(s);
   const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
   const float card = g.albedo.at(24, 16, 0);
   ASSERT_LT(card, 0.5f);
@@ -362,10 +367,7 @@ TEST(RasterTies, EveryFlipOfAChainOfThreeIsAdmitted) {
   white.base_color_texture.texture = int(s.textures.size() - 1);
   s.materials.push_back(white);
   test::add_card_quad(s, -0.2f, 1.0f, uint32_t(s.materials.size() - 1));
-  s.volume = fit_volume(s.bounds);
-  VctSettings st;
-  st.width = st.height = 33;
-  const GBuffer g = render_gbuffer_with_freedoms(s, st);
+  const GBuffer g = render_cards(s);
   const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
   const float card = g.albedo.at(24, 16, 0);
   ASSERT_LT(card, 0.5f);
