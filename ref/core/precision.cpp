@@ -29,6 +29,15 @@ constexpr std::array<PrecisionRow, kPrecisionCount> kRows = {{
      "GL 4.5 §14.6.1 eq. 14.10 (the arithmetic is not fixed); IEEE single precision (llvmpipe's set-up)",
      "every depth_tie_margin: light-space alternatives (shadow_map.N, shadow_map_cube.M), the G-buffer's depth ties",
      "PlaneSetup.FloatSetUpFromEveryVertexStaysInsideTheBound, PlaneSetup.TheClippedSliverOfSeed2463 (shadow_map.0)"},
+    {P::DepthPlaneSnap, "depth-plane-snap",
+     "the depth plane through window vertices a snap moved, at a centre the snapped coverage admits", 0x1p-8,
+     "2^-8 (|dz/dx| + |dz/dy|) times 1 + 4 sum r_i / (A - R) (r_i each edge's reach over the vertices' box, R = P + 8 "
+     "what a snap may change the area A by); any depth in [0, 1] where A <= R (a snap may close the triangle)",
+     "GL 4.5 §14.6.1 eq. 14.10 (barycentrics from window vertices whose rounding is not fixed; llvmpipe "
+     "interpolates through the unsnapped positions, covers through the snapped ones)",
+     "every depth_tie_margin: light-space alternatives (shadow_map.N, shadow_map_cube.M), the G-buffer's depth ties",
+     "PlaneSnap.EveryPlaneThroughVerticesOneStepOffStaysInsideTheMarginAtEveryCentreASnapCovers, "
+     "PlaneSnap.TheSliverOfLargeSeed14HasNoPlane, scenes/regressions/seed-14-large (gbuffer.depth)"},
     {P::DepthUnorm, "depth-unorm", "window depth stored as b-bit UNORM (depth24, depth16)", 2.0,
      "2q, q = 1/(2^b - 1): the engine takes either integer neighbour, the reference the nearest",
      "GL 4.5 §2.3.5.2", "light-space depth stages under a declared shadow_depth_format (depth_quantum_of)",

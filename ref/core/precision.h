@@ -18,6 +18,7 @@ enum class Precision : uint8_t {
   SubpixelSnap,
   DepthInterpolation,
   DepthPlaneSetup,
+  DepthPlaneSnap,
   DepthUnorm,
   AttributeInterpolation,
   AttributeExtrapolation,

@@ -7,6 +7,7 @@
 
 #include "freedoms/fragment_slack.h"
 #include "freedoms/voxel_alpha_ties.h"
+#include "stages/reduction.h"
 #include "stages/raster.h"
 
 namespace vct {
@@ -205,6 +206,11 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
   extra.fragments = vox.may_add;
   const std::vector<vec3> extra_values = fragment_radiance(scene, extra, maps, settings, bounce);
   const std::vector<float> extra_slack = fragment_shading_slack(scene, extra, maps, settings, bounce);
+  // Each fragment enters the reduction as reduction_input (clamped by the fixed-point and CAS
+  // schemes), and so does each end of its interval (the clamp is monotone): the mean of the raw
+  // values is not the reference's stored value where a fragment's light is negative (large hunt
+  // seed 25: an extrapolated vertex colour, green -0.70, stored as 0).
+  const auto input = [&](double v) { return double(reduction_input(float(v), settings.reduction)); };
   for_each_uncertain_voxel(vox, [&](const VoxelRuns& r) {
     double widest = 0.0;
     for (int c = 0; c < 3; ++c) {
@@ -212,14 +218,14 @@ void widen_for_coverage_ties(const Scene& scene, const Voxelization& vox, const 
       double mean = 0.0;  // a voxel only extra fragments reach holds no light in the reference
       for (size_t k = r.begin; k < r.end; ++k) {
         const double v = double(values[k][c]), s = double(fragment_slack[k]);
-        mean += v;
-        (vox.may_drop[k] ? ulo : clo).push_back(v - s);
-        (vox.may_drop[k] ? uhi : chi).push_back(v + s);
+        mean += input(v);
+        (vox.may_drop[k] ? ulo : clo).push_back(input(v - s));
+        (vox.may_drop[k] ? uhi : chi).push_back(input(v + s));
       }
       if (r.end > r.begin) mean /= double(r.end - r.begin);
       for (size_t k = r.extra_begin; k < r.extra_end; ++k) {
-        ulo.push_back(double(extra_values[k][c]) - double(extra_slack[k]));
-        uhi.push_back(double(extra_values[k][c]) + double(extra_slack[k]));
+        ulo.push_back(input(double(extra_values[k][c]) - double(extra_slack[k])));
+        uhi.push_back(input(double(extra_values[k][c]) + double(extra_slack[k])));
       }
       const MeanRange m = admissible_mean_range(clo, chi, std::move(ulo), std::move(uhi));
       widest = std::max({widest, m.hi - mean, mean - m.lo});

@@ -30,6 +30,13 @@ namespace {
 
 float largest_channel(const vec3& d) { return std::max(d.x, std::max(d.y, d.z)); }
 
+// A fragment's light may be negative: a vertex colour extrapolated beyond its triangle (an MSAA
+// sample covered, the centre outside: GL 4.5 §14.9.3) can turn its base colour negative, and
+// then more light means a lower value (large hunt seed 24: COLOR_0 at barycentrics (1.11, -2.76,
+// 2.64), red -2.3). A light's size, its unshadowed light or a change of it, is therefore its
+// largest magnitude, not its largest signed channel.
+float largest_magnitude(const vec3& d) { return largest_channel(glm::abs(d)); }
+
 /// A fragment's triangle in its dominant-axis window (voxel units) and how far the snap may move
 /// the fragment there. GL interpolates at the pixel centre c with the barycentrics l' of c in the
 /// *snapped* triangle, so the attributes are those of the original triangle's point
@@ -260,8 +267,8 @@ float material_slack(const Scene& scene, const VoxelFragment& f, const MaterialG
   return slack;
 }
 
-/// How far the material freedoms may raise one light's unshadowed light above `exact`'s: each
-/// group's largest rise (signed cosine), summed.
+/// How far the material freedoms may move one light's unshadowed light from `exact`'s: each
+/// group's largest change (signed cosine; its magnitude, as the light may be negative), summed.
 float unshadowed_rise(const Light& light, const VctSettings& settings, const vec3& position, const SurfaceMaterial& exact,
                       const MaterialGroups& groups) {
   const vec3 base = unshadowed_light(light, settings, position, exact);
@@ -269,7 +276,7 @@ float unshadowed_rise(const Light& light, const VctSettings& settings, const vec
   for (const std::vector<SurfaceMaterial>& g : groups) {
     float largest = 0.0f;
     for (const SurfaceMaterial& m : g)
-      largest = std::max(largest, largest_channel(unshadowed_light(light, settings, position, m) - base));
+      largest = std::max(largest, largest_magnitude(unshadowed_light(light, settings, position, m) - base));
     rise += largest;
   }
   return rise;
@@ -347,7 +354,7 @@ float shadow_snap_slack(const Scene& scene, const SnapWindow& w, const VoxelFrag
     float open = 0.0f;
     for (const ShiftedSurface& s : shifted) {
       const vec3 lit = unshadowed_light(light, settings, s.point.position, s.material);
-      open = std::max(open, largest_channel(glm::max(lit, vec3(0.0f))));
+      open = std::max(open, largest_magnitude(lit));
     }
     open += unshadowed_rise(light, settings, f.position, m, groups);
     if (open <= 0.0f) continue;
@@ -376,7 +383,7 @@ float linear_compare_slack(const Scene& scene, const VoxelFragment& f, const Slo
   const SurfaceMaterial m = evaluate_material(scene, interpolate_surface(scene, f.triangle, f.b1, f.b2), lods);
   // No maps: every light unshadowed; no emission or bounce (no shadow lookup moves them).
   const vec3 open = diffuse_outgoing_radiance(scene, {}, settings, f.position, m.shading_normal, m.albedo);
-  return kLinearCompareWeightStep * largest_channel(open);
+  return kLinearCompareWeightStep * largest_magnitude(open);
 }
 
 /// A hard spot whose edge passes within float rounding of the fragment (direct_ties.h,
@@ -389,7 +396,7 @@ float hard_spot_slack(const Scene& scene, const VoxelFragment& f, const SlotLods
     const LightSample ls = hard_spot_lit_sample(light, settings.light_model, f.position);
     const float n_dot_l = glm::dot(m.shading_normal, ls.l);
     if (ls.irradiance == vec3(0.0f) || n_dot_l <= 0.0f) continue;
-    slack += largest_channel(m.albedo * ls.irradiance * n_dot_l * kInvPi);
+    slack += largest_magnitude(m.albedo * ls.irradiance * n_dot_l * kInvPi);
   }
   return slack;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/parallel.h"
 #include "freedoms/alpha_ties.h"
@@ -88,7 +89,44 @@ VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj,
   return front_most(scene, view_proj, w, h, AlphaKeep::SurelyPasses);
 }
 
+// How far beyond the plane's own slope a correct GL's interpolation may reach at a centre its
+// coverage admits (docs/compare.md, "Raster alternatives", "A plane a snap may fold"). GL's
+// interpolation triangle (eq. 14.10 takes barycentrics from the window vertices, whose rounding
+// GL 4.5 §14.6.1 leaves open: llvmpipe sets its planes up from the unsnapped positions, its
+// coverage from the snapped ones) has its vertices within one step of ours, v_i' = v_i + d_i. The
+// reference plane z evaluated at v_i' is z_i + grad z . d_i, so GL's plane is z plus the plane
+// through (v_i', -grad z . d_i): z'(c) - z(c) = -sum l_i'(c) grad z . d_i, l_i' the barycentrics of
+// c in GL's triangle, and |z' - z| <= (|dz/dx| + |dz/dy|) sum |l_i'(c)| per step. Inside GL's
+// triangle sum |l_i'| = 1 (the slope term alone); outside it (a centre the snapped coverage admits
+// beyond the unsnapped edges) sum |l_i'| = 1 + 2 sum max(0, -e_i') / A'. Each edge function moves by
+// at most its reach r_i (edge_snap_reach) and the area by at most R = P + 8 (facing_may_flip), and
+// a centre any snap covers has e_i >= -r_i, so -e_i' <= 2 r_i and the factor is at most
+// 1 + 4 sum r_i / (A - R), r_i at its largest over the vertices' box grown by one step (every such
+// centre lies in it; an L1 distance is largest at a corner). Where A <= R a snap may close the
+// triangle: GL's plane may be any plane, its depth anywhere in [0, 1] (infinity here).
+double depth_plane_extrapolation_factor(const RasterTriangle& t) {
+  int64_t perimeter = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    perimeter += std::abs(t.x[j] - t.x[i]) + std::abs(t.y[j] - t.y[i]);
+  }
+  const int64_t area_reach = perimeter + 8;
+  if (t.area2 <= area_reach) return std::numeric_limits<double>::infinity();
+  const int64_t x0 = std::min({t.x[0], t.x[1], t.x[2]}) - 1, x1 = std::max({t.x[0], t.x[1], t.x[2]}) + 1;
+  const int64_t y0 = std::min({t.y[0], t.y[1], t.y[2]}) - 1, y1 = std::max({t.y[0], t.y[1], t.y[2]}) + 1;
+  double reach_sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    int64_t worst = 0;
+    for (int64_t px : {x0, x1})
+      for (int64_t py : {y0, y1}) worst = std::max(worst, edge_snap_reach(t, i, px, py));
+    reach_sum += double(worst);
+  }
+  return 1.0 + 4.0 * reach_sum / double(t.area2 - area_reach);
+}
+
 double depth_tie_margin(const RasterTriangle& t) {
+  const double factor = depth_plane_extrapolation_factor(t);
+  if (std::isinf(factor)) return 1.0;  // any window depth (GL clamps to [0, 1])
   const EdgeSetup e = edge_setup(t);
   double dzdx = 0.0, dzdy = 0.0;  // per sub-pixel step
   for (int i = 0; i < 3; ++i) {
@@ -98,7 +136,7 @@ double depth_tie_margin(const RasterTriangle& t) {
   // The evaluation's own roundings: 2^-22 from the barycentric form, or the plane equation's set-up
   // and evaluation in float (plane_setup.h; two more roundings for the reference's own value).
   const double arithmetic = std::max(std::ldexp(1.0, -22), plane_setup_margin(t) + 2.0 * kFloatRoundoff);
-  return arithmetic + (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
+  return arithmetic + factor * (std::abs(dzdx) + std::abs(dzdy)) / double(t.area2);
 }
 
 VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const VisibilityBuffer& front) {

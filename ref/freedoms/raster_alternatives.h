@@ -31,8 +31,15 @@ inline void shifted_sample_steps(int k, int64_t& sx, int64_t& sy) {
 /// for the float evaluation b0 z0 + b1 z1 + b2 z2 and its storage as D32F (three roundings of
 /// values below 1, each at most half an ulp of 1, 2^-24, with room to spare) -- or, where larger,
 /// what a plane equation set up and evaluated in single precision may be off by
-/// (plane_setup_margin: a few roundings on ordinary triangles, large on slivers only).
+/// (plane_setup_margin: a few roundings on ordinary triangles, large on slivers only). The slope
+/// term carries depth_plane_extrapolation_factor; where that is infinite the margin is 1 (any
+/// depth).
 double depth_tie_margin(const RasterTriangle& t);
+
+/// The factor on depth_tie_margin's slope term: how far a plane through vertices one step off may
+/// be extrapolated at a centre some snap covers, 1 + 4 sum r_i / (A - R) (the derivation is at the
+/// definition); infinity where a snap may close the triangle (A <= R: its plane is any plane).
+double depth_plane_extrapolation_factor(const RasterTriangle& t);
 
 /// Per pixel, the surface behind `front`'s: the fragment of another source triangle with the
 /// smallest depth (triangle -1: none). Alpha-masked fragments are discarded. Rasterized as

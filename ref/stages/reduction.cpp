@@ -24,6 +24,15 @@ float fixed_point_mean(const std::vector<float>& values) {
   return sh::fixed_point_resolve(sum, uint32_t(values.size()));
 }
 
+float reduction_input(float v, Reduction r) {
+  switch (r) {
+    case Reduction::FixedPoint: return std::min(std::max(v, 0.0f), sh::FIXED_POINT_MAX);
+    case Reduction::CasRgba8: return std::clamp(v, 0.0f, 1.0f);
+    case Reduction::ExactMean:
+    default: return v;
+  }
+}
+
 namespace {
 
 float cas_input(float v) { return std::clamp(v, 0.0f, 1.0f) * 255.0f; }

@@ -21,6 +21,13 @@ float exact_mean(std::vector<float> values);
 /// fixed_point_encode with wrap-around, then fixed_point_resolve.
 float fixed_point_mean(const std::vector<float>& values);
 
+/// What one fragment's channel value v contributes to the reduction `r`: the fixed-point scheme
+/// encodes min(max(v, 0), FIXED_POINT_MAX) (shared/voxel_fixed_point.h), the CAS loop
+/// clamp(v, 0, 1), the exact mean v itself. Monotone, so an interval [lo, hi] of a fragment's value
+/// maps to [reduction_input(lo), reduction_input(hi)]: a fragment whose extrapolated vertex colour
+/// turns its light negative adds 0 (large hunt seed 25, docs/compare.md "Campaign 6").
+float reduction_input(float v, Reduction r);
+
 /// One step of the OpenGL Insights ch. 22 running average on one 8-bit channel, in the GPU's units
 /// (stored s in 0..255 with count c already averaged; new value x = clamp(v,0,1)*255 as float):
 /// s' = uint((float(s)*float(c) + x) / float(c+1)).

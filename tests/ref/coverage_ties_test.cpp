@@ -15,6 +15,8 @@
 #include "stage_test_scene.h"
 #include "stages/inject.h"
 #include "stages/raster.h"
+#include "stages/reduction.h"
+#include "stages/shadow_map.h"
 #include "stages/voxel_fill.h"
 #include "stages/voxelize.h"
 
@@ -376,6 +378,50 @@ TEST(CoverageTies, ConservativeBoxesTouchedWithinTheArithmeticAreTies) {
       EXPECT_TRUE(has(vox.fragments, &vox.may_drop, {2, 2, 2}));
     }
   }
+}
+
+
+// scenes/regressions/seed-25-large: at voxel (52, 66, 74) an extrapolated fragment's COLOR_0 turns
+// its green light negative, and the fixed-point reduction encodes it as 0 (stages/reduction.h
+// reduction_input). GL may also write a fragment the coverage ties add there (llvmpipe did). The
+// mean of the reduction's inputs with every added fragment written lies inside the slack around
+// the reference's own mean of them (the raw values' mean, 0.25 lower in green, left it outside).
+TEST(CoverageTies, ANegativeFragmentEntersTheMeanAsTheReductionTakesIt) {
+  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-25-large/scene.gltf");
+  VctSettings settings;
+  settings.grid = 128;
+  settings.shadow_map_size = 256;
+  settings.reduction = Reduction::FixedPoint;  // what the GL build reduces with
+  const Voxelization vox = voxelization_with_ties(s, settings.grid);
+  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
+  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
+  Voxelization extra;
+  extra.n = vox.n;
+  extra.fragments = vox.may_add;
+  const std::vector<vec3> extra_values = fragment_radiance(s, extra, maps, settings);
+  Volume slack(vox.n, vox.n, vox.n, 1), exact(vox.n, vox.n, vox.n, 1);
+  widen_for_coverage_ties(s, vox, values, std::vector<float>(vox.fragments.size(), 0.0f), maps, settings, nullptr,
+                          slack, exact);
+  const ivec3 v(52, 66, 74);
+  const auto input = [&](float x) { return double(reduction_input(x, settings.reduction)); };
+  bool negative = false;
+  for (int c = 0; c < 3; ++c) {
+    double own = 0.0, all = 0.0;
+    size_t n_own = 0, n_all = 0;
+    for (size_t i = 0; i < vox.fragments.size(); ++i)
+      if (vox.fragments[i].voxel == v) own += input(values[i][c]), all += input(values[i][c]), ++n_own, ++n_all;
+    for (size_t i = 0; i < vox.fragments.size(); ++i) negative = negative || (vox.fragments[i].voxel == v && values[i][c] < 0.0f);
+    for (size_t i = 0; i < extra.fragments.size(); ++i)
+      if (extra.fragments[i].voxel == v) all += input(extra_values[i][c]), ++n_all;
+    ASSERT_GT(n_own, 0u);
+    ASSERT_GT(n_all, n_own);  // a fragment GL may add
+    EXPECT_LE(std::abs(all / double(n_all) - own / double(n_own)), double(*slack.voxel(v.x, v.y, v.z))) << "channel " << c;
+  }
+  EXPECT_TRUE(negative);  // the case the reduction's clamp decides
+  EXPECT_EQ(reduction_input(-0.7f, Reduction::FixedPoint), 0.0f);
+  EXPECT_EQ(reduction_input(2000.0f, Reduction::FixedPoint), 1024.0f);
+  EXPECT_EQ(reduction_input(1.5f, Reduction::CasRgba8), 1.0f);
+  EXPECT_EQ(reduction_input(-0.7f, Reduction::ExactMean), -0.7f);
 }
 
 }  // namespace

@@ -109,10 +109,10 @@ TEST(PlaneSetup, TheClippedSliverOfSeed2463) {
   // near plane; its clipped piece (two near-plane vertices 10 steps apart, the third 120 pixels
   // away) covers texel (386, row 363) of the 512^2 map, where Mesa llvmpipe stored 0.2732239, the
   // reference 0.2730981: 1.26e-4 above, four times the snap margin 3.0e-5 and above every one-step
-  // per-vertex snap of the sliver (0.2731279 at most).
+  // per-vertex snap of the sliver on the integer grid (0.2731279 at most).
   const RasterTriangle sliver = triangle(109693, 29184, 0.0, 109703, 29186, 0.0, 86158, 48512, 0.59770828);
-  const double snap = depth_tie_margin(sliver) - plane_setup_margin(sliver) - 2.0 * kFloatRoundoff;
-  EXPECT_LT(snap, 1.26e-4);
+  // The set-up's bound alone reaches llvmpipe's value. (So, since session 19, does the plane through
+  // vertices one step off, extrapolated beyond the unsnapped edges: tests/ref/plane_snap_test.cpp.)
   EXPECT_GT(plane_setup_margin(sliver), 1.26e-4);
   const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-2463-small/scene.gltf");
   VctSettings settings;

@@ -7,6 +7,7 @@
 #include "alpha_card_scene.h"
 #include "scene/gltf_loader.h"
 #include "freedoms/plane_setup.h"
+#include "freedoms/raster_alternatives.h"
 #include "freedoms/shadow_map_ties.h"
 #include "stage_test_scene.h"
 #include "stages/shadow_map.h"
@@ -62,15 +63,21 @@ TEST(ShadowMapTies, SlopedPlaneSpansItsOwnMarginOfOneStepPerAxis) {
   Scene s;
   const uint32_t grey = test::add_material(s, vec3(0.5f));
   // z = -3 - 0.1 x: window depth 0.2 + 0.01 x, 0.01 per texel along x, none along y; one
-  // sub-texel step on each axis moves it by 2^-8 * 0.01 (depth_tie_margin), plus the arithmetic:
-  // 2^-22, or the plane's float set-up where larger (plane_setup.h; a few 2^-24 here).
+  // sub-texel step on each axis moves it by 2^-8 * 0.01 (depth_tie_margin), times the plane's
+  // extrapolation factor, plus the arithmetic: 2^-22, or the plane's float set-up where larger
+  // (plane_setup.h; a few 2^-24 here).
   test::add_quad(s, {-9, -9, -2.1f}, {9, -9, -3.9f}, {9, 9, -3.9f}, {-9, 9, -2.1f}, {0, 0, 1}, grey);
   const Image r = shadow_depth_range(s, light_view_proj(), kSize, ShadowDepthFormat::Depth32f);
   double setup = 0.0;
-  for (const RasterTriangle& t : setup_and_bin(s.positions, s.triangles, light_view_proj(), kSize, kSize).triangles)
+  for (const RasterTriangle& t : setup_and_bin(s.positions, s.triangles, light_view_proj(), kSize, kSize).triangles) {
     setup = std::max(setup, plane_setup_margin(t));
+    // Both halves: legs L = 18 texels = 4608 steps, A = L^2, R = 2L + 2L + 8 (perimeter + 8); the
+    // reaches over the box grown by a step are 3L + 8 (each leg) and 2L + 8 (the diagonal), so the
+    // factor is 1 + 4 (8L + 24) / (L^2 - 4L - 8) = 1.0069551.
+    EXPECT_NEAR(depth_plane_extrapolation_factor(t), 1.0069551, 1e-7);
+  }
   ASSERT_LT(setup, 2e-6);
-  const double m = std::max(std::ldexp(1.0, -22), setup + 2.0 * kFloatRoundoff) + 0.01 / 256.0;
+  const double m = std::max(std::ldexp(1.0, -22), setup + 2.0 * kFloatRoundoff) + 1.0069551 * 0.01 / 256.0;
   for (int row = 1; row < kSize - 1; row += 3)
     for (int x = 1; x < kSize - 1; x += 2) {
       const double z = 0.2 + 0.01 * (double(x) - 7.5);
@@ -171,9 +178,10 @@ TEST(ShadowMapTies, AnAlphaFlipsPlaneCarriesItsSnapMargin) {
   const Image r = shadow_depth_range(s, maps[0].view_proj, 64, ShadowDepthFormat::Depth32f);
   EXPECT_LE(lo_of(r, 19, 17), 0.57960f);
   // A margin, not the whole map: 2^-8 (|dz/dx| + |dz/dy|) per step of a plane that tilts 0.037 in
-  // depth across a 0.1-texel width is 2.1e-3 here, and the same sliver's float plane set-up
-  // (plane_setup.h) about as much again.
-  EXPECT_GE(lo_of(r, 19, 17), 0.5745f);
+  // depth across a 0.1-texel width is 2.1e-3 here, about twice that with the sliver's extrapolation
+  // factor (tests/ref/plane_snap_test.cpp), and the same sliver's float plane set-up (plane_setup.h)
+  // about 2.1e-3 again: 6.4e-3 below the plane's value.
+  EXPECT_GE(lo_of(r, 19, 17), 0.5730f);
   EXPECT_EQ(hi_of(r, 19, 17), 1.0f);     // the reference's own (cut: the clear value)
 }
 
