@@ -7,8 +7,8 @@
 
 #include "freedoms/fragment_slack.h"
 #include "freedoms/voxel_alpha_ties.h"
-#include "stages/reduction.h"
 #include "stages/raster.h"
+#include "stages/reduction.h"
 
 namespace vct {
 

@@ -99,18 +99,13 @@ VisibilityBuffer front_certainly_kept(const Scene& scene, const mat4& view_proj,
 // c in GL's triangle, and |z' - z| <= (|dz/dx| + |dz/dy|) sum |l_i'(c)| per step. Inside GL's
 // triangle sum |l_i'| = 1 (the slope term alone); outside it (a centre the snapped coverage admits
 // beyond the unsnapped edges) sum |l_i'| = 1 + 2 sum max(0, -e_i') / A'. Each edge function moves by
-// at most its reach r_i (edge_snap_reach) and the area by at most R = P + 8 (facing_may_flip), and
+// at most its reach r_i (edge_snap_reach) and the area by at most R = P + 8 (area_snap_reach), and
 // a centre any snap covers has e_i >= -r_i, so -e_i' <= 2 r_i and the factor is at most
 // 1 + 4 sum r_i / (A - R), r_i at its largest over the vertices' box grown by one step (every such
 // centre lies in it; an L1 distance is largest at a corner). Where A <= R a snap may close the
 // triangle: GL's plane may be any plane, its depth anywhere in [0, 1] (infinity here).
 double depth_plane_extrapolation_factor(const RasterTriangle& t) {
-  int64_t perimeter = 0;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    perimeter += std::abs(t.x[j] - t.x[i]) + std::abs(t.y[j] - t.y[i]);
-  }
-  const int64_t area_reach = perimeter + 8;
+  const int64_t area_reach = area_snap_reach(t.x, t.y);
   if (t.area2 <= area_reach) return std::numeric_limits<double>::infinity();
   const int64_t x0 = std::min({t.x[0], t.x[1], t.x[2]}) - 1, x1 = std::max({t.x[0], t.x[1], t.x[2]}) + 1;
   const int64_t y0 = std::min({t.y[0], t.y[1], t.y[2]}) - 1, y1 = std::max({t.y[0], t.y[1], t.y[2]}) + 1;

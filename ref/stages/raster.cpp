@@ -102,13 +102,17 @@ void emit_triangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
 
 }  // namespace
 
-bool facing_may_flip(const int64_t x[3], const int64_t y[3], int64_t area2) {
+int64_t area_snap_reach(const int64_t x[3], const int64_t y[3]) {
   int64_t perimeter = 0;  // L1 length of the three edges, in sub-pixel steps
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     perimeter += std::abs(x[j] - x[i]) + std::abs(y[j] - y[i]);
   }
-  return std::abs(area2) <= perimeter + 8;
+  return perimeter + 8;
+}
+
+bool facing_may_flip(const int64_t x[3], const int64_t y[3], int64_t area2) {
+  return std::abs(area2) <= area_snap_reach(x, y);
 }
 
 const std::vector<vec2>& standard_sample_positions(int samples) {

@@ -77,6 +77,10 @@ const std::vector<vec2>& standard_sample_positions(int samples);
 /// each), so the sign may flip iff |area2| <= P + 8 (docs/compare.md, "Raster alternatives").
 bool facing_may_flip(const int64_t x[3], const int64_t y[3], int64_t area2);
 
+/// How far moving each snapped coordinate by at most one step may change area2: P + 8, P the
+/// edges' L1 lengths (facing_may_flip's bound, above).
+int64_t area_snap_reach(const int64_t x[3], const int64_t y[3]);
+
 /// Clips the clip-space triangle, projects it into a width x height viewport and appends the
 /// resulting triangles (0 if culled/degenerate, more than 1 if clipping split it) to `out`.
 void setup_triangle(const vec4 clip[3], int width, int height, uint32_t source, std::vector<RasterTriangle>& out);
