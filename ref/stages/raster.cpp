@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/parallel.h"
+#include "core/parallel_gather.h"
 #include "scene/alpha_mask.h"
 
 namespace vct {
@@ -212,17 +213,14 @@ bool sample_row_span(const EdgeSetup& e, int y, int64_t sx, int64_t sy, int& x0,
 
 BinnedTriangles setup_and_bin(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
                               const mat4& view_proj, int width, int height) {
-  // Set-up per source triangle (parallel, each writes its own slot), then flatten in index order.
-  std::vector<std::vector<RasterTriangle>> per_tri(triangles.size());
-  parallel_for(int64_t(triangles.size()), [&](int64_t i) {
+  // Set-up per source triangle in parallel, gathered in index order.
+  BinnedTriangles b;
+  b.triangles = parallel_gather<RasterTriangle>(int64_t(triangles.size()), [&](int64_t i, std::vector<RasterTriangle>& out) {
     const uvec3 tri = triangles[size_t(i)];
     const vec4 clip[3] = {view_proj * vec4(positions[tri.x], 1.0f), view_proj * vec4(positions[tri.y], 1.0f),
                           view_proj * vec4(positions[tri.z], 1.0f)};
-    setup_triangle(clip, width, height, uint32_t(i), per_tri[size_t(i)]);
+    setup_triangle(clip, width, height, uint32_t(i), out);
   });
-  BinnedTriangles b;
-  for (auto& v : per_tri) b.triangles.insert(b.triangles.end(), v.begin(), v.end());
-  per_tri.clear();
 
   b.bands.resize(size_t((height + kRasterBandRows - 1) / kRasterBandRows));
   for (size_t i = 0; i < b.triangles.size(); ++i) {

@@ -97,16 +97,10 @@ glm::dvec2 closest_point_barycentrics(const glm::dvec3 tri[3], const glm::dvec3&
   return {vb * denom, vc * denom};
 }
 
-Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>& per_triangle) {
+Voxelization finish_voxelization(int n, std::vector<VoxelFragment> fragments) {
   Voxelization v;
   v.n = n;
-  size_t total = 0;
-  for (auto& f : per_triangle) total += f.size();
-  v.fragments.reserve(total);
-  for (auto& f : per_triangle) {
-    v.fragments.insert(v.fragments.end(), f.begin(), f.end());
-    std::vector<VoxelFragment>().swap(f);
-  }
+  v.fragments = std::move(fragments);
   // Keys are unique (one fragment per triangle and voxel), so the order is total.
   std::sort(v.fragments.begin(), v.fragments.end(),
             [n](const VoxelFragment& a, const VoxelFragment& b) { return fragment_before(n, a, b); });

@@ -111,6 +111,6 @@ inline bool fragment_before(int n, const VoxelFragment& a, const VoxelFragment& 
 }
 
 /// Sorts fragments, fills occupancy and the covered count.
-Voxelization finish_voxelization(int n, std::vector<std::vector<VoxelFragment>>& per_triangle);
+Voxelization finish_voxelization(int n, std::vector<VoxelFragment> fragments);
 
 }  // namespace vct

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/parallel.h"
+#include "core/parallel_gather.h"
 #include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/voxelize.h"
@@ -11,8 +11,8 @@
 namespace vct {
 
 Voxelization voxelize_conservative(const Scene& scene, int n, double grow) {
-  std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
-  parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
+  std::vector<VoxelFragment> fragments = parallel_gather<VoxelFragment>(
+      int64_t(scene.triangles.size()), [&](int64_t ti, std::vector<VoxelFragment>& out) {
     const uvec3 t = scene.triangles[size_t(ti)];
     const glm::dvec3 v[3] = {to_voxel_space(scene, n, scene.positions[t.x]), to_voxel_space(scene, n, scene.positions[t.y]),
                              to_voxel_space(scene, n, scene.positions[t.z])};
@@ -23,7 +23,6 @@ Voxelization voxelize_conservative(const Scene& scene, int n, double grow) {
       a[c] = int(std::clamp(std::floor(lo[c]), 0.0, double(n - 1)));
       b[c] = int(std::clamp(std::floor(hi[c]), 0.0, double(n - 1)));
     }
-    auto& out = per_tri[size_t(ti)];
     const bool alpha_tested = triangle_alpha_tested(scene, uint32_t(ti));
     for (int z = a.z; z <= b.z; ++z)
       for (int y = a.y; y <= b.y; ++y)
@@ -41,8 +40,8 @@ Voxelization voxelize_conservative(const Scene& scene, int n, double grow) {
           const SurfacePoint sp = interpolate_surface(scene, uint32_t(ti), float(bc.x), float(bc.y));
           out.push_back({ivec3(x, y, z), sp.position, sp.normal, uint32_t(ti), float(bc.x), float(bc.y)});
         }
-  });
-  return finish_voxelization(n, per_tri);
+      });
+  return finish_voxelization(n, std::move(fragments));
 }
 
 }  // namespace vct

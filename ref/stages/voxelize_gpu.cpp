@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/parallel.h"
+#include "core/parallel_gather.h"
 #include "scene/alpha_mask.h"
 #include "scene/surface.h"
 #include "stages/raster.h"
@@ -31,8 +31,8 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
                                SnapWorld world) {
   if (samples.empty() || samples.size() > 32)
     throw std::invalid_argument("voxelize_gpu_rule: 1 to 32 sample positions (one coverage bit each)");
-  std::vector<std::vector<VoxelFragment>> per_tri(scene.triangles.size());
-  parallel_for(int64_t(scene.triangles.size()), [&](int64_t ti) {
+  std::vector<VoxelFragment> fragments = parallel_gather<VoxelFragment>(
+      int64_t(scene.triangles.size()), [&](int64_t ti, std::vector<VoxelFragment>& out) {
     const uvec3 t = scene.triangles[size_t(ti)];
     const vec3 w[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
     const int axis = dominant_axis(w[0], w[1], w[2]);
@@ -45,9 +45,9 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
       // Volume texture coordinates [0,1] -> clip [-1,1] (w = 1, orthographic).
       clip[i] = vec4(float(v[i][pu] / n * 2.0 - 1.0), float(v[i][pv] / n * 2.0 - 1.0), 0.0f, 1.0f);
     }
-    std::vector<RasterTriangle> rt;
+    thread_local std::vector<RasterTriangle> rt;
+    rt.clear();
     setup_triangle(clip, n, n, uint32_t(ti), rt);
-    auto& out = per_tri[size_t(ti)];
     const bool alpha_tested = alpha == AlphaTest::Apply && triangle_alpha_tested(scene, uint32_t(ti));
     for (const RasterTriangle& r : rt) {
       // A snap moves coverage by a few subpixels at most: one pixel of margin holds it.
@@ -68,8 +68,8 @@ Voxelization voxelize_gpu_rule(const Scene& scene, int n, const std::vector<vec2
         out.push_back({voxel, sp.position, sp.normal, uint32_t(ti), f.bary.y, f.bary.z});
       });
     }
-  });
-  Voxelization vox = finish_voxelization(n, per_tri);
+      });
+  Voxelization vox = finish_voxelization(n, std::move(fragments));
   vox.samples = samples;
   return vox;
 }
