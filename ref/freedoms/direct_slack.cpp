@@ -1,11 +1,13 @@
 #include "freedoms/direct_slack.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/parallel.h"
 #include "core/pcf_taps.h"
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
+#include "freedoms/texel_pieces.h"
 #include "freedoms/texture_slack.h"
 #include "scene/alpha_mask.h"
 #include "stages/direct.h"
@@ -51,12 +53,16 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       if (!reads_lods)
         for (int k = 0; k < 3; ++k) cand[k][0] = 0.0;
       const int orders = material_reads_srgb_order(material) ? 2 : 1;
-      SurfacePoint points[kSlackShifts];
-      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);
+      SurfacePoint shifted[kSlackShifts];
+      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], shifted);
+      // And a point in every NEAREST texel piece of the snap square (freedoms/texel_pieces.h).
+      thread_local std::vector<SurfacePoint> points;
+      points.assign(shifted, shifted + n);
+      if (reads_lods) texel_piece_points(scene, wb, x, row, tri, vb.bary[i], lods, points);
       const vec3 ref = direct.rgb(x, row);
       float slack = 0.0f;
       SlotLods l = lods.exact;
-      for (int p = 0; p < n; ++p)
+      for (size_t p = 0; p < points.size(); ++p)
         for (int i0 = 0; i0 < count[0]; ++i0)
           for (int i1 = 0; i1 < count[1]; ++i1)
             for (int i2 = 0; i2 < count[2] * orders;

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "freedoms/lod_candidates.h"
 #include "freedoms/tangent_handedness.h"
+#include "freedoms/texel_pieces.h"
 
 namespace vct {
 
@@ -37,7 +39,11 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
   // next to its silhouette); on flat-shaded triangles it is zero.
   SurfacePoint points[kSlackShifts];
   const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
-  return texture_slack(scene, points, n, triangle, centre, lods);
+  // And a point in every NEAREST texel piece of the snap square (freedoms/texel_pieces.h).
+  thread_local std::vector<SurfacePoint> all;
+  all.assign(points, points + n);
+  texel_piece_points(scene, wb, x, row, triangle, bary, lods, all);
+  return texture_slack(scene, all.data(), int(all.size()), triangle, centre, lods);
 }
 
 vec4 texture_slack(const Scene& scene, const SurfacePoint* points, int n, uint32_t triangle,
