@@ -16,8 +16,6 @@
 #include "freedoms/tangent_handedness.h"
 #include "freedoms/texel_breakpoints.h"
 #include "freedoms/texture_slack.h"
-#include "scene/texture_lod.h"
-#include "scene/texture_mips.h"
 #include "stages/direct.h"
 #include "stages/light_sample.h"
 #include "stages/raster.h"
@@ -131,21 +129,11 @@ void nearest_level_maps(const Scene& scene, const SnapWindow& w, const VoxelFrag
   for (int slot = 0; slot < kTextureSlots; ++slot) {
     const TextureRef* ref = slot_texture(m, slot);
     if (!ref) continue;
-    const Texture& tex = scene.textures[size_t(ref->texture)];
-    const bool srgb = slot_is_srgb(slot);
-    const LevelBlend b = select_levels(tex, lods.lambda[slot], available_levels(tex, srgb) - 1);
-    if (b.linear) continue;
     const glm::dvec2 uv(slot_uv(*ref, at[0]));
     const glm::dvec2 per_u = (glm::dvec2(slot_uv(*ref, at[1])) - uv) / w.reach;
     const glm::dvec2 per_v = (glm::dvec2(slot_uv(*ref, at[2])) - uv) / w.reach;
-    const int levels[2] = {b.level1, b.level2};
-    const int read = b.weight2 != 0.0f && b.level2 != b.level1 ? 2 : 1;
-    for (int k = 0; k < read; ++k) {
-      int width = 0, height = 0;
-      mip_level_texels(tex, srgb, levels[k], width, height);
-      const glm::dvec2 size(width, height);
-      out.push_back({uv * size, per_u * size, per_v * size});
-    }
+    append_nearest_level_maps(scene.textures[size_t(ref->texture)], slot_is_srgb(slot), lods.lambda[slot], uv, per_u,
+                              per_v, out);
   }
 }
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/texture_lod.h"
+#include "scene/texture_mips.h"
+
 namespace vct {
 
 namespace {
@@ -62,6 +65,20 @@ bool texel_breakpoints(const TexelMap& map, double r, size_t cap, std::vector<gl
       for (const glm::dvec2& p : piece) out.push_back(p + kPull * (centre - p));
     }
   return true;
+}
+
+void append_nearest_level_maps(const Texture& texture, bool srgb, double lambda, const glm::dvec2& uv,
+                               const glm::dvec2& per_u, const glm::dvec2& per_v, std::vector<TexelMap>& out) {
+  const LevelBlend b = select_levels(texture, lambda, available_levels(texture, srgb) - 1);
+  if (b.linear) return;
+  const int levels[2] = {b.level1, b.level2};
+  const int read = b.weight2 != 0.0f && b.level2 != b.level1 ? 2 : 1;
+  for (int k = 0; k < read; ++k) {
+    int width = 0, height = 0;
+    mip_level_texels(texture, srgb, levels[k], width, height);
+    const glm::dvec2 size(width, height);
+    out.push_back({uv * size, per_u * size, per_v * size});
+  }
 }
 
 }  // namespace vct

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "scene/scene.h"
 
 namespace vct {
 
@@ -31,5 +32,11 @@ struct TexelMap {
 /// distance off the lines miss). Appends to `out`; false (and nothing appended) when there would be
 /// more than `cap` points.
 bool texel_breakpoints(const TexelMap& map, double r, size_t cap, std::vector<glm::dvec2>& out);
+
+/// The maps of the level(s) a lookup of `texture` at `lambda` reads when it filters NEAREST within
+/// a level (none for LINEAR), for texture coordinates `uv` at the centre moving by `per_u`, `per_v`
+/// per unit window offset; appended to `out`.
+void append_nearest_level_maps(const Texture& texture, bool srgb, double lambda, const glm::dvec2& uv,
+                               const glm::dvec2& per_u, const glm::dvec2& per_v, std::vector<TexelMap>& out);
 
 }  // namespace vct

@@ -3,8 +3,6 @@
 #include "freedoms/lod_candidates.h"
 #include "freedoms/texture_slack.h"
 #include "freedoms/texel_breakpoints.h"
-#include "scene/texture_lod.h"
-#include "scene/texture_mips.h"
 #include "stages/raster.h"  // kVertexSnapStep
 
 namespace vct {
@@ -24,24 +22,13 @@ std::vector<TexelMap> nearest_maps(const Scene& scene, const Material& m, const 
   for (int slot = 0; slot < kTextureSlots; ++slot) {
     const TextureRef* ref = slot_texture(m, slot);
     if (!ref) continue;
-    const Texture& tex = scene.textures[size_t(ref->texture)];
-    const bool srgb = slot_is_srgb(slot);
     const glm::dvec2 uv(slot_uv(*ref, p0));
     const glm::dvec2 per_u = (glm::dvec2(slot_uv(*ref, pu)) - uv) / s, per_v = (glm::dvec2(slot_uv(*ref, pv)) - uv) / s;
     double cand[kMaxLodCandidates];
     const int count = lod_candidates(lods.range[slot], cand);
-    for (int j = 0; j < count; ++j) {
-      const LevelBlend b = select_levels(tex, cand[j], available_levels(tex, srgb) - 1);
-      if (b.linear) continue;
-      const int levels[2] = {b.level1, b.level2};
-      const int read = b.weight2 != 0.0f && b.level2 != b.level1 ? 2 : 1;
-      for (int k = 0; k < read; ++k) {
-        int width = 0, height = 0;
-        mip_level_texels(tex, srgb, levels[k], width, height);
-        const glm::dvec2 size(width, height);
-        maps.push_back({uv * size, per_u * size, per_v * size});
-      }
-    }
+    for (int j = 0; j < count; ++j)
+      append_nearest_level_maps(scene.textures[size_t(ref->texture)], slot_is_srgb(slot), cand[j], uv, per_u, per_v,
+                                maps);
   }
   return maps;
 }

@@ -210,15 +210,29 @@ TEST(FragmentSlack, PositionTermReachesEveryNearestTexelInsideTheSnap) {
 // past its triangle, under a sun; its snap square covers a dark texel of a 33x33 NEAREST texture
 // that no corner reads. Mesa llvmpipe stored 0.01678 (red) against the reference's 0.58643: the
 // slack must reach that 0.5697 (the square's corners alone gave 0.551).
-TEST(FragmentSlack, Seed229SnapSquareReachesTheDarkTexel) {
-  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-229-small/scene.gltf");
+// A regression case's scene, its shadow maps, its GPU-rule voxelization (4 samples) and every
+// fragment's shading slack at `grid` and `map_size`.
+struct RegressionSlack {
+  Scene scene;
   VctSettings settings;
-  settings.grid = 16;
-  settings.shadow_map_size = 64;
-  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
-  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
-  const Volume v = voxel_shading_slack(vox, slack);
+  std::vector<ShadowMap> maps;
+  Voxelization vox;
+  std::vector<float> slack;
+};
+RegressionSlack regression_slack(const std::string& name, int grid, int map_size) {
+  RegressionSlack r;
+  r.scene = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/" + name + "/scene.gltf");
+  r.settings.grid = grid;
+  r.settings.shadow_map_size = map_size;
+  r.maps = render_shadow_maps(r.scene, r.settings);
+  r.vox = voxelize_gpu_rule(r.scene, grid, 4);
+  r.slack = fragment_shading_slack(r.scene, r.vox, r.maps, r.settings);
+  return r;
+}
+
+TEST(FragmentSlack, Seed229SnapSquareReachesTheDarkTexel) {
+  const RegressionSlack r = regression_slack("seed-229-small", 16, 64);
+  const Volume v = voxel_shading_slack(r.vox, r.slack);
   EXPECT_GE(*v.voxel(10, 8, 8), 0.58643f - 0.01678f);
 }
 
@@ -324,14 +338,10 @@ TEST(FragmentSlack, VoxelSlackIsTheMeanOfItsFragments) {
 // shadow term counts the unshadowed light's magnitude; counted as non-negative it was 0 and the
 // voxel's slack 0.0065.
 TEST(FragmentSlack, ANegativeLightsVisibilityIsInTheSlack) {
-  const Scene s = load_scene(std::string(VCT_SOURCE_DIR) + "/scenes/regressions/seed-24-large/scene.gltf");
-  VctSettings settings;
-  settings.grid = 128;
-  settings.shadow_map_size = 1024;
-  const std::vector<ShadowMap> maps = render_shadow_maps(s, settings);
-  const Voxelization vox = voxelize_gpu_rule(s, settings.grid, 4);
-  const std::vector<float> slack = fragment_shading_slack(s, vox, maps, settings);
-  const std::vector<vec3> values = fragment_radiance(s, vox, maps, settings);
+  const RegressionSlack r = regression_slack("seed-24-large", 128, 1024);
+  const Scene& s = r.scene;
+  const Voxelization& vox = r.vox;
+  const std::vector<vec3> values = fragment_radiance(s, vox, r.maps, r.settings);
   const ivec3 v(47, 105, 121);
   double mean = 0.0;
   int count = 0;
@@ -346,7 +356,7 @@ TEST(FragmentSlack, ANegativeLightsVisibilityIsInTheSlack) {
   EXPECT_TRUE(negative_albedo);
   mean /= double(count);
   EXPECT_NEAR(mean, 0.03546, 1e-4);
-  EXPECT_GE(double(*voxel_shading_slack(vox, slack).voxel(v.x, v.y, v.z)), mean - 0.02484);
+  EXPECT_GE(double(*voxel_shading_slack(vox, r.slack).voxel(v.x, v.y, v.z)), mean - 0.02484);
 }
 
 }  // namespace
