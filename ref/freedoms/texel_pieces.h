@@ -6,7 +6,7 @@
 // mipmaps, on a triangle 114 texel rows long seen over a few pixels; llvmpipe read a texel no
 // corner reads). The points below reach every piece, as the voxel shading slack's
 // (freedoms/texel_breakpoints.h), so the texture slack, the direct slack and the tie range's
-// alternatives see every texel GL may read (docs/compare.md, "G-buffer", texel pieces).
+// alternatives see every texel GL may read (docs/compare.md, "Texture LOD", the G-buffer bullet).
 #pragma once
 
 #include <cstdint>
