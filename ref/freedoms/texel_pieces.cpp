@@ -1,7 +1,8 @@
 #include "freedoms/texel_pieces.h"
 
+#include <vector>
+
 #include "freedoms/lod_candidates.h"
-#include "freedoms/texture_slack.h"
 #include "freedoms/texel_breakpoints.h"
 #include "stages/raster.h"  // kVertexSnapStep
 
@@ -33,12 +34,26 @@ std::vector<TexelMap> nearest_maps(const Scene& scene, const Material& m, const 
   return maps;
 }
 
+// Whether any of the material's textures filters NEAREST within a level, minified or magnified:
+// only those change texel in steps (a LINEAR lookup is continuous, its corners bound it).
+bool reads_nearest(const Scene& scene, const Material& m) {
+  for (int slot = 0; slot < kTextureSlots; ++slot) {
+    const TextureRef* ref = slot_texture(m, slot);
+    if (!ref) continue;
+    const Texture& t = scene.textures[size_t(ref->texture)];
+    if (t.mag_filter == Filter::Nearest || t.min_filter == MinFilter::Nearest ||
+        t.min_filter == MinFilter::NearestMipmapNearest || t.min_filter == MinFilter::NearestMipmapLinear)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void texel_piece_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
                         const vec3& bary, const SurfaceLods& lods, std::vector<SurfacePoint>& out) {
   const Material& m = scene.materials[scene.triangle_material[triangle]];
-  if (!is_textured(m)) return;
+  if (!reads_nearest(scene, m)) return;
   constexpr double s = kVertexSnapStep;
   const double cx = double(x) + 0.5, cy = double(wb.height()) - double(row) - 0.5;
   glm::dvec2 bc, bu, bv;
