@@ -53,12 +53,10 @@ void add_direct_texture_slack(const Scene& scene, const std::vector<ShadowMap>& 
       if (!reads_lods)
         for (int k = 0; k < 3; ++k) cand[k][0] = 0.0;
       const int orders = material_reads_srgb_order(material) ? 2 : 1;
-      SurfacePoint shifted[kSlackShifts];
-      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], shifted);
-      // And a point in every NEAREST texel piece of the snap square (freedoms/texel_pieces.h).
+      // The centre, the corners and a point in every NEAREST texel piece of the snap square
+      // (freedoms/texel_pieces.h).
       thread_local std::vector<SurfacePoint> points;
-      points.assign(shifted, shifted + n);
-      if (reads_lods) texel_piece_points(scene, wb, x, row, tri, vb.bary[i], lods, points);
+      const int n = snap_surface_points(scene, wb, x, row, tri, vb.bary[i], lods, points);
       const vec3 ref = direct.rgb(x, row);
       float slack = 0.0f;
       SlotLods l = lods.exact;

@@ -34,15 +34,13 @@ void add_texture_slack_and_start_ties(const Scene& scene, const mat4& view_proj,
         continue;
       }
       const uint32_t tri = uint32_t(vb.triangle[i]);
-      SurfacePoint points[kSlackShifts];
-      const int n = shifted_surface_points(scene, wb, x, row, tri, vb.bary[i], points);
       const PixelMaterial centre = pixel_material_lods_if_read(scene, view_proj, w, h, x, row, tri, vb.bary[i]);
       // The texture slack also at a point in every NEAREST texel piece of the snap square
-      // (freedoms/texel_pieces.h); the tie range's positions from the five points (linear there).
-      thread_local std::vector<SurfacePoint> all;
-      all.assign(points, points + n);
-      texel_piece_points(scene, wb, x, row, tri, vb.bary[i], centre.lods, all);
-      const vec4 slack = texture_slack(scene, all.data(), int(all.size()), tri, centre.material, centre.lods);
+      // (freedoms/texel_pieces.h); the tie range's positions from the first n, the centre and the
+      // corners (linear there).
+      thread_local std::vector<SurfacePoint> points;
+      const int n = snap_surface_points(scene, wb, x, row, tri, vb.bary[i], centre.lods, points);
+      const vec4 slack = texture_slack(scene, points.data(), int(points.size()), tri, centre.material, centre.lods);
       for (int c = 0; c < 4; ++c) g.texture_slack.at(x, row, c) = slack[c];
       vec3 positions[kSlackShifts];
       for (int k = 0; k < n; ++k) positions[k] = points[k].position;

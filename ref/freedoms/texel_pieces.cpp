@@ -76,4 +76,13 @@ void texel_piece_points(const Scene& scene, const WindowBarycentrics& wb, int x,
   }
 }
 
+int snap_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
+                        const vec3& bary, const SurfaceLods& lods, std::vector<SurfacePoint>& out) {
+  SurfacePoint shifted[kSlackShifts];
+  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, shifted);
+  out.assign(shifted, shifted + n);
+  texel_piece_points(scene, wb, x, row, triangle, bary, lods, out);
+  return n;
+}
+
 }  // namespace vct

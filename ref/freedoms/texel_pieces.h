@@ -27,4 +27,10 @@ namespace vct {
 void texel_piece_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
                         const vec3& bary, const SurfaceLods& lods, std::vector<SurfacePoint>& out);
 
+/// Every point a G-buffer freedom evaluates a textured value at: shifted_surface_points' (the
+/// centre and the four corners) first, then texel_piece_points'. Replaces `out`'s contents and
+/// returns how many of them are shifted_surface_points' (0 where the centre's ray misses the plane).
+int snap_surface_points(const Scene& scene, const WindowBarycentrics& wb, int x, int row, uint32_t triangle,
+                        const vec3& bary, const SurfaceLods& lods, std::vector<SurfacePoint>& out);
+
 }  // namespace vct

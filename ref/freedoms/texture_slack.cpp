@@ -37,13 +37,10 @@ vec4 texture_slack(const Scene& scene, const WindowBarycentrics& wb, int x, int 
   // attribute like the texture coordinates, read at the snapped sample point. On a dense smooth
   // mesh seen at a grazing angle that is a large change (scenes/scanned_statue.gltf at 64^2: 0.031
   // next to its silhouette); on flat-shaded triangles it is zero.
-  SurfacePoint points[kSlackShifts];
-  const int n = shifted_surface_points(scene, wb, x, row, triangle, bary, points);
   // And a point in every NEAREST texel piece of the snap square (freedoms/texel_pieces.h).
-  thread_local std::vector<SurfacePoint> all;
-  all.assign(points, points + n);
-  texel_piece_points(scene, wb, x, row, triangle, bary, lods, all);
-  return texture_slack(scene, all.data(), int(all.size()), triangle, centre, lods);
+  thread_local std::vector<SurfacePoint> points;
+  snap_surface_points(scene, wb, x, row, triangle, bary, lods, points);
+  return texture_slack(scene, points.data(), int(points.size()), triangle, centre, lods);
 }
 
 vec4 texture_slack(const Scene& scene, const SurfacePoint* points, int n, uint32_t triangle,
