@@ -64,3 +64,25 @@ def test_nothing_to_drop_when_everything_matters():
     calls = []
     small, _ = shrink.shrink(spec, lambda s: calls.append(1) or False, budget=50)
     assert small is spec and len(calls) == 50
+
+
+def world_bounds(spec):
+    points = np.concatenate([generate.world_points(m, m["positions"][m["indices"].reshape(-1)])
+                             for m in spec["meshes"] if len(m["indices"])])
+    return points.min(axis=0), points.max(axis=0)
+
+
+def test_pinned_bounds_keep_the_scene_box_and_the_culprit():
+    spec, name, corners = culprit_scene()
+    small, _ = shrink.shrink(spec, make_predicate(name, corners, []), budget=2000, pin=True)
+    lo, hi = world_bounds(spec)
+    small_lo, small_hi = world_bounds(small)
+    assert np.array_equal(lo, small_lo) and np.array_equal(hi, small_hi)
+    assert make_predicate(name, corners, [])(small)
+    # The culprit and at most one triangle per extreme (six), nothing else: the pins do not stop
+    # the rest from going.
+    kept = sum(len(m["indices"]) for m in small["meshes"])
+    assert 2 <= kept <= 7 and sum(int(m["pinned"].sum()) for m in small["meshes"]) == kept - 1
+    # Unpinned, the same predicate leaves the culprit alone and the box shrinks to it.
+    alone, _ = shrink.shrink(spec, make_predicate(name, corners, []), budget=2000)
+    assert not np.array_equal(world_bounds(alone)[1] - world_bounds(alone)[0], hi - lo)

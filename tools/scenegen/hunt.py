@@ -14,7 +14,8 @@ grid, shadow map size, pt.spp 4 and the drawn settings), runs `vct validate --co
 prints one line: seed, verdict (pass, warn, fail, refused = exit 2, no-gl = exit 3, crash = any
 other exit, timeout = stopped after --time-limit seconds: a scene too slow to judge, reported, not
 a failure), first failing stage. A FAIL is shrunk while it still FAILs with the same first failing
-stage (digits in the stage name ignored: a light's index changes when lights are dropped) and saved
+stage (digits in the stage name ignored: a light's index changes when lights are dropped), the
+triangles that hold the scene's extreme vertices kept (shrink.py, pin_bounds), and saved
 as SAVE/seed-N-CLASS/ {scene.gltf, settings.json, case.json (seed, verdict line, first failing
 stage, its note, sizes before and after, "cause": to fill)}. Results: OUT/results.jsonl.
 Exit 1 when any seed FAILed, crashed or was refused (a valid scene refused is a loader or
@@ -129,7 +130,9 @@ def shrink_failure(args, spec, first):
         r = run_validate(args, work)
         return r["verdict"] == "fail" and stage_family(r["first_failing"]) == stage_family(first["first_failing"])
 
-    small, calls = shrink.shrink(spec, still_fails, budget=args.budget, log=print)
+    # Bounds pinned: the voxel grid, the camera's far plane and the spot lights' depth ranges are
+    # fitted to them, so a voxel or depth failure stays where it is while triangles go.
+    small, calls = shrink.shrink(spec, still_fails, budget=args.budget, log=print, pin=True)
     write_case(small, work)
     final = run_validate(args, work)  # the minimal case's own verdict line and note
     if final["verdict"] != "fail":  # cannot happen for a deterministic validate; keep the original

@@ -3,10 +3,18 @@ reduction, greedy): each pass proposes smaller specs (drop a setting, a light, a
 slot, vertex colours, an alpha mask; remove chunks of triangles, ddmin-style; halve the image,
 the grid, the shadow map, a texture) and keeps the first one for which `still_fails` holds, until
 no pass makes progress or the budget of predicate calls is spent. The predicate is all it knows
-of `vct`: tests/scenegen/test_shrink.py drives it with a synthetic one."""
+of `vct`: tests/scenegen/test_shrink.py drives it with a synthetic one.
+
+With `pin_bounds`, the triangles that hold the scene's extreme vertices (world space, per axis) are
+never dropped, so the scene's bounds stay as they were, and with them everything the loader and the
+renderers fit to them: the voxel volume (hence every voxel's place), an infinite camera's far
+plane and the spot lights' shadow depth ranges (docs/compare.md, "False-alarm hunt"). Without it a
+voxel failure moves with the grid as triangles go, and cannot be shrunk."""
 import copy
 
 import numpy as np
+
+from generate import world_points
 
 
 def _without(items, k):
@@ -28,8 +36,11 @@ def drop_lights(spec):
 
 
 def drop_meshes(spec):
-    """Removes a mesh (its material stays: an unused material is still valid glTF)."""
+    """Removes a mesh (its material stays: an unused material is still valid glTF); not one that
+    holds a pinned triangle."""
     for k in range(len(spec["meshes"])):
+        if _pinned(spec["meshes"][k]).any():
+            continue
         s = copy.deepcopy(spec)
         s["meshes"] = _without(s["meshes"], k)
         yield "mesh %s" % spec["meshes"][k]["name"], s
@@ -78,27 +89,62 @@ def _textured(spec, mesh):
 
 def drop_triangles(spec):
     """ddmin over each mesh's triangles: remove one of n equal chunks, n = 2, 4, 8, ... (a chunk
-    of one triangle at the finest). Unreferenced vertices are compacted away."""
+    of one triangle at the finest), pinned triangles excepted. Unreferenced vertices are compacted
+    away."""
     for k, mesh in enumerate(spec["meshes"]):
         count = len(mesh["indices"])
+        pinned = _pinned(mesh)
         n = 2
         while count > 1 and n <= 2 * count:
             bounds = np.linspace(0, count, min(n, count) + 1).astype(int)
             for lo, hi in zip(bounds[:-1], bounds[1:]):
-                if hi > lo and hi - lo < count:
+                keep = np.ones(count, dtype=bool)
+                keep[lo:hi] = False
+                keep |= pinned
+                if hi > lo and hi - lo < count and not keep.all():
                     s = copy.deepcopy(spec)
-                    keep = np.concatenate([mesh["indices"][:lo], mesh["indices"][hi:]])
                     _set_triangles(s["meshes"][k], keep)
                     yield "triangles %d..%d of %s" % (lo, hi, mesh["name"]), s
             n *= 2
 
 
-def _set_triangles(mesh, tris):
-    used, remap = np.unique(tris.reshape(-1), return_inverse=True)
+def _set_triangles(mesh, keep):
+    """Keeps the triangles where `keep` is true (a mask over mesh["indices"])."""
+    if mesh.get("pinned") is not None:
+        mesh["pinned"] = mesh["pinned"][keep]
+    used, remap = np.unique(mesh["indices"][keep].reshape(-1), return_inverse=True)
     mesh["indices"] = remap.reshape(-1, 3)
     for key in ("positions", "normals", "uv", "colors"):
         if mesh.get(key) is not None:
             mesh[key] = mesh[key][used]
+
+
+def _pinned(mesh):
+    pinned = mesh.get("pinned")
+    return pinned if pinned is not None else np.zeros(len(mesh["indices"]), dtype=bool)
+
+
+def pin_bounds(spec):
+    """A copy of spec whose meshes mark ("pinned") one triangle for each of the six extreme
+    vertices of the whole scene in world space (min and max per axis; the first in mesh and index
+    order where several share the extreme)."""
+    s = copy.deepcopy(spec)
+    best = {}  # (axis, side) -> (value, mesh, triangle)
+    for k, mesh in enumerate(s["meshes"]):
+        mesh["pinned"] = np.zeros(len(mesh["indices"]), dtype=bool)
+        if len(mesh["indices"]) == 0:
+            continue
+        corners = world_points(mesh, mesh["positions"])[mesh["indices"]]  # triangles x 3 x 3
+        for axis in range(3):
+            for side, pick in ((0, np.argmin), (1, np.argmax)):
+                flat = pick(corners[:, :, axis])
+                value = corners[:, :, axis].reshape(-1)[flat]
+                old = best.get((axis, side))
+                if old is None or (value < old[0] if side == 0 else value > old[0]):
+                    best[(axis, side)] = (value, k, flat // 3)
+    for _, k, tri in best.values():
+        s["meshes"][k]["pinned"][tri] = True
+    return s
 
 
 def halve_sizes(spec):
@@ -118,9 +164,12 @@ def halve_sizes(spec):
 PASSES = [drop_settings, drop_lights, drop_meshes, prune_unused, drop_material_features, halve_sizes, drop_triangles]
 
 
-def shrink(spec, still_fails, budget=200, log=None):
+def shrink(spec, still_fails, budget=200, log=None, pin=False):
     """The smallest spec the passes reach for which still_fails(spec) is true, and the number of
-    predicate calls made. `spec` itself is assumed to fail (it is not re-checked)."""
+    predicate calls made. `spec` itself is assumed to fail (it is not re-checked). pin: keep the
+    scene's bounds (pin_bounds)."""
+    if pin:
+        spec = pin_bounds(spec)
     calls = 0
     progress = True
     while progress and calls < budget:
