@@ -151,9 +151,23 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 
 namespace {
 
-// Whether a correct GL discards the fragment: alpha-masked there (render_visibility's test).
+// Whether the reference discards the fragment: alpha-masked there (render_visibility's test).
 bool discarded(const Scene& scene, const RasterTriangle& t, const RasterFragment& f) {
   return triangle_alpha_tested(scene, t.source) && surface_masked(scene, t.source, f.bary.y, f.bary.z);
+}
+
+// What every correct GL does with the fragment's alpha test (docs/compare.md, "Alpha-mask ties"):
+// keeps it (not alpha tested, or passing where the test cannot flip), discards it (cut where it
+// cannot flip), or either. A depth tie only admits what some GL keeps, and only what every GL
+// keeps bounds it (medium hunt seed 571: a masked plane behind its opaque coplanar twin, cut in
+// the reference, kept by llvmpipe and drawn in front: a depth tie and a flip at one centre).
+enum class AlphaOutcome { Kept, Discarded, Either };
+
+AlphaOutcome alpha_outcome(const Scene& scene, const WindowBarycentrics& wb, const RasterTriangle& t,
+                           const RasterFragment& f, int row) {
+  if (!triangle_alpha_tested(scene, t.source)) return AlphaOutcome::Kept;
+  if (alpha_test_may_flip(scene, wb, f.x, row, t.source, f.bary)) return AlphaOutcome::Either;
+  return surface_masked(scene, t.source, f.bary.y, f.bary.z) ? AlphaOutcome::Discarded : AlphaOutcome::Kept;
 }
 
 std::vector<double> depth_tie_margins(const BinnedTriangles& binned) {
@@ -170,8 +184,8 @@ void lower_ceiling(std::vector<double>& ceiling, size_t i, uint32_t ti, const Ra
 }
 
 // depth_tied_surfaces' second pass, from its first pass's ceiling.
-std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const BinnedTriangles& binned,
-                                                 const std::vector<double>& margins,
+std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const WindowBarycentrics& wb,
+                                                 const BinnedTriangles& binned, const std::vector<double>& margins,
                                                  const std::vector<double>& ceiling, const VisibilityBuffer& front,
                                                  vec2 sample, SnapWorld candidates) {
   const int w = front.width, h = front.height;
@@ -188,10 +202,10 @@ std::vector<VisibilityBuffer> tied_below_ceiling(const Scene& scene, const Binne
   std::vector<std::vector<Extra>> overflow(static_cast<size_t>(h));
   for_each_fragment_in_world(binned, w, h, sample, candidates, [&](uint32_t ti, const RasterTriangle& t,
                                                                    const RasterFragment& f) {
-    if (discarded(scene, t, f)) return;
     const int row = h - 1 - f.y;
     const size_t i = front.index(f.x, row);
     if (int32_t(t.source) == front.triangle[i] || !(double(f.depth) - margins[ti] <= ceiling[i])) return;
+    if (alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Discarded) return;
     if (!has_first[i]) {
       has_first[i] = 1;
       store_fragment(out[0], i, t, f);
@@ -218,28 +232,31 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   const int w = front.width, h = front.height;
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   const std::vector<double> margins = depth_tie_margins(binned);
+  const WindowBarycentrics wb(view_proj, w, h);
   std::vector<double> ceiling(front.depth.size(), 1e300);
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
-    if (!discarded(scene, t, f)) lower_ceiling(ceiling, front.index(f.x, h - 1 - f.y), ti, f, margins);
+    const int row = h - 1 - f.y;
+    if (alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Kept) lower_ceiling(ceiling, front.index(f.x, row), ti, f, margins);
   });
-  return tied_below_ceiling(scene, binned, margins, ceiling, front, sample, candidates);
+  return tied_below_ceiling(scene, wb, binned, margins, ceiling, front, sample, candidates);
 }
 
 VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_proj, int w, int h, vec2 sample,
                                            std::vector<VisibilityBuffer>& tied) {
   const BinnedTriangles binned = setup_and_bin(scene.positions, scene.triangles, view_proj, w, h);
   const std::vector<double> margins = depth_tie_margins(binned);
+  const WindowBarycentrics wb(view_proj, w, h);
   std::vector<double> ceiling(size_t(w) * size_t(h), 1e300);
   VisibilityBuffer vb = empty_visibility(w, h);
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
-    const size_t i = vb.index(f.x, h - 1 - f.y);
-    const bool cut = discarded(scene, t, f);
-    if (!cut) lower_ceiling(ceiling, i, ti, f, margins);
+    const int row = h - 1 - f.y;
+    const size_t i = vb.index(f.x, row);
+    if (alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Kept) lower_ceiling(ceiling, i, ti, f, margins);
     if (!(f.depth < vb.depth[i])) return;  // GL_LESS, then the mask: render_visibility's order
-    if (cut) return;
+    if (discarded(scene, t, f)) return;
     store_fragment(vb, i, t, f);
   });
-  tied = tied_below_ceiling(scene, binned, margins, ceiling, vb, sample, SnapWorld::Reference);
+  tied = tied_below_ceiling(scene, wb, binned, margins, ceiling, vb, sample, SnapWorld::Reference);
   return vb;
 }
 

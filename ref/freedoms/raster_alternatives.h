@@ -58,8 +58,9 @@ VisibilityBuffer other_surfaces(const Scene& scene, const mat4& view_proj, const
 /// 2717). Returned as layers: layer k holds each pixel's k-th tied fragment (in triangle order),
 /// and `front`'s own entry where a pixel has fewer (callers skip what equals their front). Coverage
 /// is taken at `sample` (pixel units from the pixel's corner; `front` rendered with the same
-/// sample), depths and barycentrics at the centre, as render_visibility; alpha-masked fragments are
-/// discarded.
+/// sample), depths and barycentrics at the centre, as render_visibility. Alpha-tested fragments
+/// count by what every correct GL does with them (alpha_ties.h): one whose test may flip is a
+/// candidate and does not bound the others; one cut for certain is neither.
 /// With `candidates` = Possible the candidates are every fragment some snap of its vertices makes
 /// cover the sample (the ceiling still from the reference's coverage): a sliver thinner than a
 /// snap step beside the front's edge may cover a centre no common shift of the sample puts inside

@@ -1,5 +1,6 @@
 // Raster alternatives (freedoms/gbuffer_ties.h): the values a correct GL may show at a G-buffer
 // pixel when an edge or a triangle's facing ties under 2^-8 pixel vertex snapping.
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
@@ -376,6 +377,42 @@ TEST(RasterTies, EveryFlipOfAChainOfThreeIsAdmitted) {
     EXPECT_GE(g.tie_range.at(16, row, hi), 0.99f) << row;    // the white third card
     EXPECT_FLOAT_EQ(g.tie_range.at(18, row, hi), card) << row;  // no flip: the first card alone
     EXPECT_FLOAT_EQ(g.tie_range.at(18, row, lo), card) << row;
+  }
+}
+
+}  // namespace
+}  // namespace vct
+
+namespace vct {
+namespace {
+
+// A depth tie and an alpha flip at one centre (medium hunt seed 571, scenes/regressions/
+// seed-571-medium): an opaque card (albedo 0.8) and the half-masked card coplanar with it, drawn
+// after it, the cutoff just above the centre column's alpha (0.5). There the reference cuts the
+// masked card and shows the opaque one, but a correct GL may keep the masked card (its test may
+// flip) and, tied in depth, draw it in front: its grey texel joins the range. Two columns to the
+// left the masked card is cut for certain: the opaque card alone.
+TEST(RasterTies, AMaskedSurfaceTiedInDepthIsAdmittedWhereItsTestMayFlip) {
+  Scene s = test::half_masked_card(false, AlphaMode::Mask, 0.502f);
+  Material opaque = s.materials[0];
+  opaque.alpha_mode = AlphaMode::Opaque;
+  opaque.base_color_texture.texture = -1;
+  opaque.base_color_factor = vec4(0.8f, 0.8f, 0.8f, 1.0f);
+  s.materials.push_back(opaque);
+  test::add_card_quad(s, 0.0f, 1.0f, uint32_t(s.materials.size() - 1));
+  // The opaque card first in drawing order: at equal depths GL_LESS keeps it.
+  std::rotate(s.triangles.begin(), s.triangles.begin() + 2, s.triangles.end());
+  std::rotate(s.triangle_material.begin(), s.triangle_material.begin() + 2, s.triangle_material.end());
+  const GBuffer g = render_cards(s);
+  const int lo = channel(g.tie_range, "albedo.0.lo"), hi = channel(g.tie_range, "albedo.0.hi");
+  const float card = g.albedo.at(24, 16, 0);  // right half: the masked card passes, tied, drawn second
+  ASSERT_NEAR(card, 0.8f, 1e-6f);             // the reference shows the opaque card there too
+  const float grey = 0.21586050f;             // the masked card's texel, 128 decoded from sRGB
+  for (int row = 10; row <= 22; ++row) {
+    ASSERT_FLOAT_EQ(g.albedo.at(16, row, 0), 0.8f) << row;
+    EXPECT_LE(g.tie_range.at(16, row, lo), grey + 1e-3f) << row;  // the flip drawn in front
+    EXPECT_FLOAT_EQ(g.tie_range.at(14, row, lo), 0.8f) << row;    // cut for certain
+    EXPECT_FLOAT_EQ(g.tie_range.at(14, row, hi), 0.8f) << row;
   }
 }
 
