@@ -177,10 +177,13 @@ std::vector<double> depth_tie_margins(const BinnedTriangles& binned) {
 }
 
 // The ceiling's fragment (depth_tied_surfaces): the deepest a fragment may lie and still come out in
-// front of all the others is the smallest z + m at the pixel.
+// front of all the others is the smallest z + m at the pixel over the fragments every correct GL
+// keeps (the alpha test's outcome is asked only of a fragment that would lower it: the same minimum).
 void lower_ceiling(std::vector<double>& ceiling, size_t i, uint32_t ti, const RasterFragment& f,
-                   const std::vector<double>& margins) {
-  ceiling[i] = std::min(ceiling[i], double(f.depth) + margins[ti]);
+                   const std::vector<double>& margins, const Scene& scene, const WindowBarycentrics& wb,
+                   const RasterTriangle& t, int row) {
+  const double top = double(f.depth) + margins[ti];
+  if (top < ceiling[i] && alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Kept) ceiling[i] = top;
 }
 
 // depth_tied_surfaces' second pass, from its first pass's ceiling.
@@ -236,7 +239,7 @@ std::vector<VisibilityBuffer> depth_tied_surfaces(const Scene& scene, const mat4
   std::vector<double> ceiling(front.depth.size(), 1e300);
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     const int row = h - 1 - f.y;
-    if (alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Kept) lower_ceiling(ceiling, front.index(f.x, row), ti, f, margins);
+    lower_ceiling(ceiling, front.index(f.x, row), ti, f, margins, scene, wb, t, row);
   });
   return tied_below_ceiling(scene, wb, binned, margins, ceiling, front, sample, candidates);
 }
@@ -251,7 +254,7 @@ VisibilityBuffer visibility_and_depth_ties(const Scene& scene, const mat4& view_
   for_each_fragment_at(binned, w, h, sample, [&](uint32_t ti, const RasterTriangle& t, const RasterFragment& f) {
     const int row = h - 1 - f.y;
     const size_t i = vb.index(f.x, row);
-    if (alpha_outcome(scene, wb, t, f, row) == AlphaOutcome::Kept) lower_ceiling(ceiling, i, ti, f, margins);
+    lower_ceiling(ceiling, i, ti, f, margins, scene, wb, t, row);
     if (!(f.depth < vb.depth[i])) return;  // GL_LESS, then the mask: render_visibility's order
     if (discarded(scene, t, f)) return;
     store_fragment(vb, i, t, f);
