@@ -322,7 +322,7 @@ int run(const ValidateOptions& o) {
   // GL first: the reference then emulates the coverage rule the driver actually ran.
   progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
                  std::to_string(s.vct.grid) + ")");
-  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s, o.gl); }, true);
+  BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s, o.gl); }, true);
   progress.end();
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
