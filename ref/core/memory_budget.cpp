@@ -172,6 +172,23 @@ constexpr uint64_t kSceneKeptPerTriangle = 160;
 constexpr uint64_t kJudgeBytesPerVoxel = 12;
 }  // namespace
 
+namespace {
+// The re-judgement of voxel.radiance on GL's own inputs (compare/isolated_stages.cpp,
+// VoxelInjection and judged_voxels): one voxelization with its occupancy (4 B per voxel) and its
+// fragments, one judged grid with its freedoms (as voxel_bytes counts it) and the copy of its
+// radiance kept around the particles (16 B, freedoms/voxel_freedoms.cpp); with a bounce input, that
+// input's mips. No second pyramid, hole map or kept frames: built-in scene at 256^3 with 2 bounces,
+// 4 976 MiB measured against 4 677 predicted so (5 637 when it counted the frame's whole voxel
+// peak again; docs/performance.md, "Validate's memory").
+uint64_t reinjection_bytes(const VctSettings& v, uint64_t fragments) {
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  const uint64_t cas = v.reduction == Reduction::CasRgba8 || v.reduction == Reduction::RunningMeanHalf ? 32 : 0;
+  uint64_t bytes = n3 * (4 + (16 + 4 + 4 + 4 + 4 + 8 + cas) + 16) + fragments * kBytesPerFragment;
+  if (v.bounces > 1) bytes += mip_bytes(n3, v.anisotropic);
+  return bytes;
+}
+}  // namespace
+
 ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFootprint& scene, bool gl) {
   const VctSettings& v = s.vct;
   const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
@@ -188,6 +205,7 @@ ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFo
     e.gl_frame = gl_frame_bytes(v, scene.shadow_layers);  // its mips' base level too: the re-trace reads it
     e.gl_grid = gl_grid_bytes(v);
     e.rejudges_radiance = v.bounces >= 2;
+    e.reinjection = reinjection_bytes(v, fragment_count(scene, v.grid));
     e.stage_sets += shared;
     e.judge_scratch = kJudgeBytesPerVoxel * n3;
   }

@@ -105,6 +105,7 @@ struct ValidateMemoryEstimate {
   uint64_t scene_kept = 0;      // the scene as loaded and as exposed (two copies) after the renders
   uint64_t after_renders = 0;   // the renderers' leftovers: GL driver, path tracer heaps (measured)
   uint64_t unexposed_scene = 0;  // the scene as loaded, kept beside the exposed one for a sweep
+  uint64_t reinjection = 0;      // the re-judgement's voxelization and injection (estimate_validate_memory)
   /// While GL renders: its own estimate and the scene's second copy.
   uint64_t during_gl() const { return gl.total() > 0 ? gl.total() + unexposed_scene : 0; }
   uint64_t during_ref() const { return ref.total() + gl_during_ref + gl_frame; }
@@ -120,9 +121,9 @@ struct ValidateMemoryEstimate {
   /// Where voxel.radiance is re-judged on the test's own shadow maps (with one bounce only when
   /// its end-to-end verdict counted shading ties: not known before the comparison), the
   /// reference's voxelization and injection run again beside the sets (compare/isolated_stages.h,
-  /// VoxelInjection): at most the reference frame's voxel peak once more.
+  /// VoxelInjection), after the end-to-end judges have freed their scratch.
   uint64_t with_reinjection() const {
-    const uint64_t again = gl_frame > 0 ? during_checks() + ref.voxels : 0;
+    const uint64_t again = gl_frame > 0 ? during_checks() - judge_scratch + reinjection : 0;
     return std::max(again, phases());
   }
 };

@@ -258,14 +258,18 @@ TEST(MemoryBudget, ValidateEstimateHandCount) {
   EXPECT_EQ(e.during_gl(), e.gl.total() + 80u * 1000 + 4096);
   EXPECT_EQ(e.total(), std::max({e.during_gl(), e.during_ref(), e.during_checks()}));
   // The re-judgement of voxel.radiance on GL's own shadow maps injects the voxels again.
-  EXPECT_EQ(e.with_reinjection(), std::max(e.total(), e.during_checks() + e.ref.voxels));
+  // One voxelization's occupancy (4 B), a judged grid with its freedoms (40 B), the radiance kept
+  // around the particles (16 B), its 1000 fragments (157 B each), after the judges' scratch is freed.
+  EXPECT_EQ(e.reinjection, 60 * n3 + 1000 * 157);
+  EXPECT_EQ(e.with_reinjection(), std::max(e.total(), e.during_checks() - e.judge_scratch + e.reinjection));
   // With multibounce it always runs (on GL's own bounce input): the estimate is that phase's.
   Settings bounces = s;
   bounces.vct.bounces = 2;
   const ValidateMemoryEstimate mb = estimate_validate_memory(bounces, scene);
   EXPECT_TRUE(mb.rejudges_radiance);
   EXPECT_EQ(mb.total(), mb.with_reinjection());
-  EXPECT_EQ(mb.total(), std::max(mb.phases(), mb.during_checks() + mb.ref.voxels));
+  EXPECT_EQ(mb.reinjection, 60 * n3 + 1000 * 157 + 16 * n3 + coarser_mips);  // + the bounce input's mips
+  EXPECT_EQ(mb.total(), std::max(mb.phases(), mb.during_checks() - mb.judge_scratch + mb.reinjection));
   EXPECT_FALSE(e.rejudges_radiance);
   // Without GL only the reference's terms: no GL frame, one set, no comparison.
   const ValidateMemoryEstimate ref_only = estimate_validate_memory(s, scene, false);
