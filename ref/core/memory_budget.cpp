@@ -42,7 +42,7 @@ uint64_t mip_bytes(uint64_t n3, bool anisotropic) {
 
 // Peak of inject_with_multibounce (stages/multibounce.cpp) with what pipeline.cpp holds around it.
 // Voxelization before it needs less: 16 B/voxel of occupancy volumes and two fragment lists.
-uint64_t voxel_bytes(const VctSettings& v, uint64_t fragments) {
+uint64_t voxel_bytes(const VctSettings& v, uint64_t fragments, bool particles) {
   const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
   // 1-channel float volumes alive all frame: Voxelization::occupancy, the FrameResult's copy of
   // the conservative occupancy and, with the GPU rule, the hole map.
@@ -55,6 +55,10 @@ uint64_t voxel_bytes(const VctSettings& v, uint64_t fragments) {
   const uint64_t grid = n3 * (16 + 4 + freedoms + cas);
   const uint64_t mips = mip_bytes(n3, v.anisotropic);
   uint64_t bytes = occupancy + grid + mips + fragments * kBytesPerFragment;
+  // With particle emitters the particle ties (freedoms/reference_freedoms.cpp) reduce the fragments
+  // again beside the finished frame: a second radiance and count (and CAS bounds). demo_room at
+  // 256^3 held ~230 MiB more than the built-in scene for it (docs/performance.md, "Validate's memory").
+  if (particles && v.particles) bytes += n3 * (16 + 4 + cas);
   // Solid voxelization / thickening (stages/voxel_fill.cpp), during injection: byte masks for the
   // surface, the facing, the closed rays, each fill's result and their union.
   if (v.solid_voxelization || v.surface_thickening_voxels > 0) bytes += 6 * n3;
@@ -110,7 +114,7 @@ MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   const VctSettings& v = s.vct;
   MemoryEstimate e;
   e.baseline = kProcessBaseline;
-  e.voxels = voxel_bytes(v, fragment_count(scene, v.grid));
+  e.voxels = voxel_bytes(v, fragment_count(scene, v.grid), scene.particles);
   e.images = image_bytes(v, scene.shadow_layers);
   // Besides the G-buffer's VisibilityBuffer (counted in the images: it is kept for the freedoms),
   // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel

@@ -47,6 +47,7 @@ struct SceneFootprint {
   uint64_t triangles = 0;
   uint64_t texture_bytes = 0;   // decoded texels of every texture and its mip levels
   bool alpha_tested = true;     // any material with an alpha test (freedoms/raster_alternatives.h)
+  bool particles = false;       // any particle emitter: the particle ties reduce the grid again
   /// Steiner's terms summed over the triangles, in units of the voxel volume's edge: the expected
   /// (triangle, voxel) pairs at any grid (fragment_count). Zero with no scene.
   SteinerTerms fragment_terms;

@@ -15,6 +15,7 @@ SceneFootprint scene_footprint(const Scene& scene) {
       for (const TextureLevel& level : chain) f.texture_bytes += level.rgba8.size();
   }
   f.alpha_tested = scene_has_alpha_test(scene);
+  f.particles = !scene.emitters.empty();
   // In units of the voxel volume's edge, so one sum serves every grid (core/steiner_count.h).
   for (const uvec3& t : scene.triangles) {
     const auto at = [&](uint32_t i) { return glm::dvec3(scene.volume.to_texture(scene.positions[i])); };

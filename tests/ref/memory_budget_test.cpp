@@ -138,6 +138,29 @@ TEST(MemoryBudget, SteinerCountByHand) {
   EXPECT_EQ(fragment_count(SceneFootprint{}, 64), 8u * 64 * 64);
 }
 
+// With particle emitters the particle ties reduce the grid a second time beside the frame:
+// radiance (RGBA float) and fragment count again, and the CAS bounds with that model.
+TEST(MemoryBudget, ParticleTiesReduceTheGridAgain) {
+  Settings s;
+  s.vct.grid = 32;
+  s.vct.reduction = Reduction::ExactMean;
+  SceneFootprint scene;
+  scene.triangles = 10;
+  const uint64_t without = estimate_memory(s, scene).voxels;
+  scene.particles = true;
+  EXPECT_EQ(estimate_memory(s, scene).voxels - without, 20ull * 32 * 32 * 32);
+  s.vct.particles = false;  // no particles rendered: no ties
+  SceneFootprint no_emitters = scene;
+  no_emitters.particles = false;
+  EXPECT_EQ(estimate_memory(s, scene).voxels, estimate_memory(s, no_emitters).voxels);
+  s.vct.particles = true;
+  s.vct.reduction = Reduction::CasRgba8;
+  scene.particles = false;
+  const uint64_t cas = estimate_memory(s, scene).voxels;
+  scene.particles = true;
+  EXPECT_EQ(estimate_memory(s, scene).voxels - cas, 52ull * 32 * 32 * 32);
+}
+
 // The warning before a run that may not fit: said when the estimate exceeds the machine, not otherwise.
 TEST(MemoryBudget, WarnsWhenTheEstimateExceedsTheMachine) {
   Settings s;
