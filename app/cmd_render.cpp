@@ -213,8 +213,15 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
   }
   if (!flags.facts_from.empty()) read_facts(flags.facts_from);  // bad input fails before rendering
   // Predicted with the loaded scene (triangles, textures, alpha masks) before anything is rendered.
-  const MemoryEstimate predicted = estimate_memory(settings, scene_footprint(scene));
-  warn_if_memory_short(predicted, "vct render");
+  // The GL backend's host memory is llvmpipe's and the frame it reads back, not the reference's
+  // buffers (core/memory_budget.h, GlMemoryEstimate; docs/performance.md, "Validate's memory").
+  const SceneFootprint footprint = scene_footprint(scene);
+  const MemoryEstimate predicted = estimate_memory(settings, footprint);
+  const bool gl = flags.backend == "gl";
+  const GlMemoryEstimate predicted_gl = gl ? estimate_gl_memory(settings, footprint) : GlMemoryEstimate();
+  const uint64_t predicted_total = gl ? predicted_gl.total() : predicted.total();
+  if (gl) warn_if_memory_short(predicted_gl, "vct render");
+  else warn_if_memory_short(predicted, "vct render");
   const std::function<FrameResult()> render_frame = prepare_frame(scene, settings, flags);
   // Locked before rendering, so a second process writing the same --out is refused at once.
   RunDir run(common.out.empty() ? default_out_dir("render", scene_path) : common.out, RunRole::Run);
@@ -245,17 +252,18 @@ void run_render(const std::string& scene_path, const CommonOptions& common, cons
     write_explain(run, scene, frame, settings.vct, *explain);
   }
   // Predicted up front (validate_settings refuses what cannot fit) beside what the run used.
-  run.json()["memory"] = {{"predicted_bytes", predicted.total()},
-                          {"predicted_voxel_bytes", predicted.voxels},
-                          {"predicted_scene_bytes", predicted.scene},
-                          {"predicted", format_bytes(predicted.total())},
+  run.json()["memory"] = {{"predicted_bytes", predicted_total},
+                          {"predicted_voxel_bytes", gl ? predicted_gl.textures + predicted_gl.frame : predicted.voxels},
+                          {"predicted_scene_bytes", gl ? predicted_gl.scene : predicted.scene},
+                          {"predicted_fragments", fragment_count(footprint, settings.vct.grid)},  // Steiner's count
+                          {"predicted", format_bytes(predicted_total)},
                           {"peak_rss_bytes", peak_rss_bytes()},
                           {"peak_rss", format_bytes(peak_rss_bytes())}};
   run.finish();
   std::printf("vct render: %s frame of %s in %.0f ms, memory predicted %s, peak RSS %s -> %s\n",
               frame.backend.c_str(), scene.source.c_str(),
               frame.timings_ms.count("total") ? frame.timings_ms.at("total") : 0.0,
-              format_bytes(predicted.total()).c_str(), format_bytes(peak_rss_bytes()).c_str(), run.path().c_str());
+              format_bytes(predicted_total).c_str(), format_bytes(peak_rss_bytes()).c_str(), run.path().c_str());
 }
 
 }  // namespace

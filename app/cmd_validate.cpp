@@ -27,6 +27,7 @@
 #include "pt/progress.h"
 #include "stages/explain.h"
 #include "stages/scene_footprint.h"
+#include "stages/stage_registry.h"
 #include "stages/stage_registry_text.h"
 #include "scene/gltf_loader.h"
 #include "scene/exposure.h"
@@ -99,10 +100,20 @@ void write_explanation(RunDir& run, const Scene& scene, const BackendRun& ref, c
   write_png_linear(ed.file("explain.png"), e.picture, 0.0f, 1.0f);
 }
 
-// Predicted (by phase) and measured peak, as `vct render` writes its own.
-nlohmann::json validate_memory_json(const ValidateMemoryEstimate& e) {
-  return {{"predicted_bytes", e.total()},
-          {"predicted", format_bytes(e.total())},
+// Whether voxel.radiance was re-judged on GL's own shadow maps or bounce input (its isolated
+// verdict keeps the end-to-end one in extra): then that phase's prediction is the run's.
+bool radiance_rejudged(const std::optional<cmp::Report>& report) {
+  if (!report) return false;
+  for (const cmp::StageVerdict& v : report->stages)
+    if (v.stage == stage_names::kVoxelRadiance) return v.extra.contains("end_to_end");
+  return false;
+}
+
+// Predicted (by phase; `predicted` the phases that ran) and measured peak, as `vct render` writes its own.
+nlohmann::json validate_memory_json(const ValidateMemoryEstimate& e, uint64_t predicted) {
+  return {{"predicted_bytes", predicted},
+          {"predicted", format_bytes(predicted)},
+          {"predicted_during_gl_bytes", e.during_gl()},
           {"predicted_during_ref_bytes", e.during_ref()},
           {"predicted_during_checks_bytes", e.during_checks()},
           {"predicted_with_reinjection_bytes", e.with_reinjection()},
@@ -230,7 +241,16 @@ void check_sweeps(const Scene& scene, const Settings& s, const ValidateOptions& 
 // this before it sends any task).
 int check_input_only(const ValidateOptions& o) {
   const Settings s = resolve(o.common);
-  check_sweeps(load_scene_and_warn(o.scene, o.common.scene_load), s, o);
+  Scene scene = load_scene_and_warn(o.scene, o.common.scene_load);  // the camera may be fitted below
+  check_sweeps(scene, s, o);
+  // What the run would need, as its first line says (docs/performance.md, "Validate's memory").
+  const ValidateMemoryEstimate e =
+      estimate_validate_memory(fit_image_to_camera_and_warn(s, scene, o.common), scene_footprint(scene));
+  const auto mib = [](uint64_t b) { return double(b) / double(1 << 20); };
+  std::printf("memory predicted %.0f MiB (while GL renders %.0f, while the reference renders %.0f, while the stage "
+              "sets are compared %.0f; %.0f MiB if voxel.radiance is re-judged on GL's own shadow maps)\n",
+              mib(e.total()), mib(e.during_gl()), mib(e.during_ref()), mib(e.during_checks()), mib(e.with_reinjection()));
+  warn_if_memory_short(e, "vct validate");
   return kExitOk;
 }
 
@@ -311,7 +331,8 @@ int run(const ValidateOptions& o) {
   run.json()["stage_registry"] = stage_registry_json();
   // Predicted with the loaded scene before anything renders; a run that will not fit is warned
   // about now, not found out in the allocator (docs/performance.md, "Validate's memory").
-  const ValidateMemoryEstimate predicted = estimate_validate_memory(s, scene_footprint(scene));
+  const SceneFootprint footprint = scene_footprint(scene);
+  const ValidateMemoryEstimate predicted = estimate_validate_memory(s, footprint);
   std::printf("vct validate: %s  %dx%d  grid %d  spp %d  threads %d  memory predicted %s (%s if voxel.radiance is "
               "re-judged on GL's own shadow maps)  -> %s\n",
               scene.source.c_str(), s.vct.width, s.vct.height, s.vct.grid, s.pt.spp, thread_count(),
@@ -322,7 +343,7 @@ int run(const ValidateOptions& o) {
   // GL first: the reference then emulates the coverage rule the driver actually ran.
   progress.begin("GL frame (" + std::to_string(s.vct.width) + "x" + std::to_string(s.vct.height) + ", grid " +
                  std::to_string(s.vct.grid) + ")");
-  const BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s, o.gl); }, true);
+  BackendRun gl = phases.time("render gl", [&] { return run_gl_backend(scene, s, o.gl); }, true);
   progress.end();
   record_frame(run, gl, "gl");
   std::printf("  gl   %-12s %8.1f s  %s\n", gl.status.substr(0, 60).c_str(), gl.ms / 1000,
@@ -382,7 +403,9 @@ int run(const ValidateOptions& o) {
   }
   if (o.require_gl && !gl.ok() && gl.status.rfind("error", 0) != 0) exit_code = kExitNoEnvironment;
   run.json()["exit_code"] = exit_code;
-  run.json()["memory"] = validate_memory_json(predicted);  // the report's Python is not counted
+  const uint64_t predicted_run = radiance_rejudged(checks.report) ? predicted.with_reinjection() : predicted.total();
+  run.json()["memory"] = validate_memory_json(predicted, predicted_run);  // the report's Python is not counted
+  run.json()["memory"]["predicted_fragments"] = fragment_count(footprint, s.vct.grid);  // Steiner's count
   run.json()["phases"] = phases.to_json();  // the report shows the phases before it (its own come after)
   run.save();
   std::string index, why;
@@ -398,8 +421,8 @@ int run(const ValidateOptions& o) {
   }
   run.finish();  // everything is written; the report is rebuilt from these files alone
   std::fputs(phases.table().c_str(), stdout);
-  std::printf("memory: predicted %s, peak RSS %s (predicted / peak %.2f)\n", format_bytes(predicted.total()).c_str(),
-              format_bytes(peak_rss_bytes()).c_str(), double(predicted.total()) / double(std::max<uint64_t>(peak_rss_bytes(), 1)));
+  std::printf("memory: predicted %s, peak RSS %s (predicted / peak %.2f)\n", format_bytes(predicted_run).c_str(),
+              format_bytes(peak_rss_bytes()).c_str(), double(predicted_run) / double(std::max<uint64_t>(peak_rss_bytes(), 1)));
   if (!o.no_report) {
     if (index.empty()) std::printf("report: not written: %s\n", why.c_str());
     else std::printf("%s\n", index.c_str());

@@ -30,7 +30,7 @@ struct Task {
 };
 }  // namespace
 
-CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, BackendRun& ref, const BackendRun& gl,
+CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, BackendRun& ref, BackendRun& gl,
                         const PtRun& pt, PhaseTimes& phases, bool keep_ref_frame) {
   CheckResults r;
   // Named before any task starts: the writers then only read the sets the others read.
@@ -40,7 +40,9 @@ CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, Back
     if (!keep_ref_frame) ref.frame->mips = VoxelMips();  // no stage; the cones were traced
     cmp::name_stage_files(run.file("ref"), r.ref_set);
   }
-  if (gl.ok()) cmp::name_stage_files(run.file("gl"), r.gl_set = cmp::stage_set_from_frame(*gl.frame, s.vct));
+  // The GL frame's voxel grid moves into its set: the judge's passes on GL's own inputs read its
+  // mips, shadow maps, G-buffer and images, never the grid (docs/performance.md, "Validate's memory").
+  if (gl.ok()) cmp::name_stage_files(run.file("gl"), r.gl_set = cmp::stage_set_taking_voxels(*gl.frame, s.vct));
   std::vector<Task> tasks;
   // The longest chain first (one thread: its inner loops run serially inside a task).
   if (ref.ok() && gl.ok())

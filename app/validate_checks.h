@@ -29,8 +29,9 @@ struct CheckResults {
 /// Runs the tasks and records each as a concurrent phase (its own wall and thread CPU time)
 /// inside one counted phase for the whole group. Unless `keep_ref_frame`, the reference's frame
 /// gives its stages to ref_set (moved, not copied) and its mips are freed: nothing after the
-/// checks reads it then (at grid 256 that is ~1 GB less at the peak; docs/performance.md).
-CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, BackendRun& ref, const BackendRun& gl,
+/// checks reads it then (at grid 256 that is ~1 GB less at the peak; docs/performance.md). The GL
+/// frame's voxel grid moves into gl_set (cmp::stage_set_taking_voxels); the rest of it stays.
+CheckResults run_checks(RunDir& run, const Scene& scene, const Settings& s, BackendRun& ref, BackendRun& gl,
                         const PtRun& pt, PhaseTimes& phases, bool keep_ref_frame);
 
 /// Writes the path tracer's AOVs (EXR, and a PNG preview for the means) under RUN/pt.

@@ -5,10 +5,11 @@ and 4): prints predicted / peak for the built-in Cornell box with each triangle 
 and CPU time). A benchmark, run by hand; figures in docs/performance.md ("Scale: memory predicted
 and measured", "Validate at grid 256").
 
-  bench/memory_bench.py [--command render|validate] [--splits 1,4,8,20] [--grids 64,128,256]
+  bench/memory_bench.py [--command render|gl|validate] [--splits 1,4,8,20] [--grids 64,128,256]
                         [--size 128 (render) / 256 (validate)] [--vct build/bin/vct]
 
-`vct render` and `vct validate` write memory.predicted_bytes (estimate_memory /
+`--command gl` measures `vct render --backend gl` (llvmpipe's textures, buffers and the frame it
+reads back: estimate_gl_memory). `vct render` and `vct validate` write memory.predicted_bytes (estimate_memory /
 estimate_validate_memory, ref/core/memory_budget.cpp) and memory.peak_rss_bytes (getrusage) into
 run.json; both are read back here.
 """
@@ -98,14 +99,14 @@ def split_scene(n, path):
 
 
 def measure(vct, command, scene, grid, size, out):
-    """(predicted bytes, peak RSS bytes, run.json) of one `vct render --backend ref` or one
+    """(predicted bytes, peak RSS bytes, run.json) of one `vct render --backend ref` (or gl) or one
     `vct validate --no-report` (its default 64 spp: the path tracer's time counts in its renders)."""
-    if command == "render":
-        args = [vct, "render", scene, "--backend", "ref"]
+    if command in ("render", "gl"):
+        args = [vct, "render", scene, "--backend", "ref" if command == "render" else "gl"]
     else:
         args = [vct, "validate", scene, "--no-report"]
     subprocess.run(args + ["--grid", str(grid), "--width", str(size), "--height", str(size), "--out", out],
-                   check=command == "render", stdout=subprocess.DEVNULL)
+                   check=command != "validate", stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "run.json")) as f:
         run = json.load(f)
     return run["memory"]["predicted_bytes"], run["memory"]["peak_rss_bytes"], run
@@ -125,8 +126,9 @@ def main(argv):
     ap.add_argument("--grids", default="64,128,256")
     ap.add_argument("--size", type=int, default=128)
     ap.add_argument("--vct", default=os.environ.get("VCT_BINARY", os.path.join(ROOT, "build", "bin", "vct")))
-    ap.add_argument("--command", choices=("render", "validate"), default="render",
-                    help="validate: its predicted/peak and its non-render/renders ratio (wall, CPU) per row")
+    ap.add_argument("--command", choices=("render", "gl", "validate"), default="render",
+                    help="gl: vct render --backend gl; validate: its predicted/peak and its non-render/renders "
+                    "ratio (wall, CPU) per row")
     a = ap.parse_args(argv)
     if a.command == "validate" and a.size == 128 and "--size" not in argv:
         a.size = 256  # validate's default image

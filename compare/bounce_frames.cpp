@@ -122,6 +122,15 @@ double energy_summation_allowance(size_t voxels, double reference, double test) 
   return n > 1.0 ? (n - 1.0) * std::ldexp(1.0, -53) * (std::abs(reference) + std::abs(test)) : 0.0;
 }
 
+namespace {
+// voxel.radiance's voxel count: the test set's, where validate moved the frame's grid into it
+// (compare/stage_set.h, stage_set_taking_voxels); the frame's otherwise. Both are the same grid.
+size_t radiance_voxels(const FrameResult& test, const StageSet& test_set) {
+  const auto it = test_set.volumes.find(st::kVoxelRadiance);
+  return it != test_set.volumes.end() ? it->second.voxel_count() : test.voxels.radiance.voxel_count();
+}
+}  // namespace
+
 void judge_bounce_frames(Report& end_to_end, const Scene& scene, const FrameResult& test, const VctSettings& s,
                          const StageSet& test_set, const CompareOptions& opt) {
   const size_t frames = test.multibounce_frames.size() + 1;
@@ -144,7 +153,7 @@ void judge_bounce_frames(Report& end_to_end, const Scene& scene, const FrameResu
   // The last frame: voxel.radiance, re-judged on the test's own bounce input (isolated_stages.cpp).
   const StageVerdict* last = find_verdict(end_to_end, st::kVoxelRadiance);
   if (last && last->extra.contains("end_to_end"))
-    if (auto e = frame_energy(*last, int(frames), test, frames, test.voxels.radiance.voxel_count())) energies.push_back(*e);
+    if (auto e = frame_energy(*last, int(frames), test, frames, radiance_voxels(test, test_set))) energies.push_back(*e);
   replace(end_to_end, judge_energy(energies));
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <set>
+#include <utility>
 
 #include "core/error.h"
 #include "core/parallel_tasks.h"
@@ -67,6 +68,31 @@ StageSet stage_set_from_frame(FrameResult&& f, const VctSettings& s) {
     for (int i : frame_members(f, row)) {  // every member found before any is moved
       if (row.kind == StageKind::Image) set.images[stage_name(row, i)] = std::move(*row.image(f, i, false));
       else set.volumes[stage_name(row, i)] = std::move(*row.volume(f, i, false));
+    }
+  return set;
+}
+
+namespace {
+bool in_voxel_grid(const FrameResult& f, const Volume* v) {
+  const VoxelGrid& g = f.voxels;
+  for (const Volume* member : {&g.radiance, &g.fragments, &g.cas_lo, &g.cas_hi, &g.shading_slack, &g.exact,
+                               &g.occupancy_tie, &g.fragment_count_range})
+    if (v == member) return true;
+  return false;
+}
+}  // namespace
+
+StageSet stage_set_taking_voxels(FrameResult& f, const VctSettings& s) {
+  StageSet set = stage_set_header(f, s);
+  for (const StageRow& row : stage_rows())
+    for (int i : frame_members(f, row)) {  // every member found before any is moved
+      if (row.kind == StageKind::Image) {
+        set.images[stage_name(row, i)] = *frame_image(f, row, i);
+        continue;
+      }
+      Volume* v = row.volume(f, i, false);
+      // A moved-from Volume keeps its sizes; emptied, the frame says honestly that it has no grid.
+      set.volumes[stage_name(row, i)] = in_voxel_grid(f, v) ? std::exchange(*v, Volume()) : *v;
     }
   return set;
 }

@@ -43,6 +43,13 @@ StageSet stage_set_from_frame(const FrameResult& f, const VctSettings& s);
 /// not read again costs no copy (at grid 256, ~700 MB; docs/performance.md).
 StageSet stage_set_from_frame(FrameResult&& f, const VctSettings& s);
 
+/// Same, copying every stage but the voxel grid's (radiance, fragments and whatever else
+/// VoxelGrid holds), which it moves: `f` keeps its shadow maps, G-buffer, images, mips and bounce
+/// volumes, which the isolated passes read (compare/isolated_stages.h), but not the grid, which
+/// none does: at grid 256 that is 20 B per voxel, 320 MiB, less at validate's peak
+/// (docs/performance.md, "Validate's memory").
+StageSet stage_set_taking_voxels(FrameResult& f, const VctSettings& s);
+
 /// A frame's stage set without its stages: backend, storage, reduction, settings, info, facts.
 StageSet stage_set_header(const FrameResult& f, const VctSettings& s);
 

@@ -1,6 +1,7 @@
 #include "core/memory_budget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -18,8 +19,9 @@ constexpr uint64_t kMiB = 1024 * 1024;
 // machine: nearly all of it the shared libraries (OpenImageIO and its codecs, OpenCV, Embree).
 constexpr uint64_t kProcessBaseline = 136 * kMiB;
 
-// Fragments per N^2 the voxelizer emits: a room is mostly its walls, N^2 voxels each. The built-in
-// Cornell box gives 7.1 N^2 at 64^3 and 5.8 (GPU rule) / 6.5 (conservative) N^2 at 256^3.
+// Fragments per N^2 the voxelizer emits when the scene is not known yet: a room is mostly its
+// walls, N^2 voxels each. The built-in Cornell box gives 7.1 N^2 at 64^3 and 5.8 (GPU rule) / 6.5
+// (conservative) N^2 at 256^3. With a scene its Steiner count replaces it (fragment_count).
 constexpr uint64_t kFragmentsPerSlice = 8;
 
 // Per fragment: the sorted VoxelFragment list (48 B), the per-triangle lists it was gathered from
@@ -40,16 +42,23 @@ uint64_t mip_bytes(uint64_t n3, bool anisotropic) {
 
 // Peak of inject_with_multibounce (stages/multibounce.cpp) with what pipeline.cpp holds around it.
 // Voxelization before it needs less: 16 B/voxel of occupancy volumes and two fragment lists.
-uint64_t voxel_bytes(const VctSettings& v) {
+uint64_t voxel_bytes(const VctSettings& v, uint64_t fragments, bool particles) {
   const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
   // 1-channel float volumes alive all frame: Voxelization::occupancy, the FrameResult's copy of
   // the conservative occupancy and, with the GPU rule, the hole map.
   const uint64_t occupancy = n3 * (4 + 4 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0));
-  // VoxelGrid: RGBA float radiance + fragment count; the CAS and running-mean models add
-  // their lo/hi RGBA bounds.
-  const uint64_t grid = n3 * (16 + 4 + (v.reduction == Reduction::CasRgba8 || v.reduction == Reduction::RunningMeanHalf ? 32 : 0));
+  // VoxelGrid: RGBA float radiance + fragment count and the reference's freedoms
+  // (freedoms/voxel_freedoms.cpp: shading slack, exactness and occupancy tie, a float each, and the
+  // fragment count range, two); the CAS and running-mean models add their lo/hi RGBA bounds.
+  const uint64_t freedoms = 4 + 4 + 4 + 8;
+  const uint64_t cas = v.reduction == Reduction::CasRgba8 || v.reduction == Reduction::RunningMeanHalf ? 32 : 0;
+  const uint64_t grid = n3 * (16 + 4 + freedoms + cas);
   const uint64_t mips = mip_bytes(n3, v.anisotropic);
-  uint64_t bytes = occupancy + grid + mips + kFragmentsPerSlice * n * n * kBytesPerFragment;
+  uint64_t bytes = occupancy + grid + mips + fragments * kBytesPerFragment;
+  // With particle emitters the particle ties (freedoms/reference_freedoms.cpp) reduce the fragments
+  // again beside the finished frame: a second radiance and count (and CAS bounds). demo_room at
+  // 256^3 held ~230 MiB more than the built-in scene for it (docs/performance.md, "Validate's memory").
+  if (particles && v.particles) bytes += n3 * (16 + 4 + cas);
   // Solid voxelization / thickening (stages/voxel_fill.cpp), during injection: byte masks for the
   // surface, the facing, the closed rays, each fill's result and their union.
   if (v.solid_voxelization || v.surface_thickening_voxels > 0) bytes += 6 * n3;
@@ -85,6 +94,17 @@ uint64_t image_bytes(const VctSettings& v, int shadow_layers) {
 
 }  // namespace
 
+uint64_t fragment_count(const SceneFootprint& scene, int n) {
+  const uint64_t g = uint64_t(n);
+  if (scene.triangles == 0) return kFragmentsPerSlice * g * g;
+  // The conservative list holds one fragment per (triangle, voxel) it meets: the Steiner count in
+  // expectation. The GPU rule's list is no longer: each of its fragments is one covered pixel of
+  // the triangle's dominant-axis projection, a pixel the projection touches, i.e. a column of
+  // voxels along that axis of which the triangle meets at least one (docs/performance.md,
+  // "Validate's memory": 0.2-1.1 of it measured on the split box and the heightfields).
+  return uint64_t(std::ceil(steiner_voxels(scene.fragment_terms, scene.triangles, n)));
+}
+
 bool keeps_multibounce_frames(const VctSettings& v) {
   const uint64_t n = uint64_t(v.grid), frame_bytes = n * n * n * 16;
   return v.bounces > 1 && frame_bytes * uint64_t(v.bounces - 1) <= 256 * kMiB;
@@ -94,7 +114,7 @@ MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   const VctSettings& v = s.vct;
   MemoryEstimate e;
   e.baseline = kProcessBaseline;
-  e.voxels = voxel_bytes(v);
+  e.voxels = voxel_bytes(v, fragment_count(scene, v.grid), scene.particles);
   e.images = image_bytes(v, scene.shadow_layers);
   // Besides the G-buffer's VisibilityBuffer (counted in the images: it is kept for the freedoms),
   // while the raster alternatives are found (freedoms/gbuffer_ties.h) up to two more of 22 B/pixel
@@ -112,13 +132,13 @@ MemoryEstimate estimate_memory(const Settings& s, const SceneFootprint& scene) {
   // Without alpha masks a shadow map's ties need no more than its band of scratch per thread.
   const uint64_t light =
       scene.alpha_tested ? (3 * 22 + 16) * uint64_t(v.shadow_map_size) * uint64_t(v.shadow_map_size) : 0;
-  e.raster_scratch = std::max(camera, light);
+  e.raster_scratch = std::max(camera, light) + kTransientBytesPerTriangle * scene.triangles;
   // Path tracer: 16 double accumulators (mean and variance of the AOVs) per pixel, and each
   // pixel's first vertex while they fit in their budget.
   const uint64_t pt_pixels = uint64_t(s.pt.width) * uint64_t(s.pt.height);
   e.path_tracer = pt_pixels * 16 * 8;
   if (pt_pixels * kPtFirstVertexBytes <= kPtFirstVertexBudget) e.path_tracer += pt_pixels * kPtFirstVertexBytes;
-  e.scene = scene.triangles * kBytesPerTriangle + scene.texture_bytes;
+  e.scene = scene.triangles * kSceneBytesPerTriangle + scene.texture_bytes;
   return e;
 }
 
@@ -134,10 +154,12 @@ uint64_t shared_stage_bytes(const VctSettings& v) {
 }
 
 // The reference's own voxel stages: shading slack, exactness, occupancy tie, conservative
-// occupancy (1 float each), the hole map with the GPU rule, the CAS bounds (2 RGBA floats).
+// occupancy (1 float each), the fragment count range (2), the hole map with the GPU rule, the CAS
+// bounds (2 RGBA floats).
 uint64_t ref_only_stage_bytes(const VctSettings& v) {
   const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
-  return n3 * (4 * 4 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0) + (v.reduction == Reduction::CasRgba8 ? 32 : 0));
+  return n3 * (4 * 4 + 8 + (v.voxelizer == Voxelizer::GpuEmulation ? 4 : 0) +
+               (v.reduction == Reduction::CasRgba8 ? 32 : 0));
 }
 
 // Measured with the built-in scene (2 k and 1 M triangles, grids 64-256; docs/performance.md,
@@ -154,6 +176,23 @@ constexpr uint64_t kSceneKeptPerTriangle = 160;
 constexpr uint64_t kJudgeBytesPerVoxel = 12;
 }  // namespace
 
+namespace {
+// The re-judgement of voxel.radiance on GL's own inputs (compare/isolated_stages.cpp,
+// VoxelInjection and judged_voxels): one voxelization with its occupancy (4 B per voxel) and its
+// fragments, one judged grid with its freedoms (as voxel_bytes counts it) and the copy of its
+// radiance kept around the particles (16 B, freedoms/voxel_freedoms.cpp); with a bounce input, that
+// input's mips. No second pyramid, hole map or kept frames: built-in scene at 256^3 with 2 bounces,
+// 4 976 MiB measured against 4 677 predicted so (5 637 when it counted the frame's whole voxel
+// peak again; docs/performance.md, "Validate's memory").
+uint64_t reinjection_bytes(const VctSettings& v, uint64_t fragments) {
+  const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
+  const uint64_t cas = v.reduction == Reduction::CasRgba8 || v.reduction == Reduction::RunningMeanHalf ? 32 : 0;
+  uint64_t bytes = n3 * (4 + (16 + 4 + 4 + 4 + 4 + 8 + cas) + 16) + fragments * kBytesPerFragment;
+  if (v.bounces > 1) bytes += mip_bytes(n3, v.anisotropic);
+  return bytes;
+}
+}  // namespace
+
 ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFootprint& scene, bool gl) {
   const VctSettings& v = s.vct;
   const uint64_t n = uint64_t(v.grid), n3 = n * n * n;
@@ -164,8 +203,13 @@ ValidateMemoryEstimate estimate_validate_memory(const Settings& s, const SceneFo
   e.scene_kept = kSceneKeptPerTriangle * scene.triangles + 2 * scene.texture_bytes;
   e.after_renders = kAfterRenders;
   if (gl) {
+    e.gl = estimate_gl_memory(s, scene);
+    e.unexposed_scene = kSceneKeptPerTriangle / 2 * scene.triangles + scene.texture_bytes;
     e.gl_during_ref = kGlDuringRef;
-    e.gl_frame = shared + 16 * n3;  // its mips' base level too: the re-trace reads it
+    e.gl_frame = gl_frame_bytes(v, scene.shadow_layers);  // its mips' base level too: the re-trace reads it
+    e.gl_grid = gl_grid_bytes(v);
+    e.rejudges_radiance = v.bounces >= 2;
+    e.reinjection = reinjection_bytes(v, fragment_count(scene, v.grid));
     e.stage_sets += shared;
     e.judge_scratch = kJudgeBytesPerVoxel * n3;
   }
@@ -206,13 +250,22 @@ bool warn_if_memory_short(const MemoryEstimate& e, const char* who, uint64_t ava
   return true;
 }
 
+bool warn_if_memory_short(const GlMemoryEstimate& e, const char* who, uint64_t available) {
+  if (available == 0 || e.total() <= available) return false;
+  std::fprintf(stderr, "%s: warning: this run needs about %s (scene %s, GL textures %s, frame read back %s), but this "
+               "machine has %s\n", who, format_bytes(e.total()).c_str(), format_bytes(e.scene).c_str(),
+               format_bytes(e.textures).c_str(), format_bytes(e.frame).c_str(), format_bytes(available).c_str());
+  return true;
+}
+
 bool warn_if_memory_short(const ValidateMemoryEstimate& e, const char* who, uint64_t available) {
   if (available == 0 || e.with_reinjection() <= available) return false;
   std::fprintf(stderr,
-               "%s: warning: this run needs about %s (while the reference renders beside the GL frame %s; while "
-               "the stage sets are compared %s, %s where voxel.radiance is re-judged on GL's own shadow maps; "
-               "scene %s), but this machine has %s\n",
-               who, format_bytes(e.total()).c_str(), format_bytes(e.during_ref()).c_str(),
+               "%s: warning: this run needs about %s (while GL renders %s; while the reference renders beside the "
+               "GL frame %s; while the stage sets are compared %s, %s where voxel.radiance is re-judged on GL's "
+               "own shadow maps; scene %s), but this machine has %s\n",
+               who, format_bytes(e.total()).c_str(), format_bytes(e.during_gl()).c_str(),
+               format_bytes(e.during_ref()).c_str(),
                format_bytes(e.during_checks()).c_str(), format_bytes(e.with_reinjection()).c_str(),
                format_bytes(e.ref.scene).c_str(), format_bytes(available).c_str());
   return true;

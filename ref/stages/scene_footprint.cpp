@@ -15,6 +15,14 @@ SceneFootprint scene_footprint(const Scene& scene) {
       for (const TextureLevel& level : chain) f.texture_bytes += level.rgba8.size();
   }
   f.alpha_tested = scene_has_alpha_test(scene);
+  f.particles = !scene.emitters.empty();
+  // In units of the voxel volume's edge, so one sum serves every grid (core/steiner_count.h).
+  for (const uvec3& t : scene.triangles) {
+    const auto at = [&](uint32_t i) { return glm::dvec3(scene.volume.to_texture(scene.positions[i])); };
+    const SteinerTerms one = steiner_terms(at(t.x), at(t.y), at(t.z));
+    f.fragment_terms.projected_area += one.projected_area;
+    f.fragment_terms.extent += one.extent;
+  }
   return f;
 }
 

@@ -52,6 +52,22 @@ TEST(BounceFrames, TheReferenceAsItsOwnTestPassesEveryFrame) {
   for (const auto& f : energy.extra["frames"]) EXPECT_EQ(f["test"], f["reference_on_test_inputs"]) << energy.note;
 }
 
+// vct validate moves the test frame's grid into its set before judging (stage_set_taking_voxels,
+// app/validate_checks.cpp): the energy's summation allowance then counts the set's voxels, and the
+// report is the one judged on the whole frame, note for note.
+TEST(BounceFrames, JudgingAFrameWhoseGridWentToItsSetDecidesTheSame) {
+  const Scene scene = load_scene("");
+  const Settings s = box_settings(3);
+  const FrameResult ref = render_ref_frame(scene, s);
+  const Judged whole = judge_as_test(scene, s, ref, ref);
+  FrameResult taken = ref;
+  const StageSet test_set = stage_set_taking_voxels(taken, s.vct);
+  ASSERT_EQ(taken.voxels.radiance.voxel_count(), 0u);
+  const Report rep = judge(stage_set_from_frame(ref, s.vct), test_set, {&scene, &taken, &s.vct});
+  EXPECT_EQ(to_json(rep).dump(), to_json(whole.rep).dump());
+  EXPECT_EQ(test::find(rep, "voxel.energy").checked, 3u);
+}
+
 // The fault's frames: frame 2 injected with no bounce light (it read an empty texture), frame 3
 // with the bounce light of frame 1 (the texture it writes held frame 1's mips).
 FrameResult reads_current_frame(const Scene& scene, const Settings& s, const FrameResult& ref) {

@@ -58,6 +58,43 @@ TEST(StageSetMove, MovedSetEqualsTheCopiedOneAnisotropicMultibounceCas) {
   expect_moved_equals_copied(s);
 }
 
+// vct validate's GL frame gives only its voxel grid to its set (stage_set_taking_voxels): the set
+// is the copied one bit for bit, the frame keeps everything the passes on its own inputs read
+// (mips, shadow maps, G-buffer, images, bounce volumes) and has no grid left.
+void expect_taking_voxels_equals_copied(const Settings& s) {
+  const Scene scene = load_scene("");
+  FrameResult frame = render_ref_frame(scene, s);
+  const StageSet copied = stage_set_from_frame(frame, s.vct);
+  const StageSet taken = stage_set_taking_voxels(frame, s.vct);
+  ASSERT_EQ(taken.images.size(), copied.images.size());
+  ASSERT_EQ(taken.volumes.size(), copied.volumes.size());
+  for (const auto& [name, img] : copied.images) EXPECT_EQ(taken.images.at(name).data, img.data) << name;
+  for (const auto& [name, vol] : copied.volumes) {
+    EXPECT_EQ(taken.volumes.at(name).data, vol.data) << name;
+    EXPECT_EQ(taken.volumes.at(name).nx, vol.nx) << name;
+  }
+  EXPECT_EQ(frame.voxels.radiance.voxel_count(), 0u);  // emptied, sizes too: nothing reads a stale grid
+  EXPECT_EQ(frame.voxels.fragments.voxel_count(), 0u);
+  EXPECT_TRUE(frame.voxels.shading_slack.data.empty());
+  EXPECT_EQ(copied.volumes.at("voxel.radiance").voxel_count(), size_t(s.vct.grid) * s.vct.grid * s.vct.grid);
+  EXPECT_FALSE(frame.mips.iso.empty() || frame.mips.iso[0].data.empty());
+  EXPECT_FALSE(frame.mips.iso.size() < 2 || frame.mips.iso[1].data.empty());
+  EXPECT_FALSE(frame.images.final_image.data.empty());
+  EXPECT_FALSE(frame.gbuffer.position.data.empty());
+  EXPECT_FALSE(frame.shadow_maps.empty() || frame.shadow_maps[0].depth.data.empty());
+  if (s.vct.bounces > 1) EXPECT_FALSE(frame.bounce_input.data.empty());
+}
+
+TEST(StageSetMove, TakingVoxelsEqualsTheCopiedSetAndKeepsTheRest) { expect_taking_voxels_equals_copied(small()); }
+
+TEST(StageSetMove, TakingVoxelsAnisotropicMultibounceCas) {
+  Settings s = small();
+  s.vct.anisotropic = true;
+  s.vct.bounces = 2;
+  s.vct.reduction = Reduction::CasRgba8;
+  expect_taking_voxels_equals_copied(s);
+}
+
 TEST(StageSetMove, WithoutStagesKeepsEveryOtherField) {
   StageSet set;
   set.backend = "gl";
