@@ -1,8 +1,11 @@
 #include "freedoms/fragment_exactness.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/parallel.h"
+#include "freedoms/snap_window.h"
 #include "freedoms/texture_slack.h"
 #include "scene/surface.h"
 #include "stages/light_sample.h"
@@ -10,30 +13,61 @@
 namespace vct {
 
 namespace {
-// False only where no correct GL lets `light` add anything at p: behind the normal, outside a
-// spot's outer cone or beyond a light's glTF range, each by kBehindLightMargin (the falloffs
-// of vct_shared.h are exactly zero there).
-bool light_may_reach(const Light& light, const VctSettings& settings, const vec3& p, const vec3& n) {
-  const LightSample ls = sample_light(light, settings.light_model, p);
-  if (glm::dot(n, ls.l) < -kBehindLightMargin) return false;
-  if (light.is_spot() && glm::dot(-ls.l, light.direction) < std::cos(light.outer_cone_angle) - kBehindLightMargin)
-    return false;
-  // glTF's range window only (the seed model has no range).
-  if (settings.light_model == LightModel::Gltf && !light.is_directional() && light.range > 0.0f &&
-      ls.distance > light.range * (1.0f + kBehindLightMargin))
-    return false;
-  return true;
+// The fragment's point at one corner of its snap square (freedoms/snap_window.h): its position and
+// its interpolated normal before normalisation, Σ b_i n_i, which is affine in the window offset.
+struct SnapCorner {
+  vec3 position{0.0f};
+  glm::dvec3 normal{0.0};
+};
+
+SnapCorner snap_corner(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+  const VoxelFragment g = shifted_fragment(scene, w, f, du, dv);
+  const uvec3 t = scene.triangles[f.triangle];
+  const double b1 = double(g.b1), b2 = double(g.b2);
+  return {g.position, (1.0 - b1 - b2) * glm::dvec3(scene.normals[t.x]) + b1 * glm::dvec3(scene.normals[t.y]) +
+                          b2 * glm::dvec3(scene.normals[t.z])};
+}
+
+// False only where no correct GL lets `light` add anything anywhere the snap may put the fragment:
+// behind the normal, outside a spot's outer cone or beyond a light's glTF range over the whole
+// snap square, each by kBehindLightMargin (the falloffs of vct_shared.h are exactly zero there).
+// The normal's n.l is affine over the square for a fixed light direction and |n| convex, so
+// n.l / |n| <= M / N, M the largest corner n.l (< 0) and N the largest corner |n|; the light
+// direction's own change over the square (|Δp| / distance) is added to the margin, twice.
+bool light_may_reach(const Light& light, const VctSettings& settings, const SnapCorner* corners, int count) {
+  const bool ranged = settings.light_model == LightModel::Gltf && !light.is_directional() && light.range > 0.0f;
+  bool outside_cone = light.is_spot(), beyond_range = ranged;
+  double top = -std::numeric_limits<double>::infinity(), longest = 0.0, moved = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const LightSample ls = sample_light(light, settings.light_model, corners[k].position);
+    outside_cone = outside_cone &&
+                   glm::dot(-ls.l, light.direction) < std::cos(light.outer_cone_angle) - kBehindLightMargin;
+    beyond_range = beyond_range && ls.distance > light.range * (1.0f + kBehindLightMargin);
+    top = std::max(top, glm::dot(corners[k].normal, glm::dvec3(ls.l)));
+    longest = std::max(longest, glm::length(corners[k].normal));
+    if (!light.is_directional())
+      moved = std::max(moved, double(glm::length(corners[k].position - corners[0].position)) / double(ls.distance));
+  }
+  const bool behind = top < -(double(kBehindLightMargin) + 2.0 * moved) * longest;
+  return !(behind || outside_cone || beyond_range);
 }
 }  // namespace
 
-bool fragment_light_is_exact(const Scene& scene, const VoxelFragment& f, const VctSettings& settings,
+bool fragment_light_is_exact(const Scene& scene, const VoxelFragment& f, const VctSettings& settings, int grid,
                              bool bounce) {
   if (bounce) return false;
   const Material& m = scene.materials[scene.triangle_material[f.triangle]];
   if (is_textured(m)) return false;
-  const vec3 n = interpolate_surface(scene, f.triangle, f.b1, f.b2).normal;  // no normal map
+  // Where the snap's reach has no bound (a sliver, SnapWindow::bounded) GL's point may lie anywhere
+  // in the triangle's plane: the light there is not certain.
+  SnapWindow w;
+  if (!snap_window(scene, grid, f, w) || !w.bounded) return scene.lights.empty();
+  const double r = w.reach;
+  const SnapCorner corners[5] = {snap_corner(scene, w, f, 0.0, 0.0), snap_corner(scene, w, f, -r, -r),
+                                 snap_corner(scene, w, f, r, -r), snap_corner(scene, w, f, -r, r),
+                                 snap_corner(scene, w, f, r, r)};
   for (const Light& light : scene.lights)
-    if (light_may_reach(light, settings, f.position, n)) return false;
+    if (light_may_reach(light, settings, corners, 5)) return false;
   return true;
 }
 
@@ -42,7 +76,7 @@ Volume voxel_exactness(const Scene& scene, const Voxelization& vox, const VctSet
   v.channel_names = {"exact"};
   std::vector<uint8_t> exact(vox.fragments.size());
   parallel_for(int64_t(exact.size()), [&](int64_t i) {
-    exact[size_t(i)] = fragment_light_is_exact(scene, vox.fragments[size_t(i)], settings, bounce);
+    exact[size_t(i)] = fragment_light_is_exact(scene, vox.fragments[size_t(i)], settings, vox.n, bounce);
   });
   // Runs of fragments per voxel (sorted by voxel): exact when all of them are.
   size_t b = 0;

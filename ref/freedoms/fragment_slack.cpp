@@ -13,6 +13,7 @@
 #include "freedoms/lod_candidates.h"
 #include "freedoms/lookup_precision.h"
 #include "freedoms/snap_visibility.h"
+#include "freedoms/snap_window.h"
 #include "freedoms/tangent_handedness.h"
 #include "freedoms/texel_breakpoints.h"
 #include "freedoms/texture_slack.h"
@@ -34,70 +35,6 @@ float largest_channel(const vec3& d) { return std::max(d.x, std::max(d.y, d.z));
 // 2.64), red -2.3). A light's size, its unshadowed light or a change of it, is therefore its
 // largest magnitude, not its largest signed channel.
 float largest_magnitude(const vec3& d) { return largest_channel(glm::abs(d)); }
-
-/// A fragment's triangle in its dominant-axis window (voxel units) and how far the snap may move
-/// the fragment there. GL interpolates at the pixel centre c with the barycentrics l' of c in the
-/// *snapped* triangle, so the attributes are those of the original triangle's point
-/// c - sum l'_i d_i, d_i each vertex's snap (at most s per axis). Inside the triangle sum |l'_i| = 1;
-/// a fragment made by a covered MSAA sample with its centre outside is extrapolated, l' reaching
-/// far past [0, 1] on triangles smaller than a voxel (scanned_statue: l = (-1.38, 0.45, 1.93), GL's
-/// point 1.3 s from the reference's). With l' = l(c - e) and e that shift, per axis
-/// |e| <= s (sum |l_i| + G |e|), G = sum over i of |dl_i/du| + |dl_i/dv|, so
-/// |e| <= s sum |l_i| / (1 - s G) where s G < 1 (docs/compare.md, "Voxel shading slack").
-struct SnapWindow {
-  glm::dvec3 w0, e1, e2;     // world vertex 0 and edges
-  double a, b, c, d, det;    // the projected edges (P1 - P0, P2 - P0) along the window's u and v
-  double reach = kVertexSnapStep;  // |e| per window axis, voxels
-  bool bounded = true;             // false where s G >= 1/2 (a sliver): no bound on the shift
-  int axis = 0;                    // the dominant axis (the window's depth)
-  double depth0 = 0.0, depth_e1 = 0.0, depth_e2 = 0.0;  // voxel-space depth of vertex 0 and the edges'
-};
-
-bool snap_window(const Scene& scene, int n, const VoxelFragment& f, SnapWindow& w) {
-  const uvec3 t = scene.triangles[f.triangle];
-  const vec3 p[3] = {scene.positions[t.x], scene.positions[t.y], scene.positions[t.z]};
-  const int axis = dominant_axis(p[0], p[1], p[2]);
-  const int pu = axis == 0 ? 1 : 0, pv = axis == 2 ? 1 : 2;  // as voxelize_gpu.cpp's window axes
-  glm::dvec3 v[3];
-  for (int i = 0; i < 3; ++i) v[i] = to_voxel_space(scene, n, p[i]);
-  w.axis = axis;
-  w.depth0 = v[0][axis], w.depth_e1 = v[1][axis] - v[0][axis], w.depth_e2 = v[2][axis] - v[0][axis];
-  w.a = v[1][pu] - v[0][pu], w.b = v[2][pu] - v[0][pu];
-  w.c = v[1][pv] - v[0][pv], w.d = v[2][pv] - v[0][pv];
-  w.det = w.a * w.d - w.b * w.c;
-  if (std::abs(w.det) < 1e-300) return false;
-  w.w0 = p[0], w.e1 = glm::dvec3(p[1]) - w.w0, w.e2 = glm::dvec3(p[2]) - w.w0;
-  const double g = (std::abs(w.a) + std::abs(w.b) + std::abs(w.c) + std::abs(w.d) + std::abs(w.d - w.c) +
-                    std::abs(w.a - w.b)) / std::abs(w.det);
-  const double sum_l = std::abs(1.0 - double(f.b1) - double(f.b2)) + std::abs(double(f.b1)) + std::abs(double(f.b2));
-  const double sg = kVertexSnapStep * g;
-  w.bounded = sg < 0.5;
-  w.reach = kVertexSnapStep * sum_l / (1.0 - std::min(sg, 0.5));
-  return true;
-}
-
-/// The fragment moved by (du, dv) voxels in its window: barycentrics are affine in window
-/// coordinates, so the shift solves [P1 - P0, P2 - P0] (db1, db2) = (du, dv). `point`, where
-/// given, receives the surface point it was interpolated from (surface_at's).
-VoxelFragment shifted_fragment(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv,
-                               SurfacePoint* point = nullptr) {
-  const double db1 = (w.d * du - w.b * dv) / w.det, db2 = (-w.c * du + w.a * dv) / w.det;
-  VoxelFragment out = f;
-  out.b1 = float(double(f.b1) + db1);
-  out.b2 = float(double(f.b2) + db2);
-  const SurfacePoint sp = interpolate_surface(scene, f.triangle, out.b1, out.b2);
-  out.position = sp.position;
-  out.normal = sp.normal;
-  if (point) *point = sp;
-  return out;
-}
-
-/// The surface point of the fragment moved by (du, dv): interpolate_surface at its barycentrics.
-SurfacePoint surface_at(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
-  SurfacePoint sp;
-  shifted_fragment(scene, w, f, du, dv, &sp);
-  return sp;
-}
 
 /// The fragment moved by one snap offset, its surface point (surface_at's) and its material at
 /// the reference's lambdas: what position_slack and shadow_snap_slack both read, made once.

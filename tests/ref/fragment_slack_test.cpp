@@ -253,31 +253,59 @@ TEST(FragmentSlack, ExactFragmentsAreThoseNoFreedomReaches) {
   sun.kind = LightKind::Directional;
   sun.direction = glm::normalize(vec3(0.0f, 1.0f, 1.0f));  // points up: the light comes from below
   s.lights = {sun};
-  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, false));
-  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, true));  // a bounce term: float cones
+  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, 4, false));
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, 4, true));  // a bounce term: float cones
   s.lights[0].direction = -s.lights[0].direction;
-  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, 4, false));
   Light spot;
   spot.kind = LightKind::Spot;
   spot.position = vec3(0.0f, 1.0f, 0.0f);
   spot.direction = glm::normalize(vec3(1.0f, 0.0f, 0.0f));  // sideways: 90 degrees off the floor
   spot.outer_cone_angle = glm::radians(30.0f);
   s.lights = {spot};
-  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, false));
+  EXPECT_TRUE(fragment_light_is_exact(s, f, settings, 4, false));
   s.lights[0].direction = vec3(0.0f, -1.0f, 0.0f);  // down: every fragment within 47 degrees of it
   s.lights[0].outer_cone_angle = glm::radians(60.0f);
-  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, 4, false));
   s.lights.clear();
   Texture t;
   t.width = t.height = 1;
   t.rgba8 = {255, 255, 255, 255};
   s.textures.push_back(t);
   s.materials[m].emissive_texture.texture = 0;
-  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, false));
+  EXPECT_FALSE(fragment_light_is_exact(s, f, settings, 4, false));
   // Per voxel: 1 where every fragment is exact.
   s.materials[m].emissive_texture.texture = -1;
   const Volume v = voxel_exactness(s, vox, settings, false);
   for (const VoxelFragment& g : vox.fragments) EXPECT_EQ(*v.voxel(g.voxel.x, g.voxel.y, g.voxel.z), 1.0f);
+}
+
+// The snap square decides exactness (large hunt seed 116: a heightfield triangle 1/20 voxel wide
+// whose vertex normals differ by 1.6, n.l = -0.018 to the sun at its fragment; llvmpipe lit it).
+// Vertex normals whose n.l (light from +y) is -0.3, +0.3 and -0.06: -0.02 at the centroid, past
+// the margin, but a 2^-8-voxel snap moves the barycentrics of a triangle 0.08 voxel wide by ~0.1
+// and n.l with them past zero. The same triangle 25 times larger moves them 25 times less.
+TEST(FragmentSlack, AFragmentIsExactOnlyWhereNoSnapOfItsPointLetsLightIn) {
+  for (const float size : {0.04f, 1.0f}) {  // world units; the voxel is 0.5 (grid 4 over 2 units)
+    Scene s;
+    const uint32_t m = test::add_material(s, vec3(0.5f), vec3(0.3f));
+    test::add_triangle(s, {0, 0, 0}, {size, 0, 0}, {0, 0, size}, m);
+    const float ys[3] = {-0.3f, 0.3f, -0.06f};
+    for (int k = 0; k < 3; ++k) s.normals[size_t(k)] = glm::normalize(vec3(std::sqrt(1.0f - ys[k] * ys[k]), ys[k], 0.0f));
+    s.volume.origin = vec3(-1.0f);
+    s.volume.size = 2.0f;
+    Light sun;
+    sun.kind = LightKind::Directional;
+    sun.direction = vec3(0.0f, -1.0f, 0.0f);  // the light comes from +y
+    s.lights = {sun};
+    VoxelFragment f;
+    f.triangle = 0;
+    f.b1 = f.b2 = 1.0f / 3.0f;
+    f.position = interpolate_surface(s, 0, f.b1, f.b2).position;
+    const vec3 n = interpolate_surface(s, 0, f.b1, f.b2).normal;
+    ASSERT_LT(glm::dot(n, vec3(0.0f, 1.0f, 0.0f)), -kBehindLightMargin);  // behind the light at the centroid
+    EXPECT_EQ(fragment_light_is_exact(s, f, VctSettings{}, 4, false), size > 0.5f) << size;
+  }
 }
 
 // A triangle a quarter voxel wide, its fragment's pixel centre far outside it (an MSAA sample
