@@ -50,12 +50,17 @@ void expect_moved_equals_copied(const Settings& s) {
 
 TEST(StageSetMove, MovedSetEqualsTheCopiedOne) { expect_moved_equals_copied(small()); }
 
-TEST(StageSetMove, MovedSetEqualsTheCopiedOneAnisotropicMultibounceCas) {
+// The variant with the most volumes: anisotropic mips, bounce frames, CAS bounds.
+Settings anisotropic_multibounce_cas() {
   Settings s = small();
   s.vct.anisotropic = true;
   s.vct.bounces = 2;
   s.vct.reduction = Reduction::CasRgba8;
-  expect_moved_equals_copied(s);
+  return s;
+}
+
+TEST(StageSetMove, MovedSetEqualsTheCopiedOneAnisotropicMultibounceCas) {
+  expect_moved_equals_copied(anisotropic_multibounce_cas());
 }
 
 // vct validate's GL frame gives only its voxel grid to its set (stage_set_taking_voxels): the set
@@ -88,11 +93,7 @@ void expect_taking_voxels_equals_copied(const Settings& s) {
 TEST(StageSetMove, TakingVoxelsEqualsTheCopiedSetAndKeepsTheRest) { expect_taking_voxels_equals_copied(small()); }
 
 TEST(StageSetMove, TakingVoxelsAnisotropicMultibounceCas) {
-  Settings s = small();
-  s.vct.anisotropic = true;
-  s.vct.bounces = 2;
-  s.vct.reduction = Reduction::CasRgba8;
-  expect_taking_voxels_equals_copied(s);
+  expect_taking_voxels_equals_copied(anisotropic_multibounce_cas());
 }
 
 TEST(StageSetMove, WithoutStagesKeepsEveryOtherField) {
