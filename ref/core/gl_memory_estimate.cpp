@@ -17,8 +17,10 @@ constexpr uint64_t kMiB = 1024 * 1024;
 // (its JIT-compiled shaders, thread pools and set-up buffers).
 constexpr uint64_t kLlvmpipeBaseline = 88 * kMiB;
 
-// Measured: the same renders rose PLACEHOLDER B per added triangle from 2 382 to 952 800 triangles
-// (the loader's and the Scene's arrays, GL's vertex and index buffers and its binned set-ups).
+// Measured: the same renders, less every counted term and the baseline, held 334-604 B per
+// triangle at 152 k and 952 k triangles (64^3 and 256^3; not linear: llvmpipe's heap and its
+// binned set-ups); the 952 k, 256^3 figure, 419 B (docs/performance.md, "GL's bytes per triangle"):
+// the loader's and the Scene's arrays, GL's vertex and index buffers, the bins.
 constexpr uint64_t kGlBytesPerTriangle = 420;
 
 // Voxels in levels 1..log2 n of an n^3 pyramid.
