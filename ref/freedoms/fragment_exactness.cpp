@@ -20,12 +20,23 @@ struct SnapCorner {
   glm::dvec3 normal{0.0};
 };
 
-SnapCorner snap_corner(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
-  const VoxelFragment g = shifted_fragment(scene, w, f, du, dv);
-  const uvec3 t = scene.triangles[f.triangle];
+// The point at fragment g's barycentrics.
+SnapCorner corner_of(const Scene& scene, const VoxelFragment& g) {
+  const uvec3 t = scene.triangles[g.triangle];
   const double b1 = double(g.b1), b2 = double(g.b2);
   return {g.position, (1.0 - b1 - b2) * glm::dvec3(scene.normals[t.x]) + b1 * glm::dvec3(scene.normals[t.y]) +
                           b2 * glm::dvec3(scene.normals[t.z])};
+}
+
+// The fragment's own point: shifted_fragment at offset (0, 0), without the window.
+SnapCorner snap_corner_at_centre(const Scene& scene, const VoxelFragment& f) {
+  VoxelFragment g = f;
+  g.position = interpolate_surface(scene, f.triangle, f.b1, f.b2).position;
+  return corner_of(scene, g);
+}
+
+SnapCorner snap_corner(const Scene& scene, const SnapWindow& w, const VoxelFragment& f, double du, double dv) {
+  return corner_of(scene, shifted_fragment(scene, w, f, du, dv));
 }
 
 // False only where no correct GL lets `light` add anything anywhere the snap may put the fragment:
@@ -58,14 +69,19 @@ bool fragment_light_is_exact(const Scene& scene, const VoxelFragment& f, const V
   if (bounce) return false;
   const Material& m = scene.materials[scene.triangle_material[f.triangle]];
   if (is_textured(m)) return false;
+  // A light that reaches the reference's own point reaches the square (its corners' largest n.l
+  // and |n| are at least the centre's): most fragments are lit, and end here without the square.
+  const SnapCorner centre = snap_corner_at_centre(scene, f);
+  for (const Light& light : scene.lights)
+    if (light_may_reach(light, settings, &centre, 1)) return false;
+  if (scene.lights.empty()) return true;
   // Where the snap's reach has no bound (a sliver, SnapWindow::bounded) GL's point may lie anywhere
   // in the triangle's plane: the light there is not certain.
   SnapWindow w;
-  if (!snap_window(scene, grid, f, w) || !w.bounded) return scene.lights.empty();
+  if (!snap_window(scene, grid, f, w) || !w.bounded) return false;
   const double r = w.reach;
-  const SnapCorner corners[5] = {snap_corner(scene, w, f, 0.0, 0.0), snap_corner(scene, w, f, -r, -r),
-                                 snap_corner(scene, w, f, r, -r), snap_corner(scene, w, f, -r, r),
-                                 snap_corner(scene, w, f, r, r)};
+  const SnapCorner corners[5] = {centre, snap_corner(scene, w, f, -r, -r), snap_corner(scene, w, f, r, -r),
+                                 snap_corner(scene, w, f, -r, r), snap_corner(scene, w, f, r, r)};
   for (const Light& light : scene.lights)
     if (light_may_reach(light, settings, corners, 5)) return false;
   return true;
